@@ -1,0 +1,53 @@
+# openswarm_add_kernel(<target> PORT <port> [CONFIG <header>] [SANITIZE])
+#
+# The kernel's pools are sized at compile time, so each application (or
+# test suite) builds its own kernel library from the sources, for one port
+# and one configuration header.
+
+set(OPENSWARM_ROOT ${CMAKE_CURRENT_LIST_DIR}/..)
+
+set(OPENSWARM_KERNEL_SOURCES
+    kernel.c process.c stack_pool.c scheduler.c scheduler_round_robin.c
+    scheduler_priority.c event_table.c event_queue.c event_dispatch.c wait.c
+    system_time.c hal.c fault.c status_names.c)
+list(TRANSFORM OPENSWARM_KERNEL_SOURCES PREPEND ${OPENSWARM_ROOT}/kernel/src/)
+
+set(OPENSWARM_PORT_host_SOURCES
+    ${OPENSWARM_ROOT}/ports/host/src/host_cpu.c
+    ${OPENSWARM_ROOT}/ports/host/src/host_context.c)
+
+# Our own code builds warning-free.
+set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)
+set(OPENSWARM_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all
+    -fno-omit-frame-pointer)
+
+function(openswarm_add_kernel target)
+  cmake_parse_arguments(K "SANITIZE" "PORT;CONFIG" "" ${ARGN})
+  if(NOT K_PORT)
+    message(FATAL_ERROR "openswarm_add_kernel(${target}): PORT is required (host)")
+  endif()
+  if(NOT DEFINED OPENSWARM_PORT_${K_PORT}_SOURCES)
+    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host)")
+  endif()
+  add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES})
+  target_include_directories(${target} PUBLIC
+    ${OPENSWARM_ROOT}/kernel/include ${OPENSWARM_ROOT}/ports/${K_PORT}/include)
+  target_compile_options(${target} PRIVATE ${OPENSWARM_WARNINGS})
+  # The kernel is C99 (it must build with every robot's compiler); the
+  # host port uses C11 atomics.
+  set_source_files_properties(${OPENSWARM_KERNEL_SOURCES} TARGET_DIRECTORY ${target}
+    PROPERTIES COMPILE_OPTIONS "-std=c99")
+  set_source_files_properties(${OPENSWARM_PORT_${K_PORT}_SOURCES} TARGET_DIRECTORY ${target}
+    PROPERTIES COMPILE_OPTIONS "-std=gnu11")
+  if(K_CONFIG)
+    target_compile_definitions(${target} PUBLIC "OS_CONFIG_FILE=\"${K_CONFIG}\"")
+  endif()
+  if(K_PORT STREQUAL "host")
+    find_package(Threads REQUIRED)
+    target_link_libraries(${target} PUBLIC Threads::Threads)
+  endif()
+  if(K_SANITIZE)
+    target_compile_options(${target} PUBLIC ${OPENSWARM_SANITIZERS})
+    target_link_options(${target} PUBLIC ${OPENSWARM_SANITIZERS})
+  endif()
+endfunction()

@@ -1,0 +1,89 @@
+/*
+ * Build-time sizes of every kernel pool.
+ *
+ * The kernel never allocates at run time: each table below is a static
+ * array whose size is fixed here. An application overrides any value by
+ * defining OS_CONFIG_FILE (e.g. -DOS_CONFIG_FILE='"app_config.h"'); the
+ * openswarm tool generates that header from openswarm.json.
+ */
+#ifndef OPENSWARM_CONFIG_H
+#define OPENSWARM_CONFIG_H
+
+#ifdef OS_CONFIG_FILE
+#include OS_CONFIG_FILE
+#endif
+
+/* Threads, including the system thread (pid 0). At most 16. */
+#ifndef OS_CFG_MAX_THREADS
+#define OS_CFG_MAX_THREADS 8
+#endif
+
+/* Bytes shared by all thread stacks (before the port's per-stack extra). */
+#ifndef OS_CFG_STACK_POOL_BYTES
+#define OS_CFG_STACK_POOL_BYTES 1024
+#endif
+
+/* Stacks are carved from the pool in blocks of this many bytes. */
+#ifndef OS_CFG_STACK_BLOCK_BYTES
+#define OS_CFG_STACK_BLOCK_BYTES 32
+#endif
+
+/* Stack size of Sys_Start_Process (the paper's default: 128 B). */
+#ifndef OS_CFG_DEFAULT_STACK_BYTES
+#define OS_CFG_DEFAULT_STACK_BYTES 128
+#endif
+
+/* Event ids are 0 .. OS_CFG_MAX_EVENTS-1. At most 255. */
+#ifndef OS_CFG_MAX_EVENTS
+#define OS_CFG_MAX_EVENTS 16
+#endif
+
+/* Bytes that hold the last data of every registered event (the d_i). */
+#ifndef OS_CFG_EVENT_DATA_BYTES
+#define OS_CFG_EVENT_DATA_BYTES 64
+#endif
+
+/* Data capacity of an event registered with Sys_Register_Event. */
+#ifndef OS_CFG_DEFAULT_EVENT_DATA
+#define OS_CFG_DEFAULT_EVENT_DATA 4
+#endif
+
+/* Handler subscriptions, over all events and threads. */
+#ifndef OS_CFG_MAX_SUBSCRIPTIONS
+#define OS_CFG_MAX_SUBSCRIPTIONS 8
+#endif
+
+/* Bytes of the queue of sent, not yet dispatched events (2 B header each). */
+#ifndef OS_CFG_EVENT_QUEUE_BYTES
+#define OS_CFG_EVENT_QUEUE_BYTES 64
+#endif
+
+/* HAL devices. */
+#ifndef OS_CFG_MAX_DEVICES
+#define OS_CFG_MAX_DEVICES 4
+#endif
+
+/* Largest value a HAL processor may produce, in bytes. */
+#ifndef OS_CFG_HAL_MAX_VALUE
+#define OS_CFG_HAL_MAX_VALUE 16
+#endif
+
+/* Default time slice of the round-robin scheduler, in ms (= ticks). */
+#ifndef OS_CFG_TIME_SLICE_MS
+#define OS_CFG_TIME_SLICE_MS 10
+#endif
+
+#if OS_CFG_MAX_THREADS < 2 || OS_CFG_MAX_THREADS > 16
+#error "OS_CFG_MAX_THREADS must be 2..16 (pids keep the slot in 4 bits)"
+#endif
+#if OS_CFG_MAX_EVENTS < 4 || OS_CFG_MAX_EVENTS > 255
+#error "OS_CFG_MAX_EVENTS must be 4..255 (the kernel's own events use ids 0..3)"
+#endif
+#if OS_CFG_STACK_POOL_BYTES % OS_CFG_STACK_BLOCK_BYTES != 0
+#error "OS_CFG_STACK_POOL_BYTES must be a multiple of OS_CFG_STACK_BLOCK_BYTES"
+#endif
+#if OS_CFG_EVENT_QUEUE_BYTES > 255
+#error "OS_CFG_EVENT_QUEUE_BYTES must fit in 8 bits"
+#endif
+
+#endif

@@ -1,0 +1,89 @@
+/* Events: registration, handler subscription, sending, and waiting.
+ *
+ * Event ids are small integers below OS_CFG_MAX_EVENTS; the kernel's own
+ * events take the ids below SYS_EVENT_FIRST_FREE. Each registered event
+ * keeps the data sent with it last (the paper's d_i), up to the capacity
+ * given when it was registered.
+ *
+ * Handlers run to completion in the system thread, between two scheduled
+ * threads, in the order the events were sent. An event sent by a thread is
+ * dispatched before Sys_Send_Event returns (unless the thread is inside a
+ * critical section); one sent by an interrupt is dispatched as soon as the
+ * interrupt returns. */
+#ifndef OPENSWARM_EVENT_H
+#define OPENSWARM_EVENT_H
+
+#include "openswarm/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Sent every 1 ms tick while anybody listens; data: uint32_t system time. */
+#define SYS_EVENT_1MS_TIMER ((sys_event_id)0)
+/* Sent when the kernel detects a fault; data: sys_fault_info. */
+#define SYS_EVENT_FAULT ((sys_event_id)1)
+/* Reserved for ports (e.g. the robot's own device events start here). */
+#define SYS_EVENT_PORT_FIRST ((sys_event_id)2)
+#define SYS_EVENT_FIRST_FREE ((sys_event_id)4)
+
+/* The data of one occurrence of an event, as handlers and conditions see it. */
+typedef struct sys_event_data {
+    const void *value;
+    uint8_t size;
+    sys_event_id event;
+} sys_event_data;
+
+/* A handler runs for every occurrence (or every one its condition accepts).
+ * pid is the subscribing thread. Return false to unsubscribe. */
+typedef bool (*sys_event_handler)(sys_pid pid, sys_event_id event, const sys_event_data *data);
+/* A condition decides whether an occurrence wakes a waiter or runs a handler. */
+typedef bool (*sys_event_condition)(const sys_event_data *data);
+
+/* Register with OS_CFG_DEFAULT_EVENT_DATA bytes of data capacity. */
+sys_status Sys_Register_Event(sys_event_id event);
+/* Register with an explicit data capacity (0..255 bytes). */
+sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity);
+/* Unregister: subscriptions are dropped, waiters woken with
+ * SYS_E_NOT_REGISTERED, queued occurrences discarded and counted. */
+sys_status Sys_Unregister_Event(sys_event_id event);
+bool Sys_IsEventRegistered(sys_event_id event);
+
+/* Subscribe handler for thread pid (0 = the system thread). A handler is
+ * subscribed at most once per (event, thread): a second call is SYS_E_EXISTS.
+ * condition may be NULL. */
+sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
+                                  sys_event_condition condition);
+sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler);
+
+/* Queue an occurrence with a copy of size bytes of data. Never blocks;
+ * callable from threads, handlers and interrupts. */
+sys_status Sys_Send_Event(sys_event_id event, const void *data, uint8_t size);
+/* Send a 16-bit integer (the paper's motor-speed style events). */
+sys_status Sys_Send_IntEvent(sys_event_id event, int16_t value);
+
+/* Block the calling thread until the next occurrence of event (for which
+ * condition returns true) and copy its data into buffer. *size (may be NULL)
+ * receives the occurrence's full size; SYS_E_TRUNCATED if it exceeded
+ * capacity. Threads only: SYS_E_CONTEXT from handlers and interrupts. */
+sys_status Sys_Wait_for_Event(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size);
+sys_status Sys_Wait_for_Condition(sys_event_id event, sys_event_condition condition, void *buffer,
+                                  uint8_t capacity, uint8_t *size);
+/* The same with a timeout in ms: SYS_E_TIMEOUT if nothing came in time. */
+sys_status Sys_Wait_for_Event_Timeout(sys_event_id event, uint32_t timeout_ms, void *buffer,
+                                      uint8_t capacity, uint8_t *size);
+sys_status Sys_Wait_for_Condition_Timeout(sys_event_id event, sys_event_condition condition,
+                                          uint32_t timeout_ms, void *buffer, uint8_t capacity,
+                                          uint8_t *size);
+
+/* Copy the data kept from the last dispatched occurrence. SYS_E_NOT_FOUND
+ * if none was kept (never sent, or cleared). */
+sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size);
+/* Forget the kept data of event. */
+sys_status Sys_Clear_EventData(sys_event_id event);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,48 @@
+/* Faults and resource counters: nothing the kernel refuses or detects goes
+ * unreported. Every failed allocation or full queue returns an error to the
+ * caller and increments one of these counters. */
+#ifndef OPENSWARM_FAULT_H
+#define OPENSWARM_FAULT_H
+
+#include "openswarm/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum sys_fault {
+    SYS_FAULT_STACK_OVERFLOW = 1, /* a thread's stack guard was overwritten */
+    SYS_FAULT_CRITICAL_LEAK       /* a thread ended inside a critical section */
+} sys_fault;
+
+/* Data of SYS_EVENT_FAULT. */
+typedef struct sys_fault_info {
+    uint8_t fault; /* sys_fault */
+    sys_pid pid;
+} sys_fault_info;
+
+typedef struct sys_stats {
+    uint16_t process_pool_full;      /* no free thread slot */
+    uint16_t stack_pool_full;        /* no room for a stack */
+    uint16_t event_data_full;        /* no room for an event's data */
+    uint16_t subscription_pool_full; /* no free subscription */
+    uint16_t event_queue_full;       /* a send found the queue full */
+    uint16_t device_table_full;      /* no free HAL device slot */
+    uint16_t events_discarded;       /* queued occurrences of an event unregistered before dispatch */
+    uint16_t stack_overflows;
+    uint16_t critical_leaks;
+    uint8_t event_queue_peak;        /* most bytes ever queued */
+} sys_stats;
+
+void Sys_Get_Stats(sys_stats *stats);
+
+/* Called (in the kernel, interrupts off) when a fault is detected, before
+ * SYS_EVENT_FAULT is sent. Keep it short. NULL removes it. */
+typedef void (*sys_fault_hook)(sys_fault fault, sys_pid pid);
+void Sys_Set_FaultHook(sys_fault_hook hook);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

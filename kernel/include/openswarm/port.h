@@ -1,0 +1,79 @@
+/*
+ * The port interface: everything the portable kernel needs from a CPU and
+ * board, and the kernel entry points a port calls. Nothing else crosses
+ * between kernel/ and ports/. Each port supplies "openswarm/port_arch.h"
+ * with the types and constants below.
+ *
+ * Interrupt model. The kernel runs its own bookkeeping with interrupts
+ * masked (port_irq_save/restore). An interrupt service routine that may
+ * call Sys_* functions is bracketed by os_isr_enter() and os_isr_exit();
+ * os_isr_exit() may switch threads (through port_switch) before the
+ * interrupted context is resumed, exactly like a voluntary switch, so the
+ * ISR prologue must have saved every register the switch does not.
+ */
+#ifndef OPENSWARM_PORT_H
+#define OPENSWARM_PORT_H
+
+#include "openswarm/types.h"
+#include "openswarm/port_arch.h"
+
+/*
+ * port_arch.h provides:
+ *   port_context_t      per-thread saved CPU state (e.g. the stack pointer)
+ *   port_irq_state_t    what port_irq_save returns
+ *   PORT_STACK_EXTRA    bytes the port adds to every requested stack
+ *                       (0 on robots; room for libc and signals on a host)
+ *   PORT_STACK_ALIGN    alignment of stack blocks (a power of two)
+ */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- provided by the port ---- */
+
+/* Prepare the CPU, the tick timer (not started) and the interrupt vector.
+ * Called by Sys_Init_Kernel; must make the caller's context the one that
+ * port_switch saves into the system thread's context. */
+void port_init(void);
+
+/* Prepare ctx so that the first port_switch to it calls entry(arg) on the
+ * stack [stack, stack + size) with interrupts enabled; if entry returns,
+ * the port calls os_thread_exit(). */
+void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*entry)(void *),
+                       void *arg);
+
+/* Save the running context into from and resume to. Called with interrupts
+ * masked; returns (interrupts still masked) when from is resumed. */
+void port_switch(port_context_t *from, port_context_t *to);
+
+/* Start the periodic 1 ms tick; its ISR calls os_tick(). */
+void port_tick_start(void);
+
+/* Mask interrupts and return the previous mask state / restore it. */
+port_irq_state_t port_irq_save(void);
+void port_irq_restore(port_irq_state_t state);
+/* Unmask / mask unconditionally. */
+void port_irq_enable(void);
+void port_irq_disable(void);
+
+/* Called by the system thread, interrupts masked, when nothing can run:
+ * wait for an interrupt (e.g. SLEEP), let it be serviced, and return with
+ * interrupts masked again. */
+void port_idle(void);
+
+/* ---- provided by the kernel, called by the port ---- */
+
+void os_isr_enter(void);
+/* May switch threads; returns when the interrupted context runs again. */
+void os_isr_exit(void);
+/* One 1 ms tick; call between os_isr_enter and os_isr_exit. */
+void os_tick(void);
+/* End the running thread (its entry function returned). Never returns. */
+void os_thread_exit(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

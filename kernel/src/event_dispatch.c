@@ -1,0 +1,34 @@
+/* Sending events and dispatching them, one occurrence at a time, in the
+ * system thread: first the waiting threads it satisfies are made ready,
+ * then the subscribed handlers run to completion. */
+#include "kernel_internal.h"
+
+sys_status Sys_Send_Event(sys_event_id event, const void *data, uint8_t size) {
+    if (event >= OS_CFG_MAX_EVENTS || (data == NULL && size != 0)) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    sys_status st = SYS_OK;
+    if (!os_event_registered(event)) {
+        st = SYS_E_NOT_REGISTERED;
+    } else if (size > os_event_capacity(event)) {
+        st = SYS_E_TOO_BIG;
+    } else if (!os_event_queue_push(event, data, size)) {
+        os.stats.event_queue_full++;
+        st = SYS_E_QUEUE_FULL;
+    } else {
+        os_schedule(); /* from a thread: the handlers run now */
+    }
+    port_irq_restore(s);
+    return st;
+}
+
+sys_status Sys_Send_IntEvent(sys_event_id event, int16_t value) {
+    return Sys_Send_Event(event, &value, (uint8_t)sizeof value);
+}
+
+/* Called by the system thread with interrupts masked. */
+void os_dispatch_one(void) {
+    sys_event_data data;
+    if (!os_event_queue_pop(&data)) return;
+    os_wake_waiters(&data);
+    os_run_handlers(&data);
+}

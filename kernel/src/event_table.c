@@ -1,0 +1,307 @@
+/* Registered events, the data each one keeps, and handler subscriptions.
+ *
+ * Event data lives in one static arena. A block stays with its event slot
+ * when the event is unregistered, and a later registration of any event
+ * reuses the first such block that is large enough, so registering and
+ * unregistering in a loop never exhausts the arena.
+ *
+ * Subscriptions form one list in subscription order. While handlers run, an
+ * unsubscription only marks its entry; the entries are unlinked after the
+ * dispatch, so a handler that unsubscribes itself or another never makes
+ * the dispatch skip a later handler. */
+#include "kernel_internal.h"
+
+#include <string.h>
+
+#define NONE 0xFFu
+#define UNREGISTERED 0xFFu /* size of a slot that is not registered */
+
+typedef struct event_slot {
+    uint8_t *data;
+    uint8_t capacity;
+    uint8_t size; /* bytes kept; UNREGISTERED if the event is not registered */
+    bool kept;    /* data holds an occurrence */
+} event_slot;
+
+typedef struct subscription {
+    sys_event_handler handler; /* NULL: free, or unsubscribed during dispatch */
+    sys_event_condition condition;
+    sys_event_id event;
+    sys_pid pid;
+    uint8_t next;
+} subscription;
+
+static event_slot events[OS_CFG_MAX_EVENTS];
+static uint8_t arena[OS_CFG_EVENT_DATA_BYTES];
+static uint16_t arena_used;
+
+static subscription subs[OS_CFG_MAX_SUBSCRIPTIONS];
+static uint8_t subs_head, subs_tail;
+static bool dispatching;
+static bool sweep_needed;
+
+void os_event_table_reset(void) {
+    memset(events, 0, sizeof events);
+    for (unsigned i = 0; i < OS_CFG_MAX_EVENTS; i++) events[i].size = UNREGISTERED;
+    arena_used = 0;
+    memset(subs, 0, sizeof subs);
+    subs_head = subs_tail = NONE;
+    dispatching = sweep_needed = false;
+}
+
+bool os_event_registered(sys_event_id event) {
+    return event < OS_CFG_MAX_EVENTS && events[event].size != UNREGISTERED;
+}
+
+uint8_t os_event_capacity(sys_event_id event) { return events[event].capacity; }
+
+/* Find capacity bytes: a block left by an unregistered event, or new arena. */
+static bool take_data_block(event_slot *slot, uint8_t capacity) {
+    if (slot->capacity >= capacity && (slot->data != NULL || capacity == 0)) return true;
+    for (unsigned i = 0; i < OS_CFG_MAX_EVENTS; i++) {
+        event_slot *other = &events[i];
+        if (other != slot && other->size == UNREGISTERED && other->capacity >= capacity &&
+            other->data != NULL) {
+            uint8_t *data = slot->data;
+            uint8_t cap = slot->capacity;
+            slot->data = other->data; /* swap, so the smaller block stays available */
+            slot->capacity = other->capacity;
+            other->data = data;
+            other->capacity = cap;
+            return true;
+        }
+    }
+    if ((size_t)arena_used + capacity > sizeof arena) return false;
+    slot->data = &arena[arena_used];
+    slot->capacity = capacity;
+    arena_used = (uint16_t)(arena_used + capacity);
+    return true;
+}
+
+sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
+    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
+    if (os.isr_depth != 0) return SYS_E_CONTEXT;
+    port_irq_state_t s = port_irq_save();
+    sys_status st = SYS_OK;
+    event_slot *slot = &events[event];
+    if (slot->size != UNREGISTERED) {
+        st = SYS_E_EXISTS;
+    } else if (!take_data_block(slot, capacity)) {
+        os.stats.event_data_full++;
+        st = SYS_E_POOL_FULL;
+    } else {
+        slot->size = 0;
+        slot->kept = false;
+    }
+    port_irq_restore(s);
+    return st;
+}
+
+sys_status Sys_Register_Event(sys_event_id event) {
+    return Sys_Register_Event_Sized(event, OS_CFG_DEFAULT_EVENT_DATA);
+}
+
+static void unlink_dead_subscriptions(void) {
+    uint8_t *link = &subs_head;
+    subs_tail = NONE;
+    while (*link != NONE) {
+        subscription *sub = &subs[*link];
+        if (sub->handler == NULL) {
+            *link = sub->next;
+        } else {
+            subs_tail = *link;
+            link = &sub->next;
+        }
+    }
+    sweep_needed = false;
+}
+
+/* Remove the subscriptions matching (event or any, pid or any). */
+static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid, bool any_pid) {
+    for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
+        subscription *sub = &subs[i];
+        if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
+    }
+    if (dispatching)
+        sweep_needed = true;
+    else
+        unlink_dead_subscriptions();
+}
+
+sys_status Sys_Unregister_Event(sys_event_id event) {
+    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
+    if (os.isr_depth != 0) return SYS_E_CONTEXT;
+    port_irq_state_t s = port_irq_save();
+    if (events[event].size == UNREGISTERED) {
+        port_irq_restore(s);
+        return SYS_E_NOT_REGISTERED;
+    }
+    events[event].size = UNREGISTERED; /* the data block stays for reuse */
+    events[event].kept = false;
+    remove_subscriptions(event, false, 0, true);
+    os_wake_all_waiting_for(event, SYS_E_NOT_REGISTERED);
+    if (os_in_thread()) os_schedule();
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+bool Sys_IsEventRegistered(sys_event_id event) {
+    port_irq_state_t s = port_irq_save();
+    bool registered = os_event_registered(event);
+    port_irq_restore(s);
+    return registered;
+}
+
+static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_event_handler h) {
+    for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
+        subscription *sub = &subs[i];
+        if (sub->handler == h && sub->event == event && sub->pid == pid) return sub;
+    }
+    return NULL;
+}
+
+static int free_subscription_index(void) {
+    for (unsigned i = 0; i < OS_CFG_MAX_SUBSCRIPTIONS; i++) {
+        if (subs[i].handler != NULL) continue;
+        bool linked = false; /* a marked entry awaiting its sweep is not free yet */
+        for (uint8_t j = subs_head; j != NONE; j = subs[j].next) linked |= (j == i);
+        if (!linked) return (int)i;
+    }
+    return -1;
+}
+
+sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
+                                  sys_event_condition condition) {
+    if (handler == NULL) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    sys_status st = SYS_OK;
+    int i;
+    if (!os_event_registered(event)) {
+        st = SYS_E_NOT_REGISTERED;
+    } else if (pid != SYS_PID_SYSTEM && os_thread_of(pid) == NULL) {
+        st = SYS_E_INVALID;
+    } else if (find_subscription(event, pid, handler) != NULL) {
+        st = SYS_E_EXISTS;
+    } else if ((i = free_subscription_index()) < 0) {
+        os.stats.subscription_pool_full++;
+        st = SYS_E_POOL_FULL;
+    } else {
+        subscription *sub = &subs[i];
+        sub->handler = handler;
+        sub->condition = condition;
+        sub->event = event;
+        sub->pid = pid;
+        sub->next = NONE;
+        if (subs_tail == NONE)
+            subs_head = (uint8_t)i;
+        else
+            subs[subs_tail].next = (uint8_t)i;
+        subs_tail = (uint8_t)i;
+    }
+    port_irq_restore(s);
+    return st;
+}
+
+sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler) {
+    port_irq_state_t s = port_irq_save();
+    subscription *sub = find_subscription(event, pid, handler);
+    if (sub != NULL) {
+        sub->handler = NULL;
+        if (dispatching)
+            sweep_needed = true;
+        else
+            unlink_dead_subscriptions();
+    }
+    port_irq_restore(s);
+    return sub != NULL ? SYS_OK : SYS_E_NOT_FOUND;
+}
+
+void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true, pid, false); }
+
+bool os_event_has_listeners(sys_event_id event) {
+    for (uint8_t i = subs_head; i != NONE; i = subs[i].next)
+        if (subs[i].handler != NULL && subs[i].event == event) return true;
+    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
+        const sys_tcb *t = &os.threads[i];
+        if (t->state == SYS_PROCESS_BLOCKED && t->wait != NULL && t->wait->event == event)
+            return true;
+    }
+    return false;
+}
+
+bool os_event_store(sys_event_id event, uint8_t size, sys_event_data *out) {
+    event_slot *slot = &events[event];
+    if (slot->size == UNREGISTERED || size > slot->capacity) return false;
+    slot->size = size;
+    slot->kept = true;
+    out->value = slot->data;
+    out->size = size;
+    out->event = event;
+    return true;
+}
+
+uint8_t *os_event_buffer(sys_event_id event) { return events[event].data; }
+
+/* Runs in the system thread with interrupts masked; each handler runs with
+ * interrupts enabled. Handlers subscribed during the dispatch wait for the
+ * next occurrence. */
+void os_run_handlers(const sys_event_data *data) {
+    uint8_t last = subs_tail;
+    dispatching = true;
+    for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
+        subscription *sub = &subs[i];
+        sys_event_handler handler = sub->handler;
+        if (handler != NULL && sub->event == data->event) {
+            sys_event_condition condition = sub->condition;
+            sys_pid pid = sub->pid;
+            port_irq_enable();
+            bool run = condition == NULL || condition(data);
+            bool keep = !run || handler(pid, data->event, data);
+            port_irq_disable();
+            if (os.lock_depth != 0) { /* a handler must not leave a section open */
+                os.lock_depth = 0;
+                os.stats.critical_leaks++;
+                os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
+            }
+            if (!keep && sub->handler == handler) {
+                sub->handler = NULL;
+                sweep_needed = true;
+            }
+        }
+        if (i == last) break;
+    }
+    dispatching = false;
+    if (sweep_needed) unlink_dead_subscriptions();
+}
+
+sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size) {
+    if (event >= OS_CFG_MAX_EVENTS || (buffer == NULL && capacity != 0)) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    event_slot *slot = &events[event];
+    sys_status st;
+    if (slot->size == UNREGISTERED) {
+        st = SYS_E_NOT_REGISTERED;
+    } else if (!slot->kept) {
+        st = SYS_E_NOT_FOUND;
+    } else {
+        uint8_t n = slot->size < capacity ? slot->size : capacity;
+        if (n != 0) memcpy(buffer, slot->data, n);
+        if (size != NULL) *size = slot->size;
+        st = slot->size > capacity ? SYS_E_TRUNCATED : SYS_OK;
+    }
+    port_irq_restore(s);
+    return st;
+}
+
+sys_status Sys_Clear_EventData(sys_event_id event) {
+    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    sys_status st = SYS_E_NOT_REGISTERED;
+    if (events[event].size != UNREGISTERED) {
+        events[event].kept = false;
+        events[event].size = 0;
+        st = SYS_OK;
+    }
+    port_irq_restore(s);
+    return st;
+}

@@ -1,0 +1,27 @@
+/* Fault reporting and the resource counters. */
+#include "kernel_internal.h"
+
+#include <string.h>
+
+void os_stats_reset(void) { memset(&os.stats, 0, sizeof os.stats); }
+
+void Sys_Get_Stats(sys_stats *stats) {
+    port_irq_state_t s = port_irq_save();
+    *stats = os.stats;
+    port_irq_restore(s);
+}
+
+void Sys_Set_FaultHook(sys_fault_hook hook) {
+    port_irq_state_t s = port_irq_save();
+    os.fault_hook = hook;
+    port_irq_restore(s);
+}
+
+/* Interrupts are masked here. */
+void os_fault(sys_fault fault, sys_pid pid) {
+    if (os.fault_hook != NULL) os.fault_hook(fault, pid);
+    sys_fault_info info = {(uint8_t)fault, pid};
+    if (os_event_registered(SYS_EVENT_FAULT) &&
+        !os_event_queue_push(SYS_EVENT_FAULT, &info, (uint8_t)sizeof info))
+        os.stats.event_queue_full++;
+}

@@ -1,0 +1,122 @@
+/* The HAL framework: devices, their processors, and the path of a value
+ * from a lower layer to an event and from an event to a lower layer. */
+#include "kernel_internal.h"
+
+#include <string.h>
+
+static sys_device *devices[OS_CFG_MAX_DEVICES];
+
+void os_hal_reset(void) { memset(devices, 0, sizeof devices); }
+
+/* Run processor (or copy when there is none); 0 means "emit nothing". */
+static uint8_t process(sys_device *dev, sys_processor processor, const void *in, uint8_t size,
+                       uint8_t *out) {
+    if (processor != NULL) {
+        uint8_t n = processor(dev, in, size, out, OS_CFG_HAL_MAX_VALUE);
+        if (n == 0 || n > OS_CFG_HAL_MAX_VALUE) {
+            dev->rejected++;
+            return 0;
+        }
+        return n;
+    }
+    if (size > OS_CFG_HAL_MAX_VALUE) {
+        dev->rejected++;
+        return 0;
+    }
+    memcpy(out, in, size);
+    return size;
+}
+
+static sys_device *device_for_command(sys_event_id event) {
+    for (unsigned i = 0; i < OS_CFG_MAX_DEVICES; i++) {
+        sys_device *d = devices[i];
+        if (d == NULL) continue;
+        if ((d->kind == SYS_DEVICE_OUTPUT && d->event == event) ||
+            (d->kind == SYS_DEVICE_COMM && d->tx_event == event))
+            return d;
+    }
+    return NULL;
+}
+
+/* Output and Tx path, subscribed in the system thread. */
+static bool command_handler(sys_pid pid, sys_event_id event, const sys_event_data *data) {
+    (void)pid;
+    sys_device *dev = device_for_command(event);
+    if (dev == NULL) return false;
+    uint8_t raw[OS_CFG_HAL_MAX_VALUE];
+    sys_processor p = dev->kind == SYS_DEVICE_COMM ? dev->tx_processor : dev->processor;
+    uint8_t n = process(dev, p, data->value, data->size, raw);
+    if (n != 0 && dev->write != NULL) dev->write(dev, raw, n);
+    return true;
+}
+
+static sys_status ensure_registered(sys_event_id event) {
+    if (Sys_IsEventRegistered(event)) return SYS_OK;
+    return Sys_Register_Event_Sized(event, OS_CFG_HAL_MAX_VALUE);
+}
+
+static int device_index(const sys_device *dev) {
+    for (unsigned i = 0; i < OS_CFG_MAX_DEVICES; i++)
+        if (devices[i] == dev) return (int)i;
+    return -1;
+}
+
+sys_status Sys_Register_Device(sys_device *dev) {
+    if (dev == NULL || dev->kind > SYS_DEVICE_COMM) return SYS_E_INVALID;
+    if (device_index(dev) >= 0) return SYS_E_EXISTS;
+    int slot = device_index(NULL);
+    if (slot < 0) {
+        port_irq_state_t s = port_irq_save();
+        os.stats.device_table_full++;
+        port_irq_restore(s);
+        return SYS_E_POOL_FULL;
+    }
+    sys_status st = ensure_registered(dev->event);
+    if (st == SYS_OK && dev->kind == SYS_DEVICE_COMM) st = ensure_registered(dev->tx_event);
+    if (st != SYS_OK) return st;
+    sys_event_id command = dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event;
+    if (dev->kind != SYS_DEVICE_INPUT) {
+        st = Sys_Subscribe_to_Event(command, SYS_PID_SYSTEM, command_handler, NULL);
+        if (st != SYS_OK && st != SYS_E_EXISTS) return st;
+    }
+    devices[slot] = dev;
+    return SYS_OK;
+}
+
+sys_status Sys_Unregister_Device(sys_device *dev) {
+    int slot = device_index(dev);
+    if (dev == NULL || slot < 0) return SYS_E_NOT_FOUND;
+    devices[slot] = NULL;
+    if (dev->kind != SYS_DEVICE_INPUT) {
+        sys_event_id command = dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event;
+        if (device_for_command(command) == NULL)
+            Sys_Unsubscribe_from_Event(command, SYS_PID_SYSTEM, command_handler);
+    }
+    return SYS_OK;
+}
+
+sys_status Sys_Set_Processor(sys_device *dev, sys_processor processor, void *params) {
+    if (dev == NULL) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save(); /* a lower-layer ISR may be using it */
+    dev->processor = processor;
+    dev->params = params;
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+sys_status Sys_Set_TxProcessor(sys_device *dev, sys_processor processor) {
+    if (dev == NULL || dev->kind != SYS_DEVICE_COMM) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    dev->tx_processor = processor;
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+sys_status Sys_Device_Input(sys_device *dev, const void *raw, uint8_t size) {
+    if (dev == NULL || dev->kind == SYS_DEVICE_OUTPUT || (raw == NULL && size != 0))
+        return SYS_E_INVALID;
+    uint8_t value[OS_CFG_HAL_MAX_VALUE];
+    uint8_t n = process(dev, dev->processor, raw, size, value);
+    if (n == 0) return SYS_OK; /* the processor chose to emit nothing (counted) */
+    return Sys_Send_Event(dev->event, value, n);
+}

@@ -1,0 +1,63 @@
+/* Kernel start-up and the system thread. */
+#include "kernel_internal.h"
+
+#include <string.h>
+
+os_kernel os;
+
+void Sys_Init_Kernel(void) {
+    port_irq_disable();
+    memset(&os, 0, sizeof os);
+    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
+        os.threads[i].state = OS_SLOT_FREE;
+        os.threads[i].pid = (sys_pid)i;
+    }
+    os.current = OS_SYSTEM;
+    OS_SYSTEM->state = SYS_PROCESS_RUNNING;
+    OS_SYSTEM->pid = SYS_PID_SYSTEM;
+    os_scheduler_reset();
+    os_stack_pool_reset();
+    os_event_table_reset();
+    os_event_queue_reset();
+    os_hal_reset();
+    port_init();
+    Sys_Register_Event_Sized(SYS_EVENT_1MS_TIMER, (uint8_t)sizeof(uint32_t));
+    Sys_Register_Event_Sized(SYS_EVENT_FAULT, (uint8_t)sizeof(sys_fault_info));
+}
+
+void Sys_Start_Kernel(void) {
+    port_tick_start();
+    port_irq_enable();
+}
+
+void Sys_Run_SystemThread(void) {
+    port_irq_disable();
+    while (!os.stop_requested) {
+        if (os.reap_pending) {
+            os_reap_zombies();
+        } else if (!os_event_queue_empty()) {
+            os_dispatch_one();
+        } else {
+            sys_tcb *next = os_choose_next();
+            if (next != OS_SYSTEM)
+                os_switch_to(next);
+            else
+                port_idle();
+        }
+    }
+    os.stop_requested = false;
+    port_irq_enable();
+}
+
+void Sys_Stop_Kernel(void) {
+    port_irq_state_t s = port_irq_save();
+    os.stop_requested = true;
+    os_schedule();
+    port_irq_restore(s);
+}
+
+void os_isr_enter(void) { os.isr_depth++; }
+
+void os_isr_exit(void) {
+    if (--os.isr_depth == 0) os_schedule();
+}

@@ -1,0 +1,117 @@
+/* Kernel-private state and the functions the kernel's modules share. */
+#ifndef OPENSWARM_KERNEL_INTERNAL_H
+#define OPENSWARM_KERNEL_INTERNAL_H
+
+#include "openswarm/kernel.h"
+#include "openswarm/port.h"
+
+/* State of an unused thread slot (never visible through the API). */
+#define OS_SLOT_FREE 0xFFu
+#define OS_SYSTEM (&os.threads[0])
+/* Event id of a wait that waits for no event (Sys_Sleep). */
+#define OS_NO_EVENT ((sys_event_id)0xFF)
+
+/* What a blocked thread waits for. It lives on the waiting thread's stack,
+ * which stays untouched while the thread is blocked, so a TCB only needs a
+ * pointer to it. */
+typedef struct os_wait {
+    uint8_t *buffer;
+    sys_event_condition condition;
+    uint32_t deadline; /* valid when timed */
+    sys_event_id event;
+    uint8_t capacity;
+    uint8_t size;
+    sys_status status;
+    bool timed;
+} os_wait;
+
+struct sys_tcb {
+    port_context_t ctx;
+    sys_tcb *next;    /* ready list */
+    os_wait *wait;    /* set while BLOCKED */
+    uint8_t *stack;   /* lowest address: the guard lives here */
+    uint16_t stack_blocks;
+    uint8_t state;    /* sys_process_state or OS_SLOT_FREE */
+    uint8_t priority;
+    sys_pid pid;
+};
+
+typedef struct os_kernel {
+    sys_tcb threads[OS_CFG_MAX_THREADS]; /* [0] is the system thread */
+    sys_tcb *current;
+    sys_tcb *ready;     /* ordered by the scheduling policy */
+    sys_tcb *preempted; /* thread to resume once the system thread's work is done */
+    const sys_scheduler *policy;
+    uint32_t now_ms;
+    uint32_t switches;
+    uint16_t slice_ms;
+    uint16_t slice_left;
+    uint8_t lock_depth; /* critical-section nesting of the running thread */
+    uint8_t isr_depth;
+    bool slice_expired;
+    bool yield_requested;
+    bool reap_pending;
+    bool stop_requested;
+    sys_stats stats;
+    sys_fault_hook fault_hook;
+} os_kernel;
+
+extern os_kernel os;
+
+static inline bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
+
+/* process.c */
+sys_tcb *os_thread_of(sys_pid pid); /* NULL if pid is not a live thread */
+void os_terminate(sys_tcb *t);      /* make t a zombie and detach it from everything */
+void os_reap_zombies(void);
+
+/* scheduler.c */
+void os_scheduler_reset(void);
+void os_make_ready(sys_tcb *t);
+void os_ready_remove(sys_tcb *t);
+void os_schedule(void);              /* switch if something else should run now */
+sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
+void os_switch_to(sys_tcb *next);
+bool os_system_work_pending(void);
+
+/* stack_pool.c */
+void os_stack_pool_reset(void);
+uint8_t *os_stack_alloc(uint16_t bytes, uint16_t *blocks, size_t *size);
+void os_stack_free(uint8_t *stack, uint16_t blocks);
+bool os_stack_guard_intact(const sys_tcb *t);
+
+/* event_table.c */
+void os_event_table_reset(void);
+bool os_event_registered(sys_event_id event);
+uint8_t os_event_capacity(sys_event_id event);
+bool os_event_has_listeners(sys_event_id event);
+void os_subscriptions_remove_thread(sys_pid pid);
+/* Store an occurrence as the event's kept data; false if it no longer fits. */
+bool os_event_store(sys_event_id event, uint8_t size, sys_event_data *out);
+uint8_t *os_event_buffer(sys_event_id event);
+void os_run_handlers(const sys_event_data *data);
+
+/* event_queue.c */
+void os_event_queue_reset(void);
+bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size);
+bool os_event_queue_empty(void);
+/* Pop one occurrence into the event's kept data and describe it in *out;
+ * false if it had to be discarded (event unregistered meanwhile). */
+bool os_event_queue_pop(sys_event_data *out);
+
+/* event_dispatch.c */
+void os_dispatch_one(void);
+
+/* wait.c */
+void os_wake_waiters(const sys_event_data *data);
+void os_wake_all_waiting_for(sys_event_id event, sys_status status);
+void os_check_timeouts(void);
+
+/* fault.c */
+void os_fault(sys_fault fault, sys_pid pid);
+void os_stats_reset(void);
+
+/* hal.c */
+void os_hal_reset(void);
+
+#endif

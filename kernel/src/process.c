@@ -1,0 +1,193 @@
+/* Thread slots: creation, termination, reaping, and lookup by pid. */
+#include "kernel_internal.h"
+
+#define SLOT_OF(pid) ((uint8_t)((pid)&0x0Fu))
+#define GENERATION_OF(pid) ((uint8_t)((pid) >> 4))
+
+sys_tcb *os_thread_of(sys_pid pid) {
+    uint8_t slot = SLOT_OF(pid);
+    if (slot >= OS_CFG_MAX_THREADS) return NULL;
+    sys_tcb *t = &os.threads[slot];
+    if (t->state == OS_SLOT_FREE || t->pid != pid) return NULL;
+    return t;
+}
+
+static sys_tcb *free_slot(void) {
+    for (uint8_t i = 1; i < OS_CFG_MAX_THREADS; i++)
+        if (os.threads[i].state == OS_SLOT_FREE) return &os.threads[i];
+    return NULL;
+}
+
+sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_bytes,
+                                uint8_t priority, sys_pid *pid) {
+    if (fn == NULL) return SYS_E_INVALID;
+    if (stack_bytes == 0) stack_bytes = OS_CFG_DEFAULT_STACK_BYTES;
+    port_irq_state_t s = port_irq_save();
+    sys_tcb *t = free_slot();
+    if (t == NULL) {
+        os.stats.process_pool_full++;
+        port_irq_restore(s);
+        return SYS_E_POOL_FULL;
+    }
+    size_t size;
+    uint16_t blocks;
+    uint8_t *stack = os_stack_alloc(stack_bytes, &blocks, &size);
+    if (stack == NULL) {
+        os.stats.stack_pool_full++;
+        port_irq_restore(s);
+        return SYS_E_POOL_FULL;
+    }
+    t->stack = stack;
+    t->stack_blocks = blocks;
+    t->priority = priority;
+    t->wait = NULL;
+    t->next = NULL;
+    t->state = SYS_PROCESS_NEW;
+    /* pid = slot | generation << 4; the generation was bumped at reaping. */
+    t->pid = (sys_pid)((t->pid & 0xF0u) | (uint8_t)(t - os.threads));
+    port_context_init(&t->ctx, stack, size, fn, arg);
+    os_make_ready(t);
+    if (pid != NULL) *pid = t->pid;
+    if (os_in_thread()) os_schedule(); /* a higher priority may preempt us */
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+/* Sys_Start_Process takes the paper's argument-less thread function; it
+ * travels through the void * argument (all our targets have function and
+ * data pointers of one size). */
+typedef union plain_fn {
+    void (*fn)(void);
+    void *erased;
+} plain_fn;
+
+static void run_plain(void *arg) {
+    plain_fn f;
+    f.erased = arg;
+    f.fn();
+}
+
+sys_pid Sys_Start_Process(void (*fn)(void)) {
+    sys_pid pid = SYS_PID_NONE;
+    if (fn == NULL) return SYS_PID_NONE;
+    plain_fn f;
+    f.fn = fn;
+    return Sys_Start_Process_Ex(run_plain, f.erased, 0, SYS_PRIORITY_DEFAULT, &pid) == SYS_OK
+               ? pid
+               : SYS_PID_NONE;
+}
+
+void os_terminate(sys_tcb *t) {
+    if (t == os.current && os.lock_depth != 0) {
+        os.lock_depth = 0;
+        os.stats.critical_leaks++;
+        os_fault(SYS_FAULT_CRITICAL_LEAK, t->pid);
+    }
+    os_subscriptions_remove_thread(t->pid);
+    if (t == os.preempted)
+        os.preempted = NULL;
+    else if (t->state == SYS_PROCESS_READY || t->state == SYS_PROCESS_NEW)
+        os_ready_remove(t);
+    t->wait = NULL;
+    t->state = SYS_PROCESS_ZOMBIE;
+    os.reap_pending = true;
+}
+
+/* Runs in the system thread, never on the stack it frees. */
+void os_reap_zombies(void) {
+    for (uint8_t i = 1; i < OS_CFG_MAX_THREADS; i++) {
+        sys_tcb *t = &os.threads[i];
+        if (t->state != SYS_PROCESS_ZOMBIE) continue;
+        os_stack_free(t->stack, t->stack_blocks);
+        t->stack = NULL;
+        t->state = OS_SLOT_FREE;
+        t->pid = (sys_pid)(t->pid + 0x10u); /* next generation */
+    }
+    os.reap_pending = false;
+}
+
+sys_status Sys_Kill_Process(sys_pid pid) {
+    port_irq_state_t s = port_irq_save();
+    sys_tcb *t = os_thread_of(pid);
+    if (t == NULL || t == OS_SYSTEM || t->state == SYS_PROCESS_ZOMBIE) {
+        port_irq_restore(s);
+        return SYS_E_INVALID;
+    }
+    os_terminate(t);
+    os_schedule(); /* does not return if t is the caller */
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+void os_thread_exit(void) {
+    port_irq_disable();
+    os_terminate(os.current);
+    os_schedule();
+    for (;;) {
+        /* unreachable: a zombie is never scheduled again */
+    }
+}
+
+sys_status Sys_Yield(void) {
+    if (!os_in_thread()) return SYS_E_CONTEXT;
+    if (os.lock_depth != 0) return SYS_E_CONTEXT;
+    port_irq_state_t s = port_irq_save();
+    os.yield_requested = true;
+    os_schedule();
+    os.yield_requested = false;
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+void Sys_Start_CriticalSection(void) {
+    port_irq_state_t s = port_irq_save();
+    os.lock_depth++;
+    port_irq_restore(s);
+}
+
+sys_status Sys_End_CriticalSection(void) {
+    port_irq_state_t s = port_irq_save();
+    if (os.lock_depth == 0) {
+        port_irq_restore(s);
+        return SYS_E_INVALID;
+    }
+    if (--os.lock_depth == 0) os_schedule(); /* run what was postponed */
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+sys_pid Sys_Get_ProcessID(void) { return os.current->pid; }
+
+sys_status Sys_Get_ProcessState(sys_pid pid, sys_process_state *state) {
+    port_irq_state_t s = port_irq_save();
+    sys_tcb *t = os_thread_of(pid);
+    if (t != NULL && state != NULL) *state = (sys_process_state)t->state;
+    port_irq_restore(s);
+    return t != NULL ? SYS_OK : SYS_E_INVALID;
+}
+
+sys_status Sys_Set_Priority(sys_pid pid, uint8_t priority) {
+    port_irq_state_t s = port_irq_save();
+    sys_tcb *t = os_thread_of(pid);
+    if (t == NULL || t->state == SYS_PROCESS_ZOMBIE) {
+        port_irq_restore(s);
+        return SYS_E_INVALID;
+    }
+    t->priority = priority;
+    if (t->state == SYS_PROCESS_READY || t->state == SYS_PROCESS_NEW) {
+        if (t != os.preempted) {
+            os_ready_remove(t); /* re-queue at the place its new priority earns */
+            os_make_ready(t);
+        }
+    }
+    if (os_in_thread()) os_schedule();
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+uint32_t Sys_Get_SwitchCount(void) {
+    port_irq_state_t s = port_irq_save();
+    uint32_t n = os.switches;
+    port_irq_restore(s);
+    return n;
+}

@@ -1,0 +1,140 @@
+/* The scheduling mechanism: the ready list, time slices and the decision
+ * of who runs next. Where a thread is queued is the policy's business
+ * (scheduler_round_robin.c, scheduler_priority.c).
+ *
+ * The system thread (pid 0) is not in the ready list: it runs whenever it
+ * has work (events to dispatch, zombies to reap) and when nothing else can
+ * run, in which case it idles the CPU. A user thread preempted by the
+ * system thread's work is remembered in os.preempted and resumed with the
+ * rest of its slice, so event handlers do not cost it its turn. */
+#include "kernel_internal.h"
+
+uint8_t Sys_Tcb_Priority(const sys_tcb *t) { return t->priority; }
+sys_tcb **Sys_Tcb_Next(sys_tcb *t) { return &t->next; }
+
+void os_scheduler_reset(void) {
+    os.policy = &sys_scheduler_round_robin;
+    os.ready = NULL;
+    os.preempted = NULL;
+    os.slice_ms = OS_CFG_TIME_SLICE_MS;
+    os.slice_left = OS_CFG_TIME_SLICE_MS;
+}
+
+void os_make_ready(sys_tcb *t) {
+    if (t->state != SYS_PROCESS_NEW) t->state = SYS_PROCESS_READY;
+    t->next = NULL;
+    os.policy->insert(&os.ready, t);
+}
+
+void os_ready_remove(sys_tcb *t) {
+    for (sys_tcb **link = &os.ready; *link != NULL; link = &(*link)->next) {
+        if (*link == t) {
+            *link = t->next;
+            t->next = NULL;
+            return;
+        }
+    }
+}
+
+static sys_tcb *ready_pop(void) {
+    sys_tcb *t = os.ready;
+    if (t != NULL) {
+        os.ready = t->next;
+        t->next = NULL;
+        os.slice_left = os.slice_ms; /* a fresh turn */
+        os.slice_expired = false;
+    }
+    return t;
+}
+
+bool os_system_work_pending(void) {
+    return !os_event_queue_empty() || os.reap_pending || os.stop_requested;
+}
+
+/* Should the running (or preempted) thread t give up the CPU to the ready
+ * list's head? */
+static bool must_rotate(const sys_tcb *t) {
+    if (os.ready == NULL) {
+        if (os.slice_expired) { /* nobody is waiting: renew the slice */
+            os.slice_expired = false;
+            os.slice_left = os.slice_ms;
+        }
+        return false;
+    }
+    return os.slice_expired || os.yield_requested || os.policy->preempts(os.ready, t);
+}
+
+sys_tcb *os_choose_next(void) {
+    if (os_system_work_pending()) return OS_SYSTEM;
+    sys_tcb *p = os.preempted;
+    os.preempted = NULL;
+    if (p != NULL) {
+        if (!must_rotate(p)) return p;
+        os_make_ready(p);
+    }
+    sys_tcb *n = ready_pop();
+    return n != NULL ? n : OS_SYSTEM;
+}
+
+void os_switch_to(sys_tcb *next) {
+    sys_tcb *prev = os.current;
+    next->state = SYS_PROCESS_RUNNING;
+    os.yield_requested = false; /* a yield is consumed by the switch it caused */
+    if (next == prev) return;
+    os.switches++;
+    os.current = next;
+    port_switch(&prev->ctx, &next->ctx);
+}
+
+void os_schedule(void) {
+    sys_tcb *cur = os.current;
+    if (cur == OS_SYSTEM || os.isr_depth != 0) return; /* the system loop decides */
+    if (cur->state == SYS_PROCESS_RUNNING) {
+        if (os.lock_depth != 0) return; /* postponed to Sys_End_CriticalSection */
+        if (!os_stack_guard_intact(cur)) {
+            os.stats.stack_overflows++;
+            os_fault(SYS_FAULT_STACK_OVERFLOW, cur->pid);
+            os_terminate(cur);
+        }
+    }
+    if (cur->state == SYS_PROCESS_RUNNING) {
+        if (os_system_work_pending()) {
+            cur->state = SYS_PROCESS_READY;
+            os.preempted = cur;
+        } else if (must_rotate(cur)) {
+            os_make_ready(cur);
+        } else {
+            return;
+        }
+    }
+    os_switch_to(os_choose_next());
+}
+
+sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {
+    if (scheduler == NULL || scheduler->insert == NULL || scheduler->preempts == NULL)
+        return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    sys_tcb *list = os.ready;
+    os.ready = NULL;
+    os.policy = scheduler;
+    while (list != NULL) { /* re-queue everyone under the new policy */
+        sys_tcb *t = list;
+        list = t->next;
+        t->next = NULL;
+        scheduler->insert(&os.ready, t);
+    }
+    if (os_in_thread()) os_schedule();
+    port_irq_restore(s);
+    return SYS_OK;
+}
+
+const sys_scheduler *Sys_Get_Scheduler(void) { return os.policy; }
+
+sys_status Sys_Set_TimeSlice(uint16_t ms) {
+    if (ms == 0) return SYS_E_INVALID;
+    port_irq_state_t s = port_irq_save();
+    os.slice_ms = ms;
+    if (os.slice_left > ms) os.slice_left = ms;
+    port_irq_restore(s);
+    return SYS_OK;
+}

@@ -1,0 +1,108 @@
+/* Blocking: waiting for an event (optionally with a condition on its data
+ * and a timeout) and sleeping. Every blocked thread describes its wait in
+ * an os_wait on its own stack, so any number of threads can wait for the
+ * same event and each is woken with its own copy of the data. */
+#include "kernel_internal.h"
+
+#include <string.h>
+
+static sys_status block_current(os_wait *w) {
+    os.current->wait = w;
+    os.current->state = SYS_PROCESS_BLOCKED;
+    os_schedule(); /* returns once woken */
+    return w->status;
+}
+
+static sys_status wait_for(sys_event_id event, sys_event_condition condition, bool timed,
+                           uint32_t timeout_ms, void *buffer, uint8_t capacity, uint8_t *size) {
+    if (buffer == NULL && capacity != 0) return SYS_E_INVALID;
+    if (!os_in_thread() || os.lock_depth != 0) return SYS_E_CONTEXT;
+    os_wait w;
+    w.buffer = (uint8_t *)buffer;
+    w.condition = condition;
+    w.event = event;
+    w.capacity = capacity;
+    w.size = 0;
+    w.status = SYS_OK;
+    w.timed = timed;
+    port_irq_state_t s = port_irq_save();
+    w.deadline = os.now_ms + timeout_ms;
+    sys_status st;
+    if (event != OS_NO_EVENT && !os_event_registered(event))
+        st = SYS_E_NOT_REGISTERED;
+    else if (timed && timeout_ms == 0)
+        st = SYS_E_TIMEOUT;
+    else
+        st = block_current(&w);
+    port_irq_restore(s);
+    if (size != NULL) *size = w.size;
+    return st;
+}
+
+sys_status Sys_Wait_for_Event(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size) {
+    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
+    return wait_for(event, NULL, false, 0, buffer, capacity, size);
+}
+
+sys_status Sys_Wait_for_Condition(sys_event_id event, sys_event_condition condition, void *buffer,
+                                  uint8_t capacity, uint8_t *size) {
+    if (event >= OS_CFG_MAX_EVENTS || condition == NULL) return SYS_E_INVALID;
+    return wait_for(event, condition, false, 0, buffer, capacity, size);
+}
+
+sys_status Sys_Wait_for_Event_Timeout(sys_event_id event, uint32_t timeout_ms, void *buffer,
+                                      uint8_t capacity, uint8_t *size) {
+    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
+    return wait_for(event, NULL, true, timeout_ms, buffer, capacity, size);
+}
+
+sys_status Sys_Wait_for_Condition_Timeout(sys_event_id event, sys_event_condition condition,
+                                          uint32_t timeout_ms, void *buffer, uint8_t capacity,
+                                          uint8_t *size) {
+    if (event >= OS_CFG_MAX_EVENTS || condition == NULL) return SYS_E_INVALID;
+    return wait_for(event, condition, true, timeout_ms, buffer, capacity, size);
+}
+
+sys_status Sys_Sleep(uint32_t ms) {
+    sys_status st = wait_for(OS_NO_EVENT, NULL, true, ms, NULL, 0, NULL);
+    return st == SYS_E_TIMEOUT ? SYS_OK : st;
+}
+
+static void wake(sys_tcb *t, sys_status status) {
+    t->wait->status = status;
+    t->wait = NULL;
+    os_make_ready(t);
+}
+
+/* Dispatch of one occurrence: wake every thread whose wait it satisfies. */
+void os_wake_waiters(const sys_event_data *data) {
+    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
+        sys_tcb *t = &os.threads[i];
+        os_wait *w = t->wait;
+        if (t->state != SYS_PROCESS_BLOCKED || w == NULL || w->event != data->event) continue;
+        if (w->condition != NULL && !w->condition(data)) continue;
+        uint8_t n = data->size < w->capacity ? data->size : w->capacity;
+        if (n != 0) memcpy(w->buffer, data->value, n);
+        w->size = data->size;
+        wake(t, data->size > w->capacity ? SYS_E_TRUNCATED : SYS_OK);
+    }
+}
+
+void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
+    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
+        sys_tcb *t = &os.threads[i];
+        if (t->state == SYS_PROCESS_BLOCKED && t->wait != NULL && t->wait->event == event)
+            wake(t, status);
+    }
+}
+
+/* From the tick: wake the threads whose deadline has come. */
+void os_check_timeouts(void) {
+    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
+        sys_tcb *t = &os.threads[i];
+        os_wait *w = t->wait;
+        if (t->state == SYS_PROCESS_BLOCKED && w != NULL && w->timed &&
+            (int32_t)(os.now_ms - w->deadline) >= 0)
+            wake(t, SYS_E_TIMEOUT);
+    }
+}

@@ -1,0 +1,11 @@
+/* Kernel pool sizes for the host behaviour suite. */
+#define OS_CFG_MAX_THREADS 10
+#define OS_CFG_STACK_POOL_BYTES 4096
+#define OS_CFG_STACK_BLOCK_BYTES 32
+#define OS_CFG_MAX_EVENTS 32
+#define OS_CFG_EVENT_DATA_BYTES 256
+#define OS_CFG_DEFAULT_EVENT_DATA 8
+#define OS_CFG_MAX_SUBSCRIPTIONS 12
+#define OS_CFG_EVENT_QUEUE_BYTES 96
+#define OS_CFG_MAX_DEVICES 4
+#define OS_CFG_HAL_MAX_VALUE 16
