@@ -8,23 +8,22 @@ static sys_device *devices[OS_CFG_MAX_DEVICES];
 
 void os_hal_reset(void) { memset(devices, 0, sizeof devices); }
 
-/* Run processor (or copy when there is none); 0 means "emit nothing". */
-static uint8_t process(sys_device *dev, sys_processor processor, const void *in, uint8_t size,
-                       uint8_t *out) {
-    if (processor != NULL) {
-        uint8_t n = processor(dev, in, size, out, OS_CFG_HAL_MAX_VALUE);
-        if (n == 0 || n > OS_CFG_HAL_MAX_VALUE) {
-            dev->rejected++;
-            return 0;
-        }
-        return n;
-    }
-    if (size > OS_CFG_HAL_MAX_VALUE) {
+/* Run processor (or copy when there is none) into out. False if nothing is
+ * to be emitted: the processor declined, or the value does not fit (both
+ * counted in dev->rejected). */
+static bool process(sys_device *dev, sys_processor processor, const void *in, uint8_t size,
+                    uint8_t *out, uint8_t *out_size) {
+    uint8_t n = size;
+    if (processor != NULL)
+        n = processor(dev, in, size, out, OS_CFG_HAL_MAX_VALUE);
+    else if (size <= OS_CFG_HAL_MAX_VALUE && size != 0)
+        memcpy(out, in, size);
+    if ((processor != NULL && n == 0) || n > OS_CFG_HAL_MAX_VALUE) {
         dev->rejected++;
-        return 0;
+        return false;
     }
-    memcpy(out, in, size);
-    return size;
+    *out_size = n;
+    return true;
 }
 
 static sys_device *device_for_command(sys_event_id event) {
@@ -44,9 +43,10 @@ static bool command_handler(sys_pid pid, sys_event_id event, const sys_event_dat
     sys_device *dev = device_for_command(event);
     if (dev == NULL) return false;
     uint8_t raw[OS_CFG_HAL_MAX_VALUE];
+    uint8_t n;
     sys_processor p = dev->kind == SYS_DEVICE_COMM ? dev->tx_processor : dev->processor;
-    uint8_t n = process(dev, p, data->value, data->size, raw);
-    if (n != 0 && dev->write != NULL) dev->write(dev, raw, n);
+    if (process(dev, p, data->value, data->size, raw, &n) && dev->write != NULL)
+        dev->write(dev, raw, n);
     return true;
 }
 
@@ -64,6 +64,10 @@ static int device_index(const sys_device *dev) {
 sys_status Sys_Register_Device(sys_device *dev) {
     if (dev == NULL || dev->kind > SYS_DEVICE_COMM) return SYS_E_INVALID;
     if (device_index(dev) >= 0) return SYS_E_EXISTS;
+    /* One command event drives one device: a second would never be written. */
+    if (dev->kind != SYS_DEVICE_INPUT &&
+        device_for_command(dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event) != NULL)
+        return SYS_E_EXISTS;
     int slot = device_index(NULL);
     if (slot < 0) {
         port_irq_state_t s = port_irq_save();
@@ -116,7 +120,8 @@ sys_status Sys_Device_Input(sys_device *dev, const void *raw, uint8_t size) {
     if (dev == NULL || dev->kind == SYS_DEVICE_OUTPUT || (raw == NULL && size != 0))
         return SYS_E_INVALID;
     uint8_t value[OS_CFG_HAL_MAX_VALUE];
-    uint8_t n = process(dev, dev->processor, raw, size, value);
-    if (n == 0) return SYS_OK; /* the processor chose to emit nothing (counted) */
+    uint8_t n;
+    if (!process(dev, dev->processor, raw, size, value, &n))
+        return SYS_OK; /* the processor chose to emit nothing (counted) */
     return Sys_Send_Event(dev->event, value, n);
 }

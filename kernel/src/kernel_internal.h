@@ -17,7 +17,7 @@
 typedef struct os_wait {
     uint8_t *buffer;
     sys_event_condition condition;
-    uint32_t deadline; /* valid when timed */
+    uint32_t remaining_ms; /* counts down when timed: any 32-bit timeout works */
     sys_event_id event;
     uint8_t capacity;
     uint8_t size;

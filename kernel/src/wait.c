@@ -25,8 +25,8 @@ static sys_status wait_for(sys_event_id event, sys_event_condition condition, bo
     w.size = 0;
     w.status = SYS_OK;
     w.timed = timed;
+    w.remaining_ms = timeout_ms;
     port_irq_state_t s = port_irq_save();
-    w.deadline = os.now_ms + timeout_ms;
     sys_status st;
     if (event != OS_NO_EVENT && !os_event_registered(event))
         st = SYS_E_NOT_REGISTERED;
@@ -101,8 +101,7 @@ void os_check_timeouts(void) {
     for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
         sys_tcb *t = &os.threads[i];
         os_wait *w = t->wait;
-        if (t->state == SYS_PROCESS_BLOCKED && w != NULL && w->timed &&
-            (int32_t)(os.now_ms - w->deadline) >= 0)
+        if (t->state == SYS_PROCESS_BLOCKED && w != NULL && w->timed && --w->remaining_ms == 0)
             wake(t, SYS_E_TIMEOUT);
     }
 }

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,17 +45,21 @@ protected:
     void SetUp() override { trace().clear(); }
 
     // Runs on the CPU between Sys_Init_Kernel and Sys_Start_Kernel.
-    void boot(std::function<void()> setup) {
+    void boot(std::function<void()> setup, host_clock clock = HOST_CLOCK_MANUAL) {
         setup_ = std::move(setup);
         current_ = this;
-        host_cpu_start(HOST_CLOCK_MANUAL, [] { current_->setup_(); });
+        host_cpu_start(clock, [] { current_->setup_(); });
         running_ = true;
     }
 
-    void TearDown() override {
+    // Tests whose threads still run at the end (spinning on the test's
+    // locals) must power off before those locals go out of scope.
+    void power_off() {
         if (running_) host_cpu_stop();
         running_ = false;
     }
+
+    void TearDown() override { power_off(); }
 
     // Runs f on the CPU as an interrupt service routine.
     static void irq(std::function<void()> f) {
@@ -61,6 +67,16 @@ protected:
     }
 
     static void advance(uint32_t ms) { host_cpu_advance(ms); }
+
+    // For what a running thread does after an interrupt was serviced: wait
+    // (bounded) until pred holds. Tests never rely on it for timing.
+    static bool eventually(const std::function<bool()> &pred) {
+        for (int i = 0; i < 100000; i++) {
+            if (pred()) return true;
+            std::this_thread::sleep_for(std::chrono::microseconds(100));
+        }
+        return pred();
+    }
 
     static void settle() { ASSERT_TRUE(host_cpu_wait_idle(10000)) << "the CPU never went idle"; }
 
@@ -88,6 +104,13 @@ protected:
         sys_status st = SYS_OK;
         irq([&] { st = Sys_Get_ProcessState(pid, nullptr); });
         return st == SYS_OK;
+    }
+
+    // The thread the CPU is running (as an interrupt sees it).
+    static sys_pid running() {
+        sys_pid p = SYS_PID_NONE;
+        irq([&] { p = Sys_Get_ProcessID(); });
+        return p;
     }
 
     static sys_stats stats() {

@@ -1,1 +1,103 @@
+// Stack overflow detection: the guard is checked at every switch and a
+// broken one is reported through the fault hook and SYS_EVENT_FAULT.
 #include "kernel_fixture.hpp"
+
+#include <cstring>
+
+#include "openswarm/port_arch.h"
+
+using Faults = KernelTest;
+
+static std::atomic<int> hook_calls{0};
+static std::atomic<int> hook_fault{0};
+static std::atomic<sys_pid> hook_pid{SYS_PID_NONE};
+static std::atomic<int> event_fault{0};
+static std::atomic<sys_pid> event_pid{SYS_PID_NONE};
+
+// Writes well below its own stack frame: past the bottom of a stack of
+// `stack` bytes (+ the port's extra), into the guard and beyond. The
+// sanitizer is told to let it: the overflow is the point of the test.
+__attribute__((no_sanitize_address, noinline)) static void overflow_stack(size_t stack) {
+    volatile uint8_t here = 0;
+    volatile uint8_t *volatile p = &here; // opaque to the compiler's bounds checks
+    size_t reach = stack + PORT_STACK_EXTRA + 64;
+    for (size_t i = 256; i < reach; i++) p[-(ptrdiff_t)i] = 0xEE;
+}
+
+TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
+    hook_calls = 0;
+    event_fault = 0;
+    std::atomic<bool> overflowed{false};
+    std::atomic<long> bystander{0};
+    sys_pid victim = 0;
+    boot([&] {
+        Sys_Set_FaultHook([](sys_fault f, sys_pid pid) {
+            hook_calls++;
+            hook_fault = f;
+            hook_pid = pid;
+        });
+        Sys_Subscribe_to_Event(SYS_EVENT_FAULT, SYS_PID_SYSTEM,
+                               [](sys_pid, sys_event_id, const sys_event_data *d) {
+                                   sys_fault_info info;
+                                   std::memcpy(&info, d->value, sizeof info);
+                                   event_fault = info.fault;
+                                   event_pid = info.pid;
+                                   return true;
+                               },
+                               nullptr);
+        // A spacer below the victim's stack, killed before the overflow, so
+        // the overflow lands in free pool memory rather than a live stack.
+        sys_pid spacer = spawn([] { Sys_Sleep(1000000); }, 0, 256);
+        victim = spawn(
+            [&] {
+                overflow_stack(256);
+                overflowed = true;
+                for (;;) {
+                }
+            },
+            0, 256);
+        Sys_Kill_Process(spacer);
+        spawn([&] {
+            for (;;) bystander++;
+        });
+    });
+    ASSERT_TRUE(eventually([&] { return overflowed.load(); }));
+    advance(OS_CFG_TIME_SLICE_MS); // the switch at the end of its slice checks the guard
+    ASSERT_TRUE(eventually([&] { return event_fault != 0; }));
+    EXPECT_EQ(1, hook_calls.load());
+    EXPECT_EQ(SYS_FAULT_STACK_OVERFLOW, hook_fault.load());
+    EXPECT_EQ(victim, hook_pid.load());
+    EXPECT_EQ(SYS_FAULT_STACK_OVERFLOW, event_fault.load());
+    EXPECT_EQ(victim, event_pid.load());
+    EXPECT_FALSE(alive(victim));
+    EXPECT_EQ(1u, stats().stack_overflows);
+    long before = bystander;
+    advance(2 * OS_CFG_TIME_SLICE_MS);
+    EXPECT_TRUE(eventually([&] { return bystander > before; })) << "the others go on";
+    power_off();
+}
+
+TEST_F(Faults, AThreadWithinItsStackRaisesNoFault) {
+    hook_calls = 0;
+    std::atomic<int> depth{0};
+    boot([&] {
+        Sys_Set_FaultHook([](sys_fault, sys_pid) { hook_calls++; });
+        spawn(
+            [&] {
+                for (int round = 0; round < 50; round++) {
+                    volatile uint8_t buf[200];
+                    for (auto &b : buf) b = (uint8_t)round;
+                    depth = buf[199];
+                    Sys_Yield();
+                }
+            },
+            0, 256);
+        spawn([] {
+            for (int i = 0; i < 50; i++) Sys_Yield();
+        });
+    });
+    settle();
+    EXPECT_EQ(49, depth.load());
+    EXPECT_EQ(0, hook_calls.load());
+    EXPECT_EQ(0u, stats().stack_overflows);
+}

@@ -46,6 +46,7 @@ TEST_F(Lifecycle, StopKernelReturnsFromTheSystemThreadEvenWithABusyThread) {
     advance(1);
     while (!spinning) advance(1);
     // TearDown stops the CPU; reaching the end of this test proves it.
+    power_off();
 }
 
 TEST_F(Lifecycle, ReinitialisingStartsFromScratch) {

@@ -1,1 +1,216 @@
+// System time, sleeping, and the 1 ms timer event (the paper's Listing 1
+// waits on it with a condition that counts occurrences).
 #include "kernel_fixture.hpp"
+
+#include <cstring>
+
+using Time = KernelTest;
+
+namespace {
+
+// Tick by tick, letting the CPU finish each tick's work (dispatch, the
+// threads it woke) before the next one, as 1 ms is plenty on a robot.
+void ticks(uint32_t n) {
+    for (uint32_t i = 0; i < n; i++) {
+        host_cpu_advance(1);
+        ASSERT_TRUE(host_cpu_wait_idle(10000)) << "the CPU never went idle";
+    }
+}
+
+// Listing 1's wait250times, counting the occurrences it is shown. (The
+// paper's `counter++ < 250` would accept the 251st.)
+int occurrences = 0;
+bool wait250times(const sys_event_data *) {
+    if (++occurrences < 250) return false;
+    occurrences = 0;
+    return true;
+}
+
+} // namespace
+
+TEST_F(Time, SystemTimeAdvancesByOnePerTick) {
+    auto now = [] {
+        uint32_t t = 0xFFFFFFFF;
+        irq([&] { t = Sys_Get_SystemTime(); });
+        return t;
+    };
+    boot([] {});
+    settle();
+    EXPECT_EQ(0u, now()) << "the manual clock does not tick by itself";
+    for (uint32_t i = 1; i <= 20; i++) {
+        advance(1);
+        EXPECT_EQ(i, now());
+    }
+    advance(100);
+    EXPECT_EQ(120u, now());
+    settle();
+    EXPECT_EQ(120u, now()) << "idling costs no time";
+}
+
+TEST_F(Time, SleepBlocksForExactlyTheRequestedTicks) {
+    std::vector<uint32_t> slept;
+    std::atomic<int> woke{0};
+    const uint32_t durations[] = {1, 7, 30};
+    sys_pid sleeper = SYS_PID_NONE;
+    boot([&] {
+        sleeper = spawn([&] {
+            for (uint32_t ms : durations) {
+                uint32_t before = Sys_Get_SystemTime();
+                EXPECT_STATUS(SYS_OK, Sys_Sleep(ms));
+                slept.push_back(Sys_Get_SystemTime() - before);
+                woke++;
+            }
+            Sys_Sleep(1000000);
+        });
+    });
+    settle();
+    int expected = 0;
+    for (uint32_t ms : durations) {
+        ticks(ms - 1);
+        EXPECT_EQ(expected, woke.load()) << "woke early from Sys_Sleep(" << ms << ")";
+        EXPECT_EQ(SYS_PROCESS_BLOCKED, state_of(sleeper));
+        ticks(1);
+        EXPECT_EQ(++expected, woke.load()) << "still asleep after " << ms << " ticks";
+    }
+    EXPECT_EQ((std::vector<uint32_t>{1, 7, 30}), slept);
+}
+
+TEST_F(Time, SleepersWakeInTheOrderOfTheirDeadlines) {
+    boot([&] {
+        spawn([] {
+            Sys_Sleep(5);
+            note("a@" + std::to_string(Sys_Get_SystemTime()));
+        });
+        spawn([] {
+            Sys_Sleep(3);
+            note("b@" + std::to_string(Sys_Get_SystemTime()));
+        });
+    });
+    settle();
+    ticks(10);
+    EXPECT_EQ("b@3 a@5", joined());
+}
+
+TEST_F(Time, SleepZeroReturnsAtOnceAndSleepOutsideAThreadIsRefused) {
+    sys_status in_setup = SYS_OK, in_irq = SYS_OK, zero = SYS_E_INVALID;
+    boot([&] {
+        in_setup = Sys_Sleep(1);
+        spawn([&] {
+            zero = Sys_Sleep(0);
+            note("after sleep(0)");
+        });
+    });
+    settle();
+    irq([&] { in_irq = Sys_Sleep(1); });
+    EXPECT_STATUS(SYS_OK, zero);
+    EXPECT_EQ("after sleep(0)", joined()) << "without any tick";
+    EXPECT_STATUS(SYS_E_CONTEXT, in_setup);
+    EXPECT_STATUS(SYS_E_CONTEXT, in_irq);
+}
+
+TEST_F(Time, Listing1WaitForConditionOnTheTimerWakesEvery250Ticks) {
+    occurrences = 0;
+    std::atomic<int> wakes{0};
+    std::vector<uint32_t> event_time, system_time;
+    boot([&] {
+        spawn([&] {
+            for (;;) {
+                uint32_t t = 0;
+                uint8_t size = 0;
+                EXPECT_STATUS(SYS_OK, Sys_Wait_for_Condition(SYS_EVENT_1MS_TIMER, wait250times,
+                                                             &t, sizeof t, &size));
+                EXPECT_EQ(sizeof(uint32_t), size);
+                event_time.push_back(t);
+                system_time.push_back(Sys_Get_SystemTime());
+                wakes++;
+            }
+        });
+    });
+    settle();
+    for (int round = 1; round <= 4; round++) {
+        ticks(249);
+        EXPECT_EQ(round - 1, wakes.load()) << "round " << round << " woke early";
+        ticks(1);
+        EXPECT_EQ(round, wakes.load()) << "round " << round << " did not wake at 250";
+    }
+    EXPECT_EQ((std::vector<uint32_t>{250, 500, 750, 1000}), event_time);
+    EXPECT_EQ(event_time, system_time);
+    power_off();
+}
+
+TEST_F(Time, TimerEventDataIsTheSystemTime) {
+    boot([] {
+        Sys_Subscribe_to_Event(
+            SYS_EVENT_1MS_TIMER, SYS_PID_SYSTEM,
+            [](sys_pid, sys_event_id, const sys_event_data *d) -> bool {
+                if (d->size != sizeof(uint32_t)) {
+                    note("size" + std::to_string(d->size));
+                } else {
+                    uint32_t t;
+                    std::memcpy(&t, d->value, sizeof t);
+                    note(std::to_string(t) + (t == Sys_Get_SystemTime() ? "" : "!"));
+                }
+                return true;
+            },
+            nullptr);
+    });
+    settle();
+    ticks(3);
+    EXPECT_EQ("1 2 3", joined());
+    advance(10);
+    settle();
+    uint32_t kept = 0;
+    uint8_t size = 0;
+    sys_status st = SYS_E_INVALID;
+    irq([&] { st = Sys_Get_EventData(SYS_EVENT_1MS_TIMER, &kept, sizeof kept, &size); });
+    EXPECT_STATUS(SYS_OK, st);
+    EXPECT_EQ(sizeof kept, size);
+    EXPECT_EQ(13u, kept);
+}
+
+TEST_F(Time, TimerEventIsNotQueuedWhileNobodyListens) {
+    boot([] {});
+    settle();
+    ticks(300);
+    EXPECT_EQ(0, stats().event_queue_peak);
+    EXPECT_EQ(0, stats().event_queue_full);
+    sys_status st = SYS_OK;
+    irq([&] { st = Sys_Get_EventData(SYS_EVENT_1MS_TIMER, nullptr, 0, nullptr); });
+    EXPECT_STATUS(SYS_E_NOT_FOUND, st) << "never dispatched";
+
+    // A listener makes it flow; once it leaves, the kept data stops moving.
+    auto listener = [](sys_pid, sys_event_id, const sys_event_data *) { return true; };
+    irq([&] { Sys_Subscribe_to_Event(SYS_EVENT_1MS_TIMER, SYS_PID_SYSTEM, listener, nullptr); });
+    ticks(2);
+    EXPECT_EQ(2 + sizeof(uint32_t), stats().event_queue_peak);
+    irq([&] { Sys_Unsubscribe_from_Event(SYS_EVENT_1MS_TIMER, SYS_PID_SYSTEM, listener); });
+    ticks(50);
+    uint32_t kept = 0;
+    irq([&] { st = Sys_Get_EventData(SYS_EVENT_1MS_TIMER, &kept, sizeof kept, nullptr); });
+    EXPECT_STATUS(SYS_OK, st);
+    EXPECT_EQ(302u, kept);
+}
+
+TEST_F(Time, TimeoutsAboveTwoToThe31MsDoNotEndAtTheNextTick) {
+    // Timeouts count down, so the whole 32-bit range works (a deadline
+    // compared with wrapping arithmetic would expire at once past 2^31 ms).
+    std::atomic<bool> slept{false}, waited{false};
+    sys_status sleep_status = SYS_E_INVALID, wait_status = SYS_E_INVALID;
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        spawn([&] {
+            sleep_status = Sys_Sleep(UINT32_MAX);
+            slept = true;
+        });
+        spawn([&] {
+            wait_status = Sys_Wait_for_Event_Timeout(EV_A, UINT32_MAX, nullptr, 0, nullptr);
+            waited = true;
+        });
+    });
+    settle();
+    ticks(3);
+    EXPECT_FALSE(slept && sleep_status == SYS_OK)
+        << "Sys_Sleep(UINT32_MAX) returned SYS_OK after 3 ms";
+    EXPECT_FALSE(waited && wait_status == SYS_E_TIMEOUT)
+        << "a UINT32_MAX ms timeout ran out after 3 ms";
+}

@@ -47,7 +47,8 @@ struct sys_device {
 };
 
 /* Register dev and the events it uses (with OS_CFG_HAL_MAX_VALUE bytes of
- * capacity when not registered yet); outputs subscribe in the system thread. */
+ * capacity when not registered yet); outputs subscribe in the system thread.
+ * SYS_E_EXISTS if dev, or another device on its command event, is registered. */
 sys_status Sys_Register_Device(sys_device *dev);
 sys_status Sys_Unregister_Device(sys_device *dev);
 

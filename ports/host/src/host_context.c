@@ -34,6 +34,9 @@ void host_context_init_system(void) {
     running = NULL;
 }
 
+/* The system thread's context is the only one port_context_init never saw. */
+bool host_context_in_system_thread(void) { return running == NULL || running->entry == NULL; }
+
 static void thread_start(void) {
 #ifdef HOST_ASAN
     __sanitizer_finish_switch_fiber(NULL, NULL, NULL);
@@ -68,6 +71,7 @@ void port_switch(port_context_t *from, port_context_t *to) {
         to->stack_size = system_bounds.stack_size;
     }
     running = to;
+    host_cpu_note_scheduling();
 #ifdef HOST_ASAN
     __sanitizer_start_switch_fiber(&from->fake_stack, to->stack, to->stack_size);
 #endif

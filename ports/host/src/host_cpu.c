@@ -36,6 +36,7 @@ static void *isr_arg;
 static atomic_uint raised; /* sequence number of the last interrupt raised */
 static atomic_uint acked;  /* last one whose effects are over */
 static atomic_bool cpu_idle;
+static atomic_bool scheduling; /* the system thread has begun to run threads */
 static sem_t wakeup;   /* posted on every raise, for the idle CPU */
 static sem_t progress; /* posted on every acknowledgement, for the driver */
 
@@ -66,14 +67,18 @@ static bool service_batch(void) {
     return true;
 }
 
-/* With interrupts masked: service until nothing is pending, then
- * acknowledge everything raised so far. */
+/* With interrupts masked: service until nothing is pending. Back in a
+ * user thread, acknowledge everything raised so far; the system thread does
+ * not, since it is still busy with the interrupts' consequences (handlers)
+ * and acknowledges when it idles. */
 static void service_all(void) {
     for (;;) {
         unsigned seq = atomic_load(&raised);
         if (!service_batch()) {
-            atomic_store(&acked, seq);
-            sem_post(&progress);
+            if (!host_context_in_system_thread()) {
+                atomic_store(&acked, seq);
+                sem_post(&progress);
+            }
             return;
         }
     }
@@ -110,7 +115,10 @@ void port_irq_restore(port_irq_state_t state) {
     if (!state) port_irq_enable();
 }
 
+void host_cpu_note_scheduling(void) { atomic_store(&scheduling, true); }
+
 void port_idle(void) {
+    host_cpu_note_scheduling();
     for (;;) {
         if (anything_pending()) {
             service_all();
@@ -151,6 +159,7 @@ void port_init(void) {
     atomic_store(&raised, 0);
     atomic_store(&acked, 0);
     atomic_store(&cpu_idle, false);
+    atomic_store(&scheduling, false);
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_irq_signal;
@@ -215,11 +224,20 @@ static void stop_timer(void) {
     if (atomic_exchange(&timer_running, false)) pthread_join(timer, NULL);
 }
 
+/* Between two manual ticks the threads get a moment of CPU time: without
+ * it, back-to-back interrupts would be delivered before a preempted thread
+ * executes a single instruction. Results never depend on its length. */
+static void let_threads_run(void) {
+    struct timespec pause = {0, 20000};
+    nanosleep(&pause, NULL);
+}
+
 void host_cpu_advance(uint32_t ms) {
     pthread_mutex_lock(&driver_lock);
     for (uint32_t i = 0; i < ms; i++) {
         atomic_fetch_add(&pending_ticks, 1);
         wait_ack(raise_irq());
+        let_threads_run();
     }
     pthread_mutex_unlock(&driver_lock);
 }
@@ -276,8 +294,9 @@ void host_cpu_start(host_clock clock, void (*setup)(void)) {
     pthread_t t;
     pthread_create(&t, &attr, cpu_main, NULL);
     pthread_attr_destroy(&attr);
-    /* Wait until the kernel is initialised and the CPU id is known. */
-    while (!atomic_load(&cpu_alive)) sched_yield();
+    /* Return once the system thread runs threads, so that the caller's
+     * first tick finds them running rather than the kernel starting up. */
+    while (!atomic_load(&cpu_alive) || !atomic_load(&scheduling)) sched_yield();
 }
 
 void host_cpu_stop(void) {

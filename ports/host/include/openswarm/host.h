@@ -26,8 +26,9 @@ void host_cpu_start(host_clock clock, void (*setup)(void));
 /* Stop the kernel (Sys_Stop_Kernel from an interrupt) and join the CPU. */
 void host_cpu_stop(void);
 
-/* Manual clock: deliver ms ticks, one at a time; each returns once its
- * interrupt was serviced and the CPU is back in a thread or idle. */
+/* Manual clock: deliver ms ticks, one at a time; each is delivered once the
+ * previous one was serviced and the CPU is back in a thread or idle (plus a
+ * moment of wall-clock time for the threads to run). */
 void host_cpu_advance(uint32_t ms);
 
 /* Run isr(arg) as an interrupt on the CPU and wait until it was serviced. */
