@@ -7,7 +7,7 @@ packages=(
   cmake ninja-build g++ pkg-config          # host build
   googletest libgtest-dev                   # host test suites
   gcc-avr avr-libc binutils-avr             # Kilobot (ATmega328P) firmware
-  simavr libsimavr-dev                      # running firmware cycle-exactly
+  simavr libsimavr-dev libelf-dev          # running firmware cycle-exactly
   libcli11-dev nlohmann-json3-dev           # the openswarm command-line tool
 )
 

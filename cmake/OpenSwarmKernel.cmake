@@ -16,6 +16,11 @@ set(OPENSWARM_PORT_host_SOURCES
     ${OPENSWARM_ROOT}/ports/host/src/host_cpu.c
     ${OPENSWARM_ROOT}/ports/host/src/host_context.c)
 
+set(OPENSWARM_PORT_kilobot_SOURCES
+    ${OPENSWARM_ROOT}/ports/kilobot/src/port.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/switch.S
+    ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c)
+
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)
 set(OPENSWARM_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all
@@ -27,7 +32,7 @@ function(openswarm_add_kernel target)
     message(FATAL_ERROR "openswarm_add_kernel(${target}): PORT is required (host)")
   endif()
   if(NOT DEFINED OPENSWARM_PORT_${K_PORT}_SOURCES)
-    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host)")
+    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host, kilobot)")
   endif()
   add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES})
   target_include_directories(${target} PUBLIC
@@ -37,8 +42,16 @@ function(openswarm_add_kernel target)
   # host port uses C11 atomics.
   set_source_files_properties(${OPENSWARM_KERNEL_SOURCES} TARGET_DIRECTORY ${target}
     PROPERTIES COMPILE_OPTIONS "-std=c99")
-  set_source_files_properties(${OPENSWARM_PORT_${K_PORT}_SOURCES} TARGET_DIRECTORY ${target}
-    PROPERTIES COMPILE_OPTIONS "-std=gnu11")
+  if(K_PORT STREQUAL "host")
+    set_source_files_properties(${OPENSWARM_PORT_host_SOURCES} TARGET_DIRECTORY ${target}
+      PROPERTIES COMPILE_OPTIONS "-std=gnu11")
+  elseif(K_PORT STREQUAL "kilobot")
+    set(_c ${OPENSWARM_PORT_kilobot_SOURCES})
+    list(FILTER _c INCLUDE REGEX "\\.c$")
+    set_source_files_properties(${_c} TARGET_DIRECTORY ${target}
+      PROPERTIES COMPILE_OPTIONS "-std=gnu99")
+    target_compile_definitions(${target} PRIVATE OPENSWARM_MCU_NAME=${OPENSWARM_MCU})
+  endif()
   if(K_CONFIG)
     target_compile_definitions(${target} PUBLIC "OS_CONFIG_FILE=\"${K_CONFIG}\"")
   endif()

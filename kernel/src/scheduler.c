@@ -89,13 +89,11 @@ void os_switch_to(sys_tcb *next) {
 void os_schedule(void) {
     sys_tcb *cur = os.current;
     if (cur == OS_SYSTEM || os.isr_depth != 0) return; /* the system loop decides */
-    if (cur->state == SYS_PROCESS_RUNNING) {
-        if (os.lock_depth != 0) return; /* postponed to Sys_End_CriticalSection */
-        if (!os_stack_guard_intact(cur)) {
-            os.stats.stack_overflows++;
-            os_fault(SYS_FAULT_STACK_OVERFLOW, cur->pid);
-            os_terminate(cur);
-        }
+    if (cur->state == SYS_PROCESS_RUNNING && os.lock_depth != 0) return; /* postponed */
+    if (cur->state != SYS_PROCESS_ZOMBIE && !os_stack_guard_intact(cur)) {
+        os.stats.stack_overflows++;
+        os_fault(SYS_FAULT_STACK_OVERFLOW, cur->pid);
+        os_terminate(cur); /* a thread about to block is caught too */
     }
     if (cur->state == SYS_PROCESS_RUNNING) {
         if (os_system_work_pending()) {

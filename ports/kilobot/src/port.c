@@ -1,0 +1,67 @@
+/* Kilobot (ATmega328P at 8 MHz) port: interrupt mask, 1 ms tick on
+ * Timer0, sleeping idle, and the initial frame of a new thread. */
+#include "openswarm/port.h"
+
+#include <avr/interrupt.h>
+#include <avr/io.h>
+#include <avr/sleep.h>
+
+void port_thread_start(void); /* switch.S */
+
+#define SWITCH_FRAME_REGISTERS 18u
+
+void port_init(void) {
+    set_sleep_mode(SLEEP_MODE_IDLE); /* timers keep running */
+}
+
+void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*entry)(void *),
+                       void *arg) {
+    uint8_t *sp = (uint8_t *)stack + size - 1; /* AVR pushes post-decrement */
+    uint16_t start = (uint16_t)port_thread_start;
+    *sp-- = (uint8_t)start; /* return address of port_switch's ret: low byte on top */
+    *sp-- = (uint8_t)(start >> 8);
+    uint8_t regs[SWITCH_FRAME_REGISTERS] = {0}; /* r2..r17, r28, r29 */
+    regs[0] = (uint8_t)(uint16_t)entry;        /* r2 */
+    regs[1] = (uint8_t)((uint16_t)entry >> 8); /* r3 */
+    regs[2] = (uint8_t)(uint16_t)arg;          /* r4 */
+    regs[3] = (uint8_t)((uint16_t)arg >> 8);   /* r5 */
+    for (uint8_t i = 0; i < SWITCH_FRAME_REGISTERS; i++) *sp-- = regs[i];
+    ctx->sp = sp;
+}
+
+port_irq_state_t port_irq_save(void) {
+    port_irq_state_t sreg = SREG;
+    cli();
+    return sreg;
+}
+
+void port_irq_restore(port_irq_state_t state) { SREG = state; }
+void port_irq_enable(void) { sei(); }
+void port_irq_disable(void) { cli(); }
+
+void port_idle(void) {
+    sleep_enable();
+    sei();       /* the instruction after SEI runs before any interrupt: */
+    sleep_cpu(); /* no wake-up is lost between the two */
+    /* simavr 1.6 does not sleep while an interrupt is pending, and takes
+     * a pending interrupt only after it has seen the I flag set for a few
+     * instructions: without this window an interrupt that became pending
+     * just before SLEEP would stay pending for ever (time would stop). */
+    __asm__ __volatile__("nop\n\tnop\n\tnop" ::: "memory");
+    cli();
+    sleep_disable();
+}
+
+/* 8 MHz / 64 / 125 = 1000 Hz. */
+void port_tick_start(void) {
+    TCCR0A = _BV(WGM01); /* CTC */
+    OCR0A = (uint8_t)(F_CPU / 64u / 1000u - 1u);
+    TIMSK0 = _BV(OCIE0A);
+    TCCR0B = _BV(CS01) | _BV(CS00);
+}
+
+ISR(TIMER0_COMPA_vect) {
+    os_isr_enter();
+    os_tick();
+    os_isr_exit();
+}

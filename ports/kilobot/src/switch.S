@@ -1,0 +1,78 @@
+; Thread switch for the ATmega328P.
+;
+; port_switch(from, to) is an ordinary call, so the compiler has already
+; saved the call-clobbered registers it needs; only the callee-saved ones
+; (r2-r17, r28, r29) are pushed here. An interrupt that switches threads
+; gets here from its C handler, whose prologue saved the rest. Called with
+; interrupts masked, so the two halves of SP are written atomically.
+
+#include <avr/io.h>
+
+    .section .text.port_switch,"ax",@progbits
+    .global port_switch
+    .type port_switch, @function
+; r25:r24 = from (port_context_t *: its first member is sp)
+; r23:r22 = to
+port_switch:
+    push r2
+    push r3
+    push r4
+    push r5
+    push r6
+    push r7
+    push r8
+    push r9
+    push r10
+    push r11
+    push r12
+    push r13
+    push r14
+    push r15
+    push r16
+    push r17
+    push r28
+    push r29
+    movw r30, r24
+    in r0, _SFR_IO_ADDR(SPL)
+    st Z, r0
+    in r0, _SFR_IO_ADDR(SPH)
+    std Z+1, r0
+    movw r30, r22
+    ld r0, Z
+    out _SFR_IO_ADDR(SPL), r0
+    ldd r0, Z+1
+    out _SFR_IO_ADDR(SPH), r0
+    pop r29
+    pop r28
+    pop r17
+    pop r16
+    pop r15
+    pop r14
+    pop r13
+    pop r12
+    pop r11
+    pop r10
+    pop r9
+    pop r8
+    pop r7
+    pop r6
+    pop r5
+    pop r4
+    pop r3
+    pop r2
+    ret
+    .size port_switch, .-port_switch
+
+; First code of every thread: port_context_init leaves the entry function
+; in r3:r2 and its argument in r5:r4 of the initial switch frame.
+    .section .text.port_thread_start,"ax",@progbits
+    .global port_thread_start
+    .type port_thread_start, @function
+port_thread_start:
+    clr r1
+    movw r24, r4
+    movw r30, r2
+    sei
+    icall
+    jmp os_thread_exit
+    .size port_thread_start, .-port_thread_start

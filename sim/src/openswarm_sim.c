@@ -1,0 +1,203 @@
+/*
+ * openswarm-sim: runs a robot's firmware ELF, cycle-exactly, in simavr.
+ *
+ * Copyright (c) 2026 The OpenSwarm authors.
+ * This program is free software: you can redistribute it and/or modify it
+ * under the terms of the GNU General Public License as published by the
+ * Free Software Foundation, either version 3 of the License, or (at your
+ * option) any later version. It links libsimavr (GPLv3).
+ *
+ * Conventions shared with the firmware (ports/kilobot/include/openswarm/kilobot_sim.h):
+ *   GPIOR1  console: each byte written is a character, '\n' ends a line
+ *   GPIOR0  exit status, read when the firmware stops (SLEEP with
+ *           interrupts disabled)
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <sim_avr.h>
+#include <sim_elf.h>
+#include <sim_io.h>
+
+#define GPIOR0_ADDR 0x3E
+#define GPIOR1_ADDR 0x4A
+#define EM_AVR 83
+
+enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4 };
+
+typedef struct options {
+    const char *elf;
+    double seconds;
+    int quiet;
+    int expect_stop;
+} options;
+
+typedef struct console {
+    char line[256];
+    size_t len;
+} console;
+
+static void usage(FILE *out) {
+    fprintf(out,
+            "usage: openswarm-sim [options] FIRMWARE.elf\n"
+            "Run an AVR robot firmware in simavr, cycle-exactly, and print its console.\n\n"
+            "  -t, --time SECONDS   simulated time to run (default 10)\n"
+            "  -s, --expect-stop    fail (exit 4) unless the firmware stops by itself\n"
+            "  -q, --quiet          do not print the console\n"
+            "  -h, --help           this text\n\n"
+            "Exit status: the firmware's own status if it stopped, 0 if the time ran\n"
+            "out (4 with --expect-stop), 2 bad usage or ELF, 3 the firmware crashed.\n");
+}
+
+static int parse(int argc, char **argv, options *o) {
+    static const struct option longopts[] = {{"time", required_argument, 0, 't'},
+                                             {"expect-stop", no_argument, 0, 's'},
+                                             {"quiet", no_argument, 0, 'q'},
+                                             {"help", no_argument, 0, 'h'},
+                                             {0, 0, 0, 0}};
+    o->seconds = 10.0;
+    int c;
+    while ((c = getopt_long(argc, argv, "t:sqh", longopts, NULL)) != -1) {
+        switch (c) {
+        case 't': {
+            char *end;
+            o->seconds = strtod(optarg, &end);
+            if (*end == 's') end++;
+            if (*end != '\0' || o->seconds <= 0) {
+                fprintf(stderr, "openswarm-sim: --time '%s': expected seconds, e.g. --time 2.5\n",
+                        optarg);
+                return -1;
+            }
+            break;
+        }
+        case 's': o->expect_stop = 1; break;
+        case 'q': o->quiet = 1; break;
+        case 'h': usage(stdout); exit(0);
+        default: usage(stderr); return -1;
+        }
+    }
+    if (optind != argc - 1) {
+        fprintf(stderr, "openswarm-sim: expected one FIRMWARE.elf (see --help)\n");
+        return -1;
+    }
+    o->elf = argv[optind];
+    return 0;
+}
+
+/* Check the file before simavr sees it: simavr 1.6 crashes on some bad
+ * input instead of reporting it. */
+static int check_elf(const char *path) {
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) {
+        fprintf(stderr, "openswarm-sim: %s: %s\n", path, strerror(errno));
+        return -1;
+    }
+    unsigned char h[20];
+    size_t n = fread(h, 1, sizeof h, f);
+    fclose(f);
+    if (n < sizeof h || memcmp(h, "\177ELF", 4) != 0) {
+        fprintf(stderr, "openswarm-sim: %s: not an ELF file (build the firmware first)\n", path);
+        return -1;
+    }
+    if ((h[18] | h[19] << 8) != EM_AVR) {
+        fprintf(stderr, "openswarm-sim: %s: an ELF for another CPU, not AVR "
+                        "(build it with the Kilobot toolchain)\n", path);
+        return -1;
+    }
+    return 0;
+}
+
+static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
+    console *c = param;
+    avr->data[addr] = v;
+    if (v == '\n' || c->len == sizeof c->line - 1) {
+        c->line[c->len] = '\0';
+        fprintf(stdout, "%s\n", c->line);
+        fflush(stdout);
+        c->len = 0;
+    } else if (v != '\r') {
+        c->line[c->len++] = (char)v;
+    }
+}
+
+static void console_drop(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
+    (void)param;
+    avr->data[addr] = v;
+}
+
+/* simavr reports what it loads at its lowest level; keep its errors only. */
+static void log_errors_only(avr_t *avr, const int level, const char *format, va_list args) {
+    (void)avr;
+    if (level > LOG_ERROR) return;
+    if (level == LOG_OUTPUT) return;
+    vfprintf(stderr, format, args);
+}
+
+/* Sleeping costs no wall-clock time: simavr has already advanced the cycle
+ * counter to the next timer event. */
+static void fast_forward(avr_t *avr, avr_cycle_count_t how_long) {
+    (void)avr;
+    (void)how_long;
+}
+
+int main(int argc, char **argv) {
+    options o = {0};
+    if (parse(argc, argv, &o) != 0) return EXIT_USAGE;
+    if (check_elf(o.elf) != 0) return EXIT_USAGE;
+
+    avr_global_logger_set(log_errors_only);
+    elf_firmware_t fw;
+    memset(&fw, 0, sizeof fw);
+    if (elf_read_firmware(o.elf, &fw) != 0) {
+        fprintf(stderr, "openswarm-sim: %s: cannot read the firmware\n", o.elf);
+        return EXIT_USAGE;
+    }
+    if (fw.mmcu[0] == '\0' || fw.frequency == 0) {
+        fprintf(stderr, "openswarm-sim: %s: no MCU record in the ELF; link it with the OpenSwarm "
+                        "port (it adds ports/kilobot/src/mcu_tag.c)\n", o.elf);
+        return EXIT_USAGE;
+    }
+    avr_t *avr = avr_make_mcu_by_name(fw.mmcu);
+    if (avr == NULL) {
+        fprintf(stderr, "openswarm-sim: %s: simavr does not know the MCU '%s'\n", o.elf, fw.mmcu);
+        return EXIT_USAGE;
+    }
+    avr_init(avr);
+    avr->log = LOG_ERROR;
+    avr_load_firmware(avr, &fw);
+    avr->sleep = fast_forward;
+
+    console con = {{0}, 0};
+    avr_register_io_write(avr, GPIOR1_ADDR, o.quiet ? console_drop : console_write, &con);
+
+    avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)avr->frequency);
+    int state = cpu_Running;
+    while (avr->cycle < limit) {
+        state = avr_run(avr);
+        if (state == cpu_Done || state == cpu_Crashed) break;
+    }
+    double t = (double)avr->cycle / (double)avr->frequency;
+    if (state == cpu_Crashed) {
+        fprintf(stderr, "openswarm-sim: the firmware crashed at %.6f s (PC 0x%04x): a bad jump "
+                        "or a stack overflow; run it with avr-gdb to see where\n",
+                t, (unsigned)avr->pc);
+        return EXIT_CRASH;
+    }
+    if (state == cpu_Done) {
+        int status = avr->data[GPIOR0_ADDR];
+        if (!o.quiet) fprintf(stderr, "openswarm-sim: stopped at %.6f s, status %d\n", t, status);
+        return status;
+    }
+    if (o.expect_stop) {
+        fprintf(stderr, "openswarm-sim: the firmware did not stop within %.3f s of simulated "
+                        "time (PC 0x%04x%s); give it longer with --time\n", o.seconds,
+                (unsigned)avr->pc, avr->state == cpu_Sleeping ? ", sleeping" : "");
+        return EXIT_TIMEOUT;
+    }
+    if (!o.quiet) fprintf(stderr, "openswarm-sim: ran %.3f s of simulated time\n", t);
+    return 0;
+}

@@ -1,0 +1,12 @@
+/* Kernel pools for the AVR behaviour suite: what fits in 2 KB of RAM. */
+#define OS_CFG_MAX_THREADS 6
+#define OS_CFG_STACK_POOL_BYTES 640
+#define OS_CFG_STACK_BLOCK_BYTES 16
+#define OS_CFG_DEFAULT_STACK_BYTES 64
+#define OS_CFG_MAX_EVENTS 12
+#define OS_CFG_EVENT_DATA_BYTES 48
+#define OS_CFG_DEFAULT_EVENT_DATA 2
+#define OS_CFG_MAX_SUBSCRIPTIONS 6
+#define OS_CFG_EVENT_QUEUE_BYTES 32
+#define OS_CFG_MAX_DEVICES 2
+#define OS_CFG_HAL_MAX_VALUE 4
