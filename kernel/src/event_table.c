@@ -178,7 +178,8 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     int i;
     if (!os_event_registered(event)) {
         st = SYS_E_NOT_REGISTERED;
-    } else if (pid != SYS_PID_SYSTEM && os_thread_of(pid) == NULL) {
+    } else if (pid != SYS_PID_SYSTEM &&
+               (os_thread_of(pid) == NULL || os_thread_of(pid)->state == SYS_PROCESS_ZOMBIE)) {
         st = SYS_E_INVALID;
     } else if (find_subscription(event, pid, handler) != NULL) {
         st = SYS_E_EXISTS;

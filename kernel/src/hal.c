@@ -19,7 +19,9 @@ static bool process(sys_device *dev, sys_processor processor, const void *in, ui
     else if (size <= OS_CFG_HAL_MAX_VALUE && size != 0)
         memcpy(out, in, size);
     if ((processor != NULL && n == 0) || n > OS_CFG_HAL_MAX_VALUE) {
+        port_irq_state_t s = port_irq_save(); /* 16 bits: not atomic on 8-bit CPUs */
         dev->rejected++;
+        port_irq_restore(s);
         return false;
     }
     *out_size = n;
@@ -61,8 +63,7 @@ static int device_index(const sys_device *dev) {
     return -1;
 }
 
-sys_status Sys_Register_Device(sys_device *dev) {
-    if (dev == NULL || dev->kind > SYS_DEVICE_COMM) return SYS_E_INVALID;
+static sys_status register_device(sys_device *dev) {
     if (device_index(dev) >= 0) return SYS_E_EXISTS;
     /* One command event drives one device: a second would never be written. */
     if (dev->kind != SYS_DEVICE_INPUT &&
@@ -70,9 +71,7 @@ sys_status Sys_Register_Device(sys_device *dev) {
         return SYS_E_EXISTS;
     int slot = device_index(NULL);
     if (slot < 0) {
-        port_irq_state_t s = port_irq_save();
         os.stats.device_table_full++;
-        port_irq_restore(s);
         return SYS_E_POOL_FULL;
     }
     sys_status st = ensure_registered(dev->event);
@@ -87,15 +86,32 @@ sys_status Sys_Register_Device(sys_device *dev) {
     return SYS_OK;
 }
 
+/* Registration changes tables an interrupt may read: it runs with
+ * interrupts masked (the kernel calls it makes nest their own masking). */
+sys_status Sys_Register_Device(sys_device *dev) {
+    if (dev == NULL || dev->kind > SYS_DEVICE_COMM) return SYS_E_INVALID;
+    if (os.isr_depth != 0) return SYS_E_CONTEXT;
+    port_irq_state_t s = port_irq_save();
+    sys_status st = register_device(dev);
+    port_irq_restore(s);
+    return st;
+}
+
 sys_status Sys_Unregister_Device(sys_device *dev) {
+    if (os.isr_depth != 0) return SYS_E_CONTEXT;
+    port_irq_state_t s = port_irq_save();
     int slot = device_index(dev);
-    if (dev == NULL || slot < 0) return SYS_E_NOT_FOUND;
+    if (dev == NULL || slot < 0) {
+        port_irq_restore(s);
+        return SYS_E_NOT_FOUND;
+    }
     devices[slot] = NULL;
     if (dev->kind != SYS_DEVICE_INPUT) {
         sys_event_id command = dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event;
         if (device_for_command(command) == NULL)
             Sys_Unsubscribe_from_Event(command, SYS_PID_SYSTEM, command_handler);
     }
+    port_irq_restore(s);
     return SYS_OK;
 }
 

@@ -102,6 +102,7 @@ void os_reap_zombies(void) {
         t->stack = NULL;
         t->state = OS_SLOT_FREE;
         t->pid = (sys_pid)(t->pid + 0x10u); /* next generation */
+        if (t->pid == SYS_PID_NONE) t->pid = (sys_pid)(t->pid + 0x10u); /* 0xFF means "none" */
     }
     os.reap_pending = false;
 }
@@ -139,13 +140,16 @@ sys_status Sys_Yield(void) {
     return SYS_OK;
 }
 
-void Sys_Start_CriticalSection(void) {
+sys_status Sys_Start_CriticalSection(void) {
+    if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     os.lock_depth++;
     port_irq_restore(s);
+    return SYS_OK;
 }
 
 sys_status Sys_End_CriticalSection(void) {
+    if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     if (os.lock_depth == 0) {
         port_irq_restore(s);

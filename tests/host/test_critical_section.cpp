@@ -191,3 +191,14 @@ TEST_F(CriticalSection, HandlerLeavingOneOpenIsReleased) {
     EXPECT_EQ(1u, stats().critical_leaks);
     power_off();
 }
+
+TEST_F(CriticalSection, InterruptsCannotOpenOne) {
+    sys_status start = SYS_OK, end = SYS_OK;
+    boot([] {});
+    irq([&] {
+        start = Sys_Start_CriticalSection();
+        end = Sys_End_CriticalSection();
+    });
+    EXPECT_STATUS(SYS_E_CONTEXT, start);
+    EXPECT_STATUS(SYS_E_CONTEXT, end);
+}

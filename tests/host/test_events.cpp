@@ -347,3 +347,19 @@ TEST_F(Events, RegistrationFromAnInterruptIsRefused) {
     EXPECT_STATUS(SYS_E_CONTEXT, reg);
     EXPECT_STATUS(SYS_E_CONTEXT, unreg);
 }
+
+TEST_F(Events, NoSubscriptionForAThreadBeingTornDown) {
+    sys_status for_zombie = SYS_OK;
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        spawn([&] {
+            sys_pid victim = spawn([] { Sys_Sleep(100000); });
+            Sys_Start_CriticalSection(); // keeps the victim a zombie, unreaped
+            Sys_Kill_Process(victim);
+            for_zombie = Sys_Subscribe_to_Event(EV_A, victim, log_handler, nullptr);
+            Sys_End_CriticalSection();
+        });
+    });
+    settle();
+    EXPECT_STATUS(SYS_E_INVALID, for_zombie);
+}

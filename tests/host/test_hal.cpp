@@ -561,3 +561,16 @@ TEST_F(Hal, ASecondOutputDeviceOnTheSameCommandIsRefused) {
     EXPECT_STATUS(SYS_E_EXISTS, second);
     EXPECT_EQ("a=7", joined());
 }
+
+TEST_F(Hal, RegistrationFromAnInterruptIsRefused) {
+    static sys_device dev;
+    dev = sys_device{"late", SYS_DEVICE_INPUT, EV_A, 0, nullptr, nullptr, nullptr, nullptr, 0};
+    sys_status reg = SYS_OK, unreg = SYS_OK;
+    boot([] {});
+    irq([&] {
+        reg = Sys_Register_Device(&dev);
+        unreg = Sys_Unregister_Device(&dev);
+    });
+    EXPECT_STATUS(SYS_E_CONTEXT, reg);
+    EXPECT_STATUS(SYS_E_CONTEXT, unreg);
+}

@@ -18,11 +18,6 @@
 #define OS_CFG_MAX_THREADS 8
 #endif
 
-/* Bytes shared by all thread stacks (before the port's per-stack extra). */
-#ifndef OS_CFG_STACK_POOL_BYTES
-#define OS_CFG_STACK_POOL_BYTES 1024
-#endif
-
 /* Stacks are carved from the pool in blocks of this many bytes. */
 #ifndef OS_CFG_STACK_BLOCK_BYTES
 #define OS_CFG_STACK_BLOCK_BYTES 32
@@ -31,6 +26,15 @@
 /* Stack size of Sys_Start_Process (the paper's default: 128 B). */
 #ifndef OS_CFG_DEFAULT_STACK_BYTES
 #define OS_CFG_DEFAULT_STACK_BYTES 128
+#endif
+
+/* Bytes shared by all thread stacks (before the port's per-stack extra and
+ * the 4-byte guard). By default every thread fits at the default size. */
+#ifndef OS_CFG_STACK_POOL_BYTES
+#define OS_CFG_STACK_POOL_BYTES \
+    ((OS_CFG_MAX_THREADS - 1) * \
+     ((OS_CFG_DEFAULT_STACK_BYTES + 4 + OS_CFG_STACK_BLOCK_BYTES - 1) / OS_CFG_STACK_BLOCK_BYTES) * \
+     OS_CFG_STACK_BLOCK_BYTES)
 #endif
 
 /* Event ids are 0 .. OS_CFG_MAX_EVENTS-1. At most 255. */

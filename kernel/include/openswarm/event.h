@@ -37,7 +37,9 @@ typedef struct sys_event_data {
 /* A handler runs for every occurrence (or every one its condition accepts).
  * pid is the subscribing thread. Return false to unsubscribe. */
 typedef bool (*sys_event_handler)(sys_pid pid, sys_event_id event, const sys_event_data *data);
-/* A condition decides whether an occurrence wakes a waiter or runs a handler. */
+/* A condition decides whether an occurrence wakes a waiter or runs a handler.
+ * Conditions of waits run in the system thread with interrupts masked, so
+ * keep them to a few instructions (a counter, a comparison). */
 typedef bool (*sys_event_condition)(const sys_event_data *data);
 
 /* Register with OS_CFG_DEFAULT_EVENT_DATA bytes of data capacity. */
@@ -45,7 +47,9 @@ sys_status Sys_Register_Event(sys_event_id event);
 /* Register with an explicit data capacity (0..255 bytes). */
 sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity);
 /* Unregister: subscriptions are dropped, waiters woken with
- * SYS_E_NOT_REGISTERED, queued occurrences discarded and counted. */
+ * SYS_E_NOT_REGISTERED. Occurrences still queued are discarded and counted
+ * (sys_stats.events_discarded) unless the event is registered again before
+ * they are dispatched, in which case the new registration receives them. */
 sys_status Sys_Unregister_Event(sys_event_id event);
 bool Sys_IsEventRegistered(sys_event_id event);
 

@@ -40,8 +40,9 @@ sys_status Sys_Yield(void);
 
 /* Critical sections postpone every thread switch and event dispatch until
  * the outermost Sys_End_CriticalSection. Interrupts stay enabled. They nest;
- * a thread that ends while inside one releases it (counted as a leak). */
-void Sys_Start_CriticalSection(void);
+ * a thread that ends while inside one releases it (counted as a leak).
+ * Interrupts cannot open one (SYS_E_CONTEXT): they already run to the end. */
+sys_status Sys_Start_CriticalSection(void);
 sys_status Sys_End_CriticalSection(void);
 
 sys_pid Sys_Get_ProcessID(void);
