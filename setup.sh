@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ pkg-config          # host build
+  cmake ninja-build g++ pkg-config python3  # host build, benchmarks
   googletest libgtest-dev                   # host test suites
   gcc-avr avr-libc binutils-avr             # Kilobot (ATmega328P) firmware
   simavr libsimavr-dev libelf-dev          # running firmware cycle-exactly

@@ -8,33 +8,30 @@
 #define HEADER_BYTES 2u
 
 static uint8_t ring[OS_CFG_EVENT_QUEUE_BYTES];
-static uint8_t head;  /* next byte to pop */
-static uint8_t count; /* bytes queued */
+static uint8_t head; /* next byte to pop; os.queued_bytes follow it */
 
-void os_event_queue_reset(void) { head = count = 0; }
-
-bool os_event_queue_empty(void) { return count == 0; }
+void os_event_queue_reset(void) { head = os.queued_bytes = 0; }
 
 static void put(uint8_t byte) {
-    uint16_t at = (uint16_t)(head + count);
+    uint16_t at = (uint16_t)(head + os.queued_bytes);
     ring[at >= QUEUE_BYTES ? at - QUEUE_BYTES : at] = byte;
-    count++;
+    os.queued_bytes++;
 }
 
 static uint8_t take(void) {
     uint8_t byte = ring[head];
     head = (uint8_t)(head + 1u == QUEUE_BYTES ? 0u : head + 1u);
-    count--;
+    os.queued_bytes--;
     return byte;
 }
 
 bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size) {
-    if ((uint16_t)count + HEADER_BYTES + size > QUEUE_BYTES) return false;
+    if ((uint16_t)os.queued_bytes + HEADER_BYTES + size > QUEUE_BYTES) return false;
     const uint8_t *bytes = (const uint8_t *)data;
     put(event);
     put(size);
     for (uint8_t i = 0; i < size; i++) put(bytes[i]);
-    if (count > os.stats.event_queue_peak) os.stats.event_queue_peak = count;
+    if (os.queued_bytes > os.stats.event_queue_peak) os.stats.event_queue_peak = os.queued_bytes;
     return true;
 }
 

@@ -14,13 +14,15 @@
 #include <string.h>
 
 #define NONE 0xFFu
-#define UNREGISTERED 0xFFu /* size of a slot that is not registered */
+/* Two sizes no occurrence can have (capacities stop at SYS_EVENT_DATA_MAX)
+ * mark a slot's state, so a slot is 4 bytes on an 8-bit CPU. */
+#define UNREGISTERED 0xFFu /* the event is not registered */
+#define NOTHING_KEPT 0xFEu /* registered, no occurrence kept (yet, or cleared) */
 
 typedef struct event_slot {
     uint8_t *data;
     uint8_t capacity;
-    uint8_t size; /* bytes kept; UNREGISTERED if the event is not registered */
-    bool kept;    /* data holds an occurrence */
+    uint8_t size; /* bytes kept, or UNREGISTERED / NOTHING_KEPT */
 } event_slot;
 
 typedef struct subscription {
@@ -79,7 +81,7 @@ static bool take_data_block(event_slot *slot, uint8_t capacity) {
 }
 
 sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
-    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
+    if (event >= OS_CFG_MAX_EVENTS || capacity > SYS_EVENT_DATA_MAX) return SYS_E_INVALID;
     if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
@@ -90,8 +92,7 @@ sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
         os.stats.event_data_full++;
         st = SYS_E_POOL_FULL;
     } else {
-        slot->size = 0;
-        slot->kept = false;
+        slot->size = NOTHING_KEPT;
     }
     port_irq_restore(s);
     return st;
@@ -137,7 +138,6 @@ sys_status Sys_Unregister_Event(sys_event_id event) {
         return SYS_E_NOT_REGISTERED;
     }
     events[event].size = UNREGISTERED; /* the data block stays for reuse */
-    events[event].kept = false;
     remove_subscriptions(event, false, 0, true);
     os_wake_all_waiting_for(event, SYS_E_NOT_REGISTERED);
     if (os_in_thread()) os_schedule();
@@ -234,7 +234,6 @@ bool os_event_store(sys_event_id event, uint8_t size, sys_event_data *out) {
     event_slot *slot = &events[event];
     if (slot->size == UNREGISTERED || size > slot->capacity) return false;
     slot->size = size;
-    slot->kept = true;
     out->value = slot->data;
     out->size = size;
     out->event = event;
@@ -282,7 +281,7 @@ sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity,
     sys_status st;
     if (slot->size == UNREGISTERED) {
         st = SYS_E_NOT_REGISTERED;
-    } else if (!slot->kept) {
+    } else if (slot->size == NOTHING_KEPT) {
         st = SYS_E_NOT_FOUND;
     } else {
         uint8_t n = slot->size < capacity ? slot->size : capacity;
@@ -299,8 +298,7 @@ sys_status Sys_Clear_EventData(sys_event_id event) {
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_E_NOT_REGISTERED;
     if (events[event].size != UNREGISTERED) {
-        events[event].kept = false;
-        events[event].size = 0;
+        events[event].size = NOTHING_KEPT;
         st = SYS_OK;
     }
     port_irq_restore(s);

@@ -11,6 +11,17 @@
 /* Event id of a wait that waits for no event (Sys_Sleep). */
 #define OS_NO_EVENT ((sys_event_id)0xFF)
 
+/* The stack pool: every stack also gets the port's extra bytes. */
+#define OS_STACK_POOL_TOTAL \
+    (OS_CFG_STACK_POOL_BYTES + (OS_CFG_MAX_THREADS - 1) * PORT_STACK_EXTRA)
+#define OS_STACK_BLOCKS \
+    ((OS_STACK_POOL_TOTAL + OS_CFG_STACK_BLOCK_BYTES - 1) / OS_CFG_STACK_BLOCK_BYTES)
+#if OS_STACK_BLOCKS > 255
+typedef uint16_t os_block_count; /* hosts: large stacks */
+#else
+typedef uint8_t os_block_count; /* robots: one byte per thread less */
+#endif
+
 /* What a blocked thread waits for. It lives on the waiting thread's stack,
  * which stays untouched while the thread is blocked, so a TCB only needs a
  * pointer to it. */
@@ -30,7 +41,7 @@ struct sys_tcb {
     sys_tcb *next;    /* ready list */
     os_wait *wait;    /* set while BLOCKED */
     uint8_t *stack;   /* lowest address: the guard lives here */
-    uint16_t stack_blocks;
+    os_block_count stack_blocks;
     uint8_t state;    /* sys_process_state or OS_SLOT_FREE */
     uint8_t priority;
     sys_pid pid;
@@ -46,6 +57,7 @@ typedef struct os_kernel {
     uint32_t switches;
     uint16_t slice_ms;
     uint16_t slice_left;
+    uint8_t queued_bytes; /* of the event queue: non-zero means dispatch is due */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
     bool slice_expired;
@@ -60,6 +72,11 @@ extern os_kernel os;
 
 static inline bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
 
+/* Has the system thread work to do (on every scheduling decision)? */
+static inline bool os_system_work_pending(void) {
+    return (os.queued_bytes | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
+}
+
 /* process.c */
 sys_tcb *os_thread_of(sys_pid pid); /* NULL if pid is not a live thread */
 void os_terminate(sys_tcb *t);      /* make t a zombie and detach it from everything */
@@ -72,12 +89,11 @@ void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
 sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
 void os_switch_to(sys_tcb *next);
-bool os_system_work_pending(void);
 
 /* stack_pool.c */
 void os_stack_pool_reset(void);
-uint8_t *os_stack_alloc(uint16_t bytes, uint16_t *blocks, size_t *size);
-void os_stack_free(uint8_t *stack, uint16_t blocks);
+uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size);
+void os_stack_free(uint8_t *stack, os_block_count blocks);
 bool os_stack_guard_intact(const sys_tcb *t);
 
 /* event_table.c */
@@ -94,7 +110,7 @@ void os_run_handlers(const sys_event_data *data);
 /* event_queue.c */
 void os_event_queue_reset(void);
 bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size);
-bool os_event_queue_empty(void);
+static inline bool os_event_queue_empty(void) { return os.queued_bytes == 0; }
 /* Pop one occurrence into the event's kept data and describe it in *out;
  * false if it had to be discarded (event unregistered meanwhile). */
 bool os_event_queue_pop(sys_event_data *out);

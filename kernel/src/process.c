@@ -30,7 +30,7 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
         return SYS_E_POOL_FULL;
     }
     size_t size;
-    uint16_t blocks;
+    os_block_count blocks;
     uint8_t *stack = os_stack_alloc(stack_bytes, &blocks, &size);
     if (stack == NULL) {
         os.stats.stack_pool_full++;

@@ -47,10 +47,6 @@ static sys_tcb *ready_pop(void) {
     return t;
 }
 
-bool os_system_work_pending(void) {
-    return !os_event_queue_empty() || os.reap_pending || os.stop_requested;
-}
-
 /* Should the running (or preempted) thread t give up the CPU to the ready
  * list's head? */
 static bool must_rotate(const sys_tcb *t) {

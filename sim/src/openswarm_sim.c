@@ -11,6 +11,8 @@
  *   GPIOR1  console: each byte written is a character, '\n' ends a line
  *   GPIOR0  exit status, read when the firmware stops (SLEEP with
  *           interrupts disabled)
+ *   GPIOR2  marker: with --marks, every change of its value is printed
+ *           with the exact cycle, for cycle-exact measurements
  */
 #include <errno.h>
 #include <getopt.h>
@@ -21,10 +23,14 @@
 
 #include <sim_avr.h>
 #include <sim_elf.h>
+#include <sim_interrupts.h>
 #include <sim_io.h>
+#include <sim_irq.h>
 
 #define GPIOR0_ADDR 0x3E
 #define GPIOR1_ADDR 0x4A
+#define GPIOR2_ADDR 0x4B
+#define MAX_WATCHED_IRQS 8
 #define EM_AVR 83
 
 enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4 };
@@ -34,6 +40,9 @@ typedef struct options {
     double seconds;
     int quiet;
     int expect_stop;
+    int marks;
+    int watched[MAX_WATCHED_IRQS];
+    int n_watched;
 } options;
 
 typedef struct console {
@@ -48,6 +57,8 @@ static void usage(FILE *out) {
             "  -t, --time SECONDS   simulated time to run (default 10)\n"
             "  -s, --expect-stop    fail (exit 4) unless the firmware stops by itself\n"
             "  -q, --quiet          do not print the console\n"
+            "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
+            "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped, 0 if the time ran\n"
             "out (4 with --expect-stop), 2 bad usage or ELF, 3 the firmware crashed.\n");
@@ -57,11 +68,13 @@ static int parse(int argc, char **argv, options *o) {
     static const struct option longopts[] = {{"time", required_argument, 0, 't'},
                                              {"expect-stop", no_argument, 0, 's'},
                                              {"quiet", no_argument, 0, 'q'},
+                                             {"marks", no_argument, 0, 'm'},
+                                             {"watch-irq", required_argument, 0, 'i'},
                                              {"help", no_argument, 0, 'h'},
                                              {0, 0, 0, 0}};
     o->seconds = 10.0;
     int c;
-    while ((c = getopt_long(argc, argv, "t:sqh", longopts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "t:sqmi:h", longopts, NULL)) != -1) {
         switch (c) {
         case 't': {
             char *end;
@@ -76,6 +89,18 @@ static int parse(int argc, char **argv, options *o) {
         }
         case 's': o->expect_stop = 1; break;
         case 'q': o->quiet = 1; break;
+        case 'm': o->marks = 1; break;
+        case 'i': {
+            char *end;
+            long v = strtol(optarg, &end, 10);
+            if (*end != '\0' || v < 1 || v > 255 || o->n_watched == MAX_WATCHED_IRQS) {
+                fprintf(stderr, "openswarm-sim: --watch-irq '%s': expected a vector number 1..255 "
+                                "(at most %d of them)\n", optarg, MAX_WATCHED_IRQS);
+                return -1;
+            }
+            o->watched[o->n_watched++] = (int)v;
+            break;
+        }
         case 'h': usage(stdout); exit(0);
         default: usage(stderr); return -1;
         }
@@ -129,6 +154,24 @@ static void console_drop(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
     avr->data[addr] = v;
 }
 
+static void mark_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
+    (void)param;
+    if (avr->data[addr] != v)
+        printf("mark %u %llu\n", (unsigned)v, (unsigned long long)avr->cycle);
+    avr->data[addr] = v;
+}
+
+typedef struct watched_irq {
+    avr_t *avr;
+    int vector;
+} watched_irq;
+
+static void irq_raised(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    const watched_irq *w = param;
+    if (value) printf("irq %d %llu\n", w->vector, (unsigned long long)w->avr->cycle);
+}
+
 /* simavr reports what it loads at its lowest level; keep its errors only. */
 static void log_errors_only(avr_t *avr, const int level, const char *format, va_list args) {
     (void)avr;
@@ -173,6 +216,19 @@ int main(int argc, char **argv) {
 
     console con = {{0}, 0};
     avr_register_io_write(avr, GPIOR1_ADDR, o.quiet ? console_drop : console_write, &con);
+    if (o.marks) avr_register_io_write(avr, GPIOR2_ADDR, mark_write, NULL);
+    static watched_irq watches[MAX_WATCHED_IRQS];
+    for (int i = 0; i < o.n_watched; i++) {
+        watches[i].avr = avr;
+        watches[i].vector = o.watched[i];
+        avr_irq_t *irq = avr_get_interrupt_irq(avr, (uint8_t)o.watched[i]);
+        if (irq == NULL) {
+            fprintf(stderr, "openswarm-sim: --watch-irq %d: %s has no such interrupt vector\n",
+                    o.watched[i], fw.mmcu);
+            return EXIT_USAGE;
+        }
+        avr_irq_register_notify(irq, irq_raised, &watches[i]);
+    }
 
     avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)avr->frequency);
     int state = cpu_Running;

@@ -44,7 +44,8 @@ typedef bool (*sys_event_condition)(const sys_event_data *data);
 
 /* Register with OS_CFG_DEFAULT_EVENT_DATA bytes of data capacity. */
 sys_status Sys_Register_Event(sys_event_id event);
-/* Register with an explicit data capacity (0..255 bytes). */
+/* Register with an explicit data capacity (0..SYS_EVENT_DATA_MAX bytes). */
+#define SYS_EVENT_DATA_MAX 253
 sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity);
 /* Unregister: subscriptions are dropped, waiters woken with
  * SYS_E_NOT_REGISTERED. Occurrences still queued are discarded and counted

@@ -10,8 +10,9 @@ endif()
 set(CMAKE_C_COMPILER avr-gcc)
 set(CMAKE_CXX_COMPILER avr-g++)
 set(CMAKE_ASM_COMPILER avr-gcc)
-set(CMAKE_AR avr-ar CACHE FILEPATH "")
-set(CMAKE_RANLIB avr-ranlib CACHE FILEPATH "")
+# The gcc-ar wrappers keep the link-time-optimisation objects usable.
+set(CMAKE_AR avr-gcc-ar CACHE FILEPATH "")
+set(CMAKE_RANLIB avr-gcc-ranlib CACHE FILEPATH "")
 set(CMAKE_SIZE avr-size CACHE FILEPATH "")
 set(CMAKE_OBJCOPY avr-objcopy CACHE FILEPATH "")
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
@@ -19,14 +20,16 @@ set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 set(OPENSWARM_MCU atmega328p CACHE STRING "AVR part")
 set(OPENSWARM_F_CPU 8000000 CACHE STRING "CPU clock in Hz")
 
-set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os -ffunction-sections -fdata-sections")
+# Link-time optimisation lets the kernel's one-concern-per-file sources
+# inline across files: it shrinks the image and the switch path.
+set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os -flto -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${_avr_flags}")
 set(CMAKE_CXX_FLAGS_INIT "${_avr_flags} -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
 # --undefined keeps the .mmcu record simavr reads; it must sit where
 # simavr 1.6 looks for it, or it crashes at load.
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-mmcu=${OPENSWARM_MCU} -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
+    "-mmcu=${OPENSWARM_MCU} -Os -flto -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
 set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
