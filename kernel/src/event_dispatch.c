@@ -32,3 +32,16 @@ void os_dispatch_one(void) {
     os_wake_waiters(&data);
     os_run_handlers(&data);
 }
+
+static void dispatch_all(void) {
+    while (!os_event_queue_empty()) os_dispatch_one();
+}
+
+/* From a running thread, or an interrupt that ends: the handlers run at
+ * once, as the system thread and on its stack, and the thread goes on. */
+void os_dispatch_on_system_stack(void) {
+    sys_tcb *interrupted = os.current;
+    os.current = OS_SYSTEM;
+    port_call_on_system_stack(&OS_SYSTEM->ctx, dispatch_all);
+    os.current = interrupted;
+}

@@ -12,38 +12,49 @@ static uint8_t head; /* next byte to pop; os.queued_bytes follow it */
 
 void os_event_queue_reset(void) { head = os.queued_bytes = 0; }
 
-static void put(uint8_t byte) {
-    uint16_t at = (uint16_t)(head + os.queued_bytes);
-    ring[at >= QUEUE_BYTES ? at - QUEUE_BYTES : at] = byte;
-    os.queued_bytes++;
+/* Copy n bytes into the ring at `at`, wrapping once if needed. */
+static void ring_write(uint8_t at, const uint8_t *src, uint8_t n) {
+    uint8_t *dst = &ring[at];
+    while (n-- != 0) {
+        *dst++ = *src++;
+        if (dst == &ring[QUEUE_BYTES]) dst = ring;
+    }
 }
 
-static uint8_t take(void) {
-    uint8_t byte = ring[head];
-    head = (uint8_t)(head + 1u == QUEUE_BYTES ? 0u : head + 1u);
-    os.queued_bytes--;
-    return byte;
+static uint8_t wrap(uint16_t index) {
+    return (uint8_t)(index >= QUEUE_BYTES ? index - QUEUE_BYTES : index);
 }
 
 bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size) {
     if ((uint16_t)os.queued_bytes + HEADER_BYTES + size > QUEUE_BYTES) return false;
-    const uint8_t *bytes = (const uint8_t *)data;
-    put(event);
-    put(size);
-    for (uint8_t i = 0; i < size; i++) put(bytes[i]);
+    uint8_t header[HEADER_BYTES] = {event, size};
+    uint8_t tail = wrap((uint16_t)head + os.queued_bytes);
+    ring_write(tail, header, HEADER_BYTES);
+    ring_write(wrap((uint16_t)tail + HEADER_BYTES), (const uint8_t *)data, size);
+    os.queued_bytes = (uint8_t)(os.queued_bytes + HEADER_BYTES + size);
     if (os.queued_bytes > os.stats.event_queue_peak) os.stats.event_queue_peak = os.queued_bytes;
     return true;
 }
 
-bool os_event_queue_pop(sys_event_data *out) {
-    sys_event_id event = take();
-    uint8_t size = take();
-    bool deliverable = os_event_registered(event) && size <= os_event_capacity(event);
-    uint8_t *dest = deliverable ? os_event_buffer(event) : NULL;
-    for (uint8_t i = 0; i < size; i++) {
-        uint8_t byte = take();
-        if (dest != NULL) dest[i] = byte;
+/* Take n bytes from the head into dest (NULL: drop them). */
+static void ring_read(uint8_t *dest, uint8_t n) {
+    const uint8_t *src = &ring[head];
+    os.queued_bytes = (uint8_t)(os.queued_bytes - n);
+    while (n-- != 0) {
+        uint8_t byte = *src++;
+        if (src == &ring[QUEUE_BYTES]) src = ring;
+        if (dest != NULL) *dest++ = byte;
     }
+    head = (uint8_t)(src - ring);
+}
+
+bool os_event_queue_pop(sys_event_data *out) {
+    uint8_t header[HEADER_BYTES];
+    ring_read(header, HEADER_BYTES);
+    sys_event_id event = header[0];
+    uint8_t size = header[1];
+    bool deliverable = os_event_registered(event) && size <= os_event_capacity(event);
+    ring_read(deliverable ? os_event_buffer(event) : NULL, size);
     if (!deliverable) {
         os.stats.events_discarded++;
         return false;

@@ -117,6 +117,7 @@ bool os_event_queue_pop(sys_event_data *out);
 
 /* event_dispatch.c */
 void os_dispatch_one(void);
+void os_dispatch_on_system_stack(void);
 
 /* wait.c */
 void os_wake_waiters(const sys_event_data *data);

@@ -2,11 +2,12 @@
  * of who runs next. Where a thread is queued is the policy's business
  * (scheduler_round_robin.c, scheduler_priority.c).
  *
- * The system thread (pid 0) is not in the ready list: it runs whenever it
- * has work (events to dispatch, zombies to reap) and when nothing else can
- * run, in which case it idles the CPU. A user thread preempted by the
- * system thread's work is remembered in os.preempted and resumed with the
- * rest of its slice, so event handlers do not cost it its turn. */
+ * The system thread (pid 0) is not in the ready list: it runs when nothing
+ * else can (it idles the CPU) and when it has work a thread cannot do for
+ * it (zombies to reap, a stop). Events sent while a user thread runs are
+ * dispatched at once on the system thread's stack, without a switch. A
+ * thread preempted by the system thread's work is remembered in
+ * os.preempted and resumed with the rest of its slice. */
 #include "kernel_internal.h"
 
 uint8_t Sys_Tcb_Priority(const sys_tcb *t) { return t->priority; }
@@ -91,6 +92,8 @@ void os_schedule(void) {
         os_fault(SYS_FAULT_STACK_OVERFLOW, cur->pid);
         os_terminate(cur); /* a thread about to block is caught too */
     }
+    if (cur->state == SYS_PROCESS_RUNNING && !os_event_queue_empty())
+        os_dispatch_on_system_stack(); /* a handler may kill cur: checked below */
     if (cur->state == SYS_PROCESS_RUNNING) {
         if (os_system_work_pending()) {
             cur->state = SYS_PROCESS_READY;

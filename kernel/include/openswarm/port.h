@@ -47,6 +47,13 @@ void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*ent
  * masked; returns (interrupts still masked) when from is resumed. */
 void port_switch(port_context_t *from, port_context_t *to);
 
+/* Call fn on the stack of the suspended system thread (system is its saved
+ * context), from a thread or at the end of an interrupt, interrupts masked;
+ * fn returns with interrupts masked. Event handlers run this way as soon as
+ * an event is sent, without two full thread switches, and without using the
+ * stack of the thread they interrupted. */
+void port_call_on_system_stack(port_context_t *system, void (*fn)(void));
+
 /* Start the periodic 1 ms tick; its ISR calls os_tick(). */
 void port_tick_start(void);
 

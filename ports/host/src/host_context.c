@@ -34,8 +34,22 @@ void host_context_init_system(void) {
     running = NULL;
 }
 
+static bool on_system_stack; /* handlers dispatched on behalf of the system thread */
+
 /* The system thread's context is the only one port_context_init never saw. */
-bool host_context_in_system_thread(void) { return running == NULL || running->entry == NULL; }
+bool host_context_in_system_thread(void) {
+    return on_system_stack || running == NULL || running->entry == NULL;
+}
+
+/* Host stacks are large: the handlers run on the running context's stack,
+ * but count as the system thread's. */
+void port_call_on_system_stack(port_context_t *system, void (*fn)(void)) {
+    (void)system;
+    bool outer = on_system_stack;
+    on_system_stack = true;
+    fn();
+    on_system_stack = outer;
+}
 
 static void thread_start(void) {
 #ifdef HOST_ASAN

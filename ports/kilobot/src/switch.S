@@ -76,3 +76,31 @@ port_thread_start:
     icall
     jmp os_thread_exit
     .size port_thread_start, .-port_thread_start
+
+; port_call_on_system_stack(system, fn): run fn on the system thread's
+; stack. The system thread is suspended, so everything below its saved SP
+; is free. fn is an ordinary C function: it preserves the callee-saved
+; registers itself, so only the stack pointer changes hands. Interrupts are
+; masked on entry and on fn's return, so SP is written atomically.
+    .section .text.port_call_on_system_stack,"ax",@progbits
+    .global port_call_on_system_stack
+    .type port_call_on_system_stack, @function
+; r25:r24 = system (port_context_t *), r23:r22 = fn
+port_call_on_system_stack:
+    in r18, _SFR_IO_ADDR(SPL)
+    in r19, _SFR_IO_ADDR(SPH)
+    movw r30, r24
+    ld r20, Z
+    ldd r21, Z+1
+    out _SFR_IO_ADDR(SPL), r20
+    out _SFR_IO_ADDR(SPH), r21
+    push r18
+    push r19
+    movw r30, r22
+    icall
+    pop r19
+    pop r18
+    out _SFR_IO_ADDR(SPL), r18
+    out _SFR_IO_ADDR(SPH), r19
+    ret
+    .size port_call_on_system_stack, .-port_call_on_system_stack
