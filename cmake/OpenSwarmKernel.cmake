@@ -19,7 +19,10 @@ set(OPENSWARM_PORT_host_SOURCES
 set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/port.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/switch.S
-    ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c)
+    ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/devices.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/led.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motors.c)
 
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)

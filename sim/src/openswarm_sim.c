@@ -21,6 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <avr_ioport.h>
+#include <avr_timer.h>
 #include <sim_avr.h>
 #include <sim_elf.h>
 #include <sim_interrupts.h>
@@ -41,6 +43,8 @@ typedef struct options {
     int quiet;
     int expect_stop;
     int marks;
+    int trace;
+    const char *trace_csv;
     int watched[MAX_WATCHED_IRQS];
     int n_watched;
 } options;
@@ -58,6 +62,8 @@ static void usage(FILE *out) {
             "  -s, --expect-stop    fail (exit 4) unless the firmware stops by itself\n"
             "  -q, --quiet          do not print the console\n"
             "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
+            "      --trace          print the robot's LED colour and motor duty changes\n"
+            "      --trace-csv FILE write them as CSV: time_s,cycle,device,a,b,c\n"
             "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped, 0 if the time ran\n"
@@ -69,6 +75,8 @@ static int parse(int argc, char **argv, options *o) {
                                              {"expect-stop", no_argument, 0, 's'},
                                              {"quiet", no_argument, 0, 'q'},
                                              {"marks", no_argument, 0, 'm'},
+                                             {"trace", no_argument, 0, 'T'},
+                                             {"trace-csv", required_argument, 0, 'C'},
                                              {"watch-irq", required_argument, 0, 'i'},
                                              {"help", no_argument, 0, 'h'},
                                              {0, 0, 0, 0}};
@@ -90,6 +98,8 @@ static int parse(int argc, char **argv, options *o) {
         case 's': o->expect_stop = 1; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
+        case 'T': o->trace = 1; break;
+        case 'C': o->trace_csv = optarg; break;
         case 'i': {
             char *end;
             long v = strtol(optarg, &end, 10);
@@ -161,6 +171,111 @@ static void mark_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
     avr->data[addr] = v;
 }
 
+/* ---- the Kilobot's LED and motors, as the robot shows them ---- */
+
+/* A colour or a duty pair is written one register at a time; what the
+ * robot shows is the state once the writes settle, so changes are reported
+ * after SETTLE_CYCLES of quiet, stamped with the time the burst began. */
+#define SETTLE_CYCLES 200
+
+typedef struct robot_trace {
+    avr_t *avr;
+    int print;
+    FILE *csv;
+    uint8_t ddrc, ddrd;
+    uint8_t pwm[2];           /* left (OC2A), right (OC2B) */
+    int shown_rgb;            /* last reported, -1 before the first */
+    int shown_pwm[2];
+    avr_cycle_count_t burst;  /* cycle of the first unreported change, 0: none */
+} robot_trace;
+
+
+static void trace_emit(robot_trace *t, const char *device, int a, int b, int c) {
+    double s = (double)t->burst / (double)t->avr->frequency;
+    if (t->print) {
+        if (c >= 0)
+            printf("[%10.6f s] %-6s red %d green %d blue %d\n", s, device, a, b, c);
+        else
+            printf("[%10.6f s] %-6s left %d right %d\n", s, device, a, b);
+        fflush(stdout);
+    }
+    if (t->csv)
+        fprintf(t->csv, "%.6f,%llu,%s,%d,%d,%d\n", s, (unsigned long long)t->burst, device, a,
+                b, c < 0 ? 0 : c);
+}
+
+static int led_rgb(const robot_trace *t, int *r, int *g, int *b) {
+    *r = ((t->ddrd >> 5) & 1) | (((t->ddrd >> 4) & 1) << 1);
+    *g = ((t->ddrc >> 3) & 1) | (((t->ddrc >> 2) & 1) << 1);
+    *b = ((t->ddrc >> 5) & 1) | (((t->ddrc >> 4) & 1) << 1);
+    return *r | *g << 2 | *b << 4;
+}
+
+static avr_cycle_count_t settled(struct avr_t *avr, avr_cycle_count_t when, void *param) {
+    (void)avr;
+    (void)when;
+    robot_trace *t = param;
+    int r, g, b;
+    int rgb = led_rgb(t, &r, &g, &b);
+    if (rgb != t->shown_rgb) {
+        t->shown_rgb = rgb;
+        trace_emit(t, "led", r, g, b);
+    }
+    if (t->pwm[0] != t->shown_pwm[0] || t->pwm[1] != t->shown_pwm[1]) {
+        t->shown_pwm[0] = t->pwm[0];
+        t->shown_pwm[1] = t->pwm[1];
+        trace_emit(t, "motors", t->pwm[0], t->pwm[1], -1);
+    }
+    t->burst = 0;
+    return 0;
+}
+
+static void changed(robot_trace *t) {
+    if (t->burst == 0) t->burst = t->avr->cycle;
+    avr_cycle_timer_cancel(t->avr, settled, t);
+    avr_cycle_timer_register(t->avr, SETTLE_CYCLES, settled, t);
+}
+
+static void ddrc_changed(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    robot_trace *t = param;
+    t->ddrc = (uint8_t)value;
+    changed(t);
+}
+
+static void ddrd_changed(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    robot_trace *t = param;
+    t->ddrd = (uint8_t)value;
+    changed(t);
+}
+
+static void pwm_changed(robot_trace *t, int motor, uint32_t value) {
+    t->pwm[motor] = (uint8_t)value;
+    changed(t);
+}
+
+static void left_pwm(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    pwm_changed(param, 0, value);
+}
+
+static void right_pwm(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    pwm_changed(param, 1, value);
+}
+
+static void trace_robot(avr_t *avr, robot_trace *t) {
+    avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('C'), IOPORT_IRQ_DIRECTION_ALL),
+                            ddrc_changed, t);
+    avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_DIRECTION_ALL),
+                            ddrd_changed, t);
+    avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM0),
+                            left_pwm, t);
+    avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM1),
+                            right_pwm, t);
+}
+
 typedef struct watched_irq {
     avr_t *avr;
     int vector;
@@ -230,12 +345,25 @@ int main(int argc, char **argv) {
         avr_irq_register_notify(irq, irq_raised, &watches[i]);
     }
 
+    /* The robot starts dark and still: only changes are reported. */
+    robot_trace trace = {avr, o.trace, NULL, 0, 0, {0, 0}, 0, {0, 0}, 0};
+    if (o.trace_csv != NULL) {
+        trace.csv = fopen(o.trace_csv, "w");
+        if (trace.csv == NULL) {
+            fprintf(stderr, "openswarm-sim: --trace-csv %s: %s\n", o.trace_csv, strerror(errno));
+            return EXIT_USAGE;
+        }
+        fprintf(trace.csv, "time_s,cycle,device,a,b,c\n");
+    }
+    if (o.trace || trace.csv != NULL) trace_robot(avr, &trace);
+
     avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)avr->frequency);
     int state = cpu_Running;
     while (avr->cycle < limit) {
         state = avr_run(avr);
         if (state == cpu_Done || state == cpu_Crashed) break;
     }
+    if (trace.csv != NULL) fclose(trace.csv);
     double t = (double)avr->cycle / (double)avr->frequency;
     if (state == cpu_Crashed) {
         fprintf(stderr, "openswarm-sim: the firmware crashed at %.6f s (PC 0x%04x): a bad jump "

@@ -1,0 +1,40 @@
+/* The Kilobot's devices as HAL modules. Call kilobot_devices_init() after
+ * Sys_Init_Kernel(); then send the events below (from threads, handlers or
+ * interrupts), or replace a device's processor with Sys_Set_Processor. */
+#ifndef OPENSWARM_KILOBOT_H
+#define OPENSWARM_KILOBOT_H
+
+#include "openswarm/kernel.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The LED colour: 2 bits per channel, as kilolib's RGB(r, g, b). */
+#define KILOBOT_RGB(r, g, b) ((uint8_t)(((r)&3) | (((g)&3) << 2) | (((b)&3) << 4)))
+/* data: one uint8_t colour */
+#define KILOBOT_EVENT_LED SYS_EVENT_PORT_FIRST
+/* data: kilobot_motors */
+#define KILOBOT_EVENT_MOTORS ((sys_event_id)(SYS_EVENT_PORT_FIRST + 1))
+
+/* PWM duty of the two vibration motors, 0 (off) .. 255 (full). */
+typedef struct kilobot_motors {
+    uint8_t left;
+    uint8_t right;
+} kilobot_motors;
+
+extern sys_device kilobot_led;
+extern sys_device kilobot_motor_pair;
+
+/* Register the LED and the motors (and their events). */
+sys_status kilobot_devices_init(void);
+
+/* The lower layers, for code that bypasses events (interrupts, kilolib). */
+void kilobot_led_apply(uint8_t rgb);
+void kilobot_motors_apply(uint8_t left, uint8_t right);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

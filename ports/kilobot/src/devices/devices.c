@@ -1,0 +1,8 @@
+/* Registering the Kilobot's devices with the HAL. */
+#include "openswarm/kilobot.h"
+
+sys_status kilobot_devices_init(void) {
+    sys_status st = Sys_Register_Device(&kilobot_led);
+    if (st == SYS_OK) st = Sys_Register_Device(&kilobot_motor_pair);
+    return st;
+}

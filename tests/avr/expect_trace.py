@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""Compare a trace written by openswarm-sim --trace-csv with an expected one.
+
+usage: expect_trace.py EXPECTED ACTUAL.csv
+Each expected line is `time_s,device,a,b,c`; times may differ by 5 ms."""
+import csv
+import sys
+
+TOLERANCE_S = 0.005
+
+
+def main(expected_path, actual_path):
+    expected = []
+    with open(expected_path) as f:
+        for n, line in enumerate(f, 1):
+            line = line.strip()
+            if line and not line.startswith("#"):
+                t, device, a, b, c = line.split(",")
+                expected.append((n, float(t), device, int(a), int(b), int(c)))
+    with open(actual_path) as f:
+        actual = [(float(r["time_s"]), r["device"], int(r["a"]), int(r["b"]), int(r["c"]))
+                  for r in csv.DictReader(f)]
+    failures = 0
+    for i, (n, t, device, a, b, c) in enumerate(expected):
+        if i >= len(actual):
+            print(f"{expected_path}:{n}: expected {device} {a} {b} {c} at {t:.3f} s, the trace ended")
+            failures += 1
+            continue
+        at, adev, aa, ab, ac = actual[i]
+        if (adev, aa, ab, ac) != (device, a, b, c) or abs(at - t) > TOLERANCE_S:
+            print(f"{expected_path}:{n}: expected {device} {a} {b} {c} at {t:.3f} s, "
+                  f"got {adev} {aa} {ab} {ac} at {at:.6f} s")
+            failures += 1
+    for at, adev, aa, ab, ac in actual[len(expected):]:
+        print(f"{actual_path}: unexpected {adev} {aa} {ab} {ac} at {at:.6f} s")
+        failures += 1
+    print(f"{len(expected) - failures if failures <= len(expected) else 0} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    sys.exit(main(sys.argv[1], sys.argv[2]))
