@@ -22,7 +22,8 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/devices.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/led.c
-    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motors.c)
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motors.c
+    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/kilolib.c)
 
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)
@@ -40,6 +41,9 @@ function(openswarm_add_kernel target)
   add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES})
   target_include_directories(${target} PUBLIC
     ${OPENSWARM_ROOT}/kernel/include ${OPENSWARM_ROOT}/ports/${K_PORT}/include)
+  if(K_PORT STREQUAL "kilobot")
+    target_include_directories(${target} PUBLIC ${OPENSWARM_ROOT}/ports/kilobot/kilolib/include)
+  endif()
   target_compile_options(${target} PRIVATE ${OPENSWARM_WARNINGS})
   # The kernel is C99 (it must build with every robot's compiler); the
   # host port uses C11 atomics.

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <avr_eeprom.h>
 #include <avr_ioport.h>
 #include <avr_timer.h>
 #include <sim_avr.h>
@@ -45,6 +46,8 @@ typedef struct options {
     int marks;
     int trace;
     const char *trace_csv;
+    int uid;            /* -1: leave the EEPROM erased */
+    int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
     int watched[MAX_WATCHED_IRQS];
     int n_watched;
 } options;
@@ -64,6 +67,9 @@ static void usage(FILE *out) {
             "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
             "      --trace          print the robot's LED colour and motor duty changes\n"
             "      --trace-csv FILE write them as CSV: time_s,cycle,device,a,b,c\n"
+            "      --uid N          the robot's id (EEPROM 0xB0), 0..65535\n"
+            "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
+            "                       straight (left and right motor), 0..255 each\n"
             "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped, 0 if the time ran\n"
@@ -77,10 +83,14 @@ static int parse(int argc, char **argv, options *o) {
                                              {"marks", no_argument, 0, 'm'},
                                              {"trace", no_argument, 0, 'T'},
                                              {"trace-csv", required_argument, 0, 'C'},
+                                             {"uid", required_argument, 0, 'U'},
+                                             {"calibration", required_argument, 0, 'K'},
                                              {"watch-irq", required_argument, 0, 'i'},
                                              {"help", no_argument, 0, 'h'},
                                              {0, 0, 0, 0}};
     o->seconds = 10.0;
+    o->uid = -1;
+    for (int i = 0; i < 4; i++) o->calibration[i] = -1;
     int c;
     while ((c = getopt_long(argc, argv, "t:sqmi:h", longopts, NULL)) != -1) {
         switch (c) {
@@ -100,6 +110,29 @@ static int parse(int argc, char **argv, options *o) {
         case 'm': o->marks = 1; break;
         case 'T': o->trace = 1; break;
         case 'C': o->trace_csv = optarg; break;
+        case 'U': {
+            char *end;
+            long v = strtol(optarg, &end, 0);
+            if (*end != '\0' || v < 0 || v > 65535) {
+                fprintf(stderr, "openswarm-sim: --uid '%s': expected a number 0..65535\n", optarg);
+                return -1;
+            }
+            o->uid = (int)v;
+            break;
+        }
+        case 'K': {
+            int v[4];
+            char extra;
+            if (sscanf(optarg, "%d,%d,%d,%d%c", &v[0], &v[1], &v[2], &v[3], &extra) != 4 ||
+                v[0] < 0 || v[0] > 255 || v[1] < 0 || v[1] > 255 || v[2] < 0 || v[2] > 255 ||
+                v[3] < 0 || v[3] > 255) {
+                fprintf(stderr, "openswarm-sim: --calibration '%s': expected four duties 0..255, "
+                                "e.g. --calibration 70,70,65,68\n", optarg);
+                return -1;
+            }
+            for (int i = 0; i < 4; i++) o->calibration[i] = v[i];
+            break;
+        }
         case 'i': {
             char *end;
             long v = strtol(optarg, &end, 10);
@@ -276,6 +309,25 @@ static void trace_robot(avr_t *avr, robot_trace *t) {
                             right_pwm, t);
 }
 
+/* The robot's identity and calibration, where kilolib reads them. */
+static void write_eeprom(avr_t *avr, uint16_t address, const uint8_t *bytes, uint32_t n) {
+    avr_eeprom_desc_t d = {(uint8_t *)bytes, address, n};
+    avr_ioctl(avr, AVR_IOCTL_EEPROM_SET, &d);
+}
+
+static void configure_robot(avr_t *avr, const options *o) {
+    static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
+    for (int i = 0; i < 4; i++) {
+        if (o->calibration[i] < 0) continue;
+        uint8_t v = (uint8_t)o->calibration[i];
+        write_eeprom(avr, calibration_address[i], &v, 1);
+    }
+    if (o->uid >= 0) {
+        uint8_t uid[2] = {(uint8_t)(o->uid & 0xFF), (uint8_t)(o->uid >> 8)};
+        write_eeprom(avr, 0xB0, uid, 2);
+    }
+}
+
 typedef struct watched_irq {
     avr_t *avr;
     int vector;
@@ -328,6 +380,7 @@ int main(int argc, char **argv) {
     avr->log = LOG_ERROR;
     avr_load_firmware(avr, &fw);
     avr->sleep = fast_forward;
+    configure_robot(avr, &o);
 
     console con = {{0}, 0};
     avr_register_io_write(avr, GPIOR1_ADDR, o.quiet ? console_drop : console_write, &con);

@@ -1,6 +1,7 @@
 /* Kilobot (ATmega328P at 8 MHz) port: interrupt mask, 1 ms tick on
  * Timer0, sleeping idle, and the initial frame of a new thread. */
 #include "openswarm/port.h"
+#include "openswarm/kilobot.h"
 
 #include <avr/interrupt.h>
 #include <avr/io.h>
@@ -60,8 +61,12 @@ void port_tick_start(void) {
     TCCR0B = _BV(CS01) | _BV(CS00);
 }
 
+void (*volatile kilobot_tick_hook)(void);
+
 ISR(TIMER0_COMPA_vect) {
     os_isr_enter();
     os_tick();
+    void (*hook)(void) = kilobot_tick_hook;
+    if (hook != NULL) hook();
     os_isr_exit();
 }

@@ -29,6 +29,18 @@ extern sys_device kilobot_motor_pair;
 /* Register the LED and the motors (and their events). */
 sys_status kilobot_devices_init(void);
 
+/* Called every 1 ms from the tick interrupt (NULL: nothing). For clocks an
+ * application keeps in interrupt context, such as kilolib's kilo_ticks. */
+extern void (*volatile kilobot_tick_hook)(void);
+
+/* Calibration and identity the robot keeps in its EEPROM. */
+#define KILOBOT_EEPROM_OSCCAL 0x01
+#define KILOBOT_EEPROM_TURN_LEFT 0x05
+#define KILOBOT_EEPROM_TURN_RIGHT 0x09
+#define KILOBOT_EEPROM_STRAIGHT_LEFT 0x0C
+#define KILOBOT_EEPROM_STRAIGHT_RIGHT 0x14
+#define KILOBOT_EEPROM_UID 0xB0 /* little-endian uint16_t */
+
 /* The lower layers, for code that bypasses events (interrupts, kilolib). */
 void kilobot_led_apply(uint8_t rgb);
 void kilobot_motors_apply(uint8_t left, uint8_t right);

@@ -1,0 +1,72 @@
+/*
+ * The classic Kilobot library's API on the OpenSwarm kernel. Programs
+ * written for it build unmodified:
+ *
+ *     #include <kilolib.h>
+ *     void setup() { ... }
+ *     void loop() { ... }
+ *     int main() { kilo_init(); kilo_start(setup, loop); return 0; }
+ *
+ * Under OpenSwarm, loop() runs in a thread (it is preempted, so it may spin)
+ * and the message callbacks run as event handlers; the program may add
+ * threads and events of its own with the kernel's Sys_* calls.
+ */
+#ifndef KILOLIB_H
+#define KILOLIB_H
+
+#include <stdint.h>
+
+#include "message.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define RGB(r, g, b) ((uint8_t)(((r)&3) | (((g)&3) << 2) | (((b)&3) << 4)))
+#define TICKS_PER_SEC 31
+
+typedef struct {
+    int16_t low_gain;
+    int16_t high_gain;
+} distance_measurement_t;
+
+typedef void (*message_rx_t)(message_t *, distance_measurement_t *);
+typedef message_t *(*message_tx_t)(void);
+typedef void (*message_tx_success_t)(void);
+
+/* Clock ticks since kilo_start: TICKS_PER_SEC a second. */
+extern volatile uint32_t kilo_ticks;
+/* Ticks between two transmissions of kilo_message_tx's message. */
+extern volatile uint16_t kilo_tx_period;
+extern uint16_t kilo_uid;
+/* Motor duties that make this robot turn or go straight (from its EEPROM). */
+extern uint8_t kilo_turn_left, kilo_turn_right, kilo_straight_left, kilo_straight_right;
+
+extern message_rx_t kilo_message_rx;
+extern message_tx_t kilo_message_tx;
+extern message_tx_success_t kilo_message_tx_success;
+
+void kilo_init(void);
+void kilo_start(void (*setup)(void), void (*loop)(void));
+
+void set_motors(uint8_t left, uint8_t right);
+/* Both motors at full power for 15 ms: vibration motors need it to start. */
+void spinup_motors(void);
+void set_color(uint8_t rgb);
+
+/* ADC readings, -1 if the converter is busy. */
+int16_t get_ambientlight(void);
+int16_t get_voltage(void);
+int16_t get_temperature(void);
+
+void delay(uint16_t ms);
+uint8_t rand_hard(void);
+uint8_t rand_soft(void);
+void rand_seed(uint8_t seed);
+uint16_t message_crc(const message_t *msg);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
