@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <avr_adc.h>
 #include <avr_eeprom.h>
 #include <avr_ioport.h>
 #include <avr_timer.h>
@@ -28,7 +29,9 @@
 #include <sim_elf.h>
 #include <sim_interrupts.h>
 #include <sim_io.h>
+#include <sim_gdb.h>
 #include <sim_irq.h>
+#include <sim_vcd_file.h>
 
 #define GPIOR0_ADDR 0x3E
 #define GPIOR1_ADDR 0x4A
@@ -46,6 +49,9 @@ typedef struct options {
     int marks;
     int trace;
     const char *trace_csv;
+    int gdb_port;       /* 0: no debugger */
+    const char *vcd;
+    int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
     int uid;            /* -1: leave the EEPROM erased */
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
     int watched[MAX_WATCHED_IRQS];
@@ -67,6 +73,11 @@ static void usage(FILE *out) {
             "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
             "      --trace          print the robot's LED colour and motor duty changes\n"
             "      --trace-csv FILE write them as CSV: time_s,cycle,device,a,b,c\n"
+            "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
+            "      --voltage MV     battery sense (ADC6) input, millivolts\n"
+            "      --temperature MV internal temperature sensor input, millivolts\n"
+            "      --gdb PORT       wait for avr-gdb on PORT (avr-gdb -ex 'target remote :PORT')\n"
+            "      --vcd FILE       record LED pins, motor PWM and markers for GTKWave\n"
             "      --uid N          the robot's id (EEPROM 0xB0), 0..65535\n"
             "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
             "                       straight (left and right motor), 0..255 each\n"
@@ -84,12 +95,18 @@ static int parse(int argc, char **argv, options *o) {
                                              {"trace", no_argument, 0, 'T'},
                                              {"trace-csv", required_argument, 0, 'C'},
                                              {"uid", required_argument, 0, 'U'},
+                                             {"light", required_argument, 0, 'L'},
+                                             {"voltage", required_argument, 0, 'V'},
+                                             {"temperature", required_argument, 0, 'E'},
+                                             {"gdb", required_argument, 0, 'G'},
+                                             {"vcd", required_argument, 0, 'W'},
                                              {"calibration", required_argument, 0, 'K'},
                                              {"watch-irq", required_argument, 0, 'i'},
                                              {"help", no_argument, 0, 'h'},
                                              {0, 0, 0, 0}};
     o->seconds = 10.0;
     o->uid = -1;
+    o->light_mv = o->voltage_mv = o->temperature_mv = -1;
     for (int i = 0; i < 4; i++) o->calibration[i] = -1;
     int c;
     while ((c = getopt_long(argc, argv, "t:sqmi:h", longopts, NULL)) != -1) {
@@ -110,6 +127,26 @@ static int parse(int argc, char **argv, options *o) {
         case 'm': o->marks = 1; break;
         case 'T': o->trace = 1; break;
         case 'C': o->trace_csv = optarg; break;
+        case 'L':
+        case 'V':
+        case 'E':
+        case 'G': {
+            char *end;
+            long v = strtol(optarg, &end, 10);
+            long max = c == 'G' ? 65535 : 5000;
+            if (*end != '\0' || v < (c == 'G' ? 1 : 0) || v > max) {
+                fprintf(stderr, "openswarm-sim: '%s': expected %s\n", optarg,
+                        c == 'G' ? "a TCP port 1..65535, e.g. --gdb 1234"
+                                 : "millivolts 0..5000, e.g. --light 1650");
+                return -1;
+            }
+            if (c == 'L') o->light_mv = (int)v;
+            if (c == 'V') o->voltage_mv = (int)v;
+            if (c == 'E') o->temperature_mv = (int)v;
+            if (c == 'G') o->gdb_port = (int)v;
+            break;
+        }
+        case 'W': o->vcd = optarg; break;
         case 'U': {
             char *end;
             long v = strtol(optarg, &end, 0);
@@ -315,7 +352,19 @@ static void write_eeprom(avr_t *avr, uint16_t address, const uint8_t *bytes, uin
     avr_ioctl(avr, AVR_IOCTL_EEPROM_SET, &d);
 }
 
+/* The Kilobot's analog inputs: simavr converts millivolts against AVcc. */
+#define KILOBOT_AVCC_MV 3300
+
+static void set_analog(avr_t *avr, int channel, int millivolts) {
+    if (millivolts >= 0)
+        avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, channel), (uint32_t)millivolts);
+}
+
 static void configure_robot(avr_t *avr, const options *o) {
+    avr->vcc = avr->avcc = avr->aref = KILOBOT_AVCC_MV;
+    set_analog(avr, ADC_IRQ_ADC7, o->light_mv);
+    set_analog(avr, ADC_IRQ_ADC6, o->voltage_mv);
+    set_analog(avr, ADC_IRQ_TEMP, o->temperature_mv);
     static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
     for (int i = 0; i < 4; i++) {
         if (o->calibration[i] < 0) continue;
@@ -410,6 +459,26 @@ int main(int argc, char **argv) {
     }
     if (o.trace || trace.csv != NULL) trace_robot(avr, &trace);
 
+    static avr_vcd_t vcd;
+    if (o.vcd != NULL) {
+        if (avr_vcd_init(avr, o.vcd, &vcd, 1000) != 0) {
+            fprintf(stderr, "openswarm-sim: --vcd %s: cannot create the file\n", o.vcd);
+            return EXIT_USAGE;
+        }
+        avr_vcd_add_signal(&vcd, avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('C'), IOPORT_IRQ_DIRECTION_ALL), 8, "ddrc_led_green_blue");
+        avr_vcd_add_signal(&vcd, avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_DIRECTION_ALL), 8, "ddrd_led_red");
+        avr_vcd_add_signal(&vcd, avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM0), 8, "motor_left");
+        avr_vcd_add_signal(&vcd, avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM1), 8, "motor_right");
+        avr_vcd_start(&vcd);
+    }
+    if (o.gdb_port != 0) {
+        avr->gdb_port = o.gdb_port;
+        avr->state = cpu_Stopped;
+        avr_gdb_init(avr);
+        fprintf(stderr, "openswarm-sim: waiting for avr-gdb: avr-gdb -ex 'target remote :%d' %s\n",
+                o.gdb_port, o.elf);
+    }
+
     avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)avr->frequency);
     int state = cpu_Running;
     while (avr->cycle < limit) {
@@ -417,6 +486,7 @@ int main(int argc, char **argv) {
         if (state == cpu_Done || state == cpu_Crashed) break;
     }
     if (trace.csv != NULL) fclose(trace.csv);
+    if (o.vcd != NULL) avr_vcd_close(&vcd);
     double t = (double)avr->cycle / (double)avr->frequency;
     if (state == cpu_Crashed) {
         fprintf(stderr, "openswarm-sim: the firmware crashed at %.6f s (PC 0x%04x): a bad jump "
