@@ -2,6 +2,7 @@
  * Timer0, sleeping idle, and the initial frame of a new thread. */
 #include "openswarm/port.h"
 #include "openswarm/kilobot.h"
+#include "devices/motors_internal.h"
 
 #include <avr/interrupt.h>
 #include <avr/io.h>
@@ -66,6 +67,7 @@ void (*volatile kilobot_tick_hook)(void);
 ISR(TIMER0_COMPA_vect) {
     os_isr_enter();
     os_tick();
+    kilobot_motors_tick();
     void (*hook)(void) = kilobot_tick_hook;
     if (hook != NULL) hook();
     os_isr_exit();

@@ -14,7 +14,7 @@ extern "C" {
 #define KILOBOT_RGB(r, g, b) ((uint8_t)(((r)&3) | (((g)&3) << 2) | (((b)&3) << 4)))
 /* data: one uint8_t colour */
 #define KILOBOT_EVENT_LED SYS_EVENT_PORT_FIRST
-/* data: kilobot_motors */
+/* data: kilobot_motors (raw duties) or one kilobot_motion byte */
 #define KILOBOT_EVENT_MOTORS ((sys_event_id)(SYS_EVENT_PORT_FIRST + 1))
 
 /* PWM duty of the two vibration motors, 0 (off) .. 255 (full). */
@@ -22,6 +22,36 @@ typedef struct kilobot_motors {
     uint8_t left;
     uint8_t right;
 } kilobot_motors;
+
+/* Hardware-independent motion commands. The motors' default post-processor
+ * (kilobot_motor_commands) turns them into this robot's calibrated duties. */
+typedef enum kilobot_motion {
+    KILOBOT_STOP = 0,
+    KILOBOT_FORWARD,
+    KILOBOT_TURN_LEFT,
+    KILOBOT_TURN_RIGHT
+} kilobot_motion;
+
+/* Duties that make this robot turn or go straight (from its EEPROM). */
+typedef struct kilobot_calibration {
+    uint8_t turn_left, turn_right, straight_left, straight_right;
+} kilobot_calibration;
+extern kilobot_calibration kilobot_calib;
+
+/* Post-processor: a motion byte becomes calibrated duties, two bytes pass. */
+uint8_t kilobot_motor_commands(sys_device *dev, const void *in, uint8_t size, void *out,
+                               uint8_t capacity);
+
+/* Safety post-processor: as kilobot_motor_commands, and a motor left at
+ * full power longer than limit_ms (spin-up is all a vibration motor needs)
+ * drops to fallback. Install with
+ *   Sys_Set_Processor(&kilobot_motor_pair, kilobot_spinup_limited, &limit). */
+typedef struct kilobot_spinup_limit {
+    uint16_t limit_ms;
+    uint8_t fallback;
+} kilobot_spinup_limit;
+uint8_t kilobot_spinup_limited(sys_device *dev, const void *in, uint8_t size, void *out,
+                               uint8_t capacity);
 
 extern sys_device kilobot_led;
 extern sys_device kilobot_motor_pair;

@@ -48,10 +48,10 @@ void kilo_init(void) {
     kilobot_devices_init();
     uint8_t osccal = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_OSCCAL);
     if (osccal != 0xFF) OSCCAL = osccal; /* an erased EEPROM keeps the factory value */
-    kilo_turn_left = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_TURN_LEFT);
-    kilo_turn_right = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_TURN_RIGHT);
-    kilo_straight_left = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_STRAIGHT_LEFT);
-    kilo_straight_right = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_STRAIGHT_RIGHT);
+    kilo_turn_left = kilobot_calib.turn_left; /* read by kilobot_devices_init */
+    kilo_turn_right = kilobot_calib.turn_right;
+    kilo_straight_left = kilobot_calib.straight_left;
+    kilo_straight_right = kilobot_calib.straight_right;
     kilo_uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
     rand_seed(rand_hard());
 }

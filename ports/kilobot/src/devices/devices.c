@@ -1,7 +1,10 @@
 /* Registering the Kilobot's devices with the HAL. */
 #include "openswarm/kilobot.h"
 
+#include "motors_internal.h"
+
 sys_status kilobot_devices_init(void) {
+    kilobot_calibration_load();
     sys_status st = Sys_Register_Device(&kilobot_led);
     if (st == SYS_OK) st = Sys_Register_Device(&kilobot_motor_pair);
     return st;

@@ -6,6 +6,13 @@
 
 #include <avr/io.h>
 
+#include "motors_internal.h"
+
+/* Full-power limit armed by kilobot_spinup_limited: 0 = none. */
+static uint16_t full_power_limit_ms;
+static uint8_t full_power_fallback;
+static uint16_t full_power_ms[2]; /* how long each motor has been at 255 */
+
 static void pwm_start(void) {
     DDRB |= _BV(PB3);
     DDRD |= _BV(PD3);
@@ -25,6 +32,25 @@ void kilobot_motors_apply(uint8_t left, uint8_t right) {
     TCCR2A = com;
 }
 
+void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback) {
+    full_power_limit_ms = limit_ms;
+    full_power_fallback = fallback;
+}
+
+/* Interrupt context, every 1 ms: cheap when no limit is armed. */
+void kilobot_motors_tick(void) {
+    if (full_power_limit_ms == 0) return;
+    volatile uint8_t *ocr[2] = {&OCR2A, &OCR2B};
+    for (uint8_t i = 0; i < 2; i++) {
+        if (*ocr[i] != 255) {
+            full_power_ms[i] = 0;
+        } else if (++full_power_ms[i] > full_power_limit_ms) {
+            *ocr[i] = full_power_fallback;
+            full_power_ms[i] = 0;
+        }
+    }
+}
+
 static void motors_write(sys_device *dev, const void *raw, uint8_t size) {
     (void)dev;
     if (size < sizeof(kilobot_motors)) return;
@@ -32,5 +58,5 @@ static void motors_write(sys_device *dev, const void *raw, uint8_t size) {
     kilobot_motors_apply(m->left, m->right);
 }
 
-sys_device kilobot_motor_pair = {"motors", SYS_DEVICE_OUTPUT, KILOBOT_EVENT_MOTORS, 0, NULL, NULL,
-                                 motors_write, NULL, 0};
+sys_device kilobot_motor_pair = {"motors", SYS_DEVICE_OUTPUT, KILOBOT_EVENT_MOTORS, 0,
+                                 kilobot_motor_commands, NULL, motors_write, NULL, 0};
