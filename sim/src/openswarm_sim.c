@@ -9,6 +9,7 @@
  *
  * Conventions shared with the firmware (ports/kilobot/include/openswarm/kilobot_sim.h):
  *   GPIOR1  console: each byte written is a character, '\n' ends a line
+ *   UART0   the robot's debug serial port, printed like the console
  *   GPIOR0  exit status, read when the firmware stops (SLEEP with
  *           interrupts disabled)
  *   GPIOR2  marker: with --marks, every change of its value is printed
@@ -25,6 +26,7 @@
 #include <avr_eeprom.h>
 #include <avr_ioport.h>
 #include <avr_timer.h>
+#include <avr_uart.h>
 #include <sim_avr.h>
 #include <sim_elf.h>
 #include <sim_interrupts.h>
@@ -216,9 +218,14 @@ static int check_elf(const char *path) {
     return 0;
 }
 
+static void console_char(console *c, uint8_t v);
+
 static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
-    console *c = param;
     avr->data[addr] = v;
+    console_char(param, v);
+}
+
+static void console_char(console *c, uint8_t v) {
     if (v == '\n' || c->len == sizeof c->line - 1) {
         c->line[c->len] = '\0';
         fprintf(stdout, "%s\n", c->line);
@@ -227,6 +234,11 @@ static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param
     } else if (v != '\r') {
         c->line[c->len++] = (char)v;
     }
+}
+
+static void uart_output(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    console_char(param, (uint8_t)value);
 }
 
 static void console_drop(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
@@ -433,6 +445,10 @@ int main(int argc, char **argv) {
 
     console con = {{0}, 0};
     avr_register_io_write(avr, GPIOR1_ADDR, o.quiet ? console_drop : console_write, &con);
+    static console serial = {{0}, 0};
+    if (!o.quiet)
+        avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT),
+                                uart_output, &serial);
     if (o.marks) avr_register_io_write(avr, GPIOR2_ADDR, mark_write, NULL);
     static watched_irq watches[MAX_WATCHED_IRQS];
     for (int i = 0; i < o.n_watched; i++) {
