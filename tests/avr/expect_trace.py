@@ -2,7 +2,8 @@
 """Compare a trace written by openswarm-sim --trace-csv with an expected one.
 
 usage: expect_trace.py EXPECTED ACTUAL.csv
-Each expected line is `time_s,device,a,b,c`; times may differ by 5 ms."""
+Each expected line is `time_s,device,a,b,c` (robot 0) or
+`time_s,robot,device,a,b,c`; times may differ by 5 ms."""
 import csv
 import sys
 
@@ -15,24 +16,28 @@ def main(expected_path, actual_path):
         for n, line in enumerate(f, 1):
             line = line.strip()
             if line and not line.startswith("#"):
-                t, device, a, b, c = line.split(",")
-                expected.append((n, float(t), device, int(a), int(b), int(c)))
+                fields = line.split(",")
+                if len(fields) == 5:
+                    fields.insert(1, "0")
+                t, robot, device, a, b, c = fields
+                expected.append((n, float(t), int(robot), device, int(a), int(b), int(c)))
     with open(actual_path) as f:
-        actual = [(float(r["time_s"]), r["device"], int(r["a"]), int(r["b"]), int(r["c"]))
-                  for r in csv.DictReader(f)]
+        actual = [(float(r["time_s"]), int(r["robot"]), r["device"], int(r["a"]), int(r["b"]),
+                   int(r["c"])) for r in csv.DictReader(f)]
     failures = 0
-    for i, (n, t, device, a, b, c) in enumerate(expected):
+    for i, (n, t, robot, device, a, b, c) in enumerate(expected):
+        want = f"robot {robot} {device} {a} {b} {c} at {t:.3f} s"
         if i >= len(actual):
-            print(f"{expected_path}:{n}: expected {device} {a} {b} {c} at {t:.3f} s, the trace ended")
+            print(f"{expected_path}:{n}: expected {want}, the trace ended")
             failures += 1
             continue
-        at, adev, aa, ab, ac = actual[i]
-        if (adev, aa, ab, ac) != (device, a, b, c) or abs(at - t) > TOLERANCE_S:
-            print(f"{expected_path}:{n}: expected {device} {a} {b} {c} at {t:.3f} s, "
-                  f"got {adev} {aa} {ab} {ac} at {at:.6f} s")
+        at, ar, adev, aa, ab, ac = actual[i]
+        if (ar, adev, aa, ab, ac) != (robot, device, a, b, c) or abs(at - t) > TOLERANCE_S:
+            print(f"{expected_path}:{n}: expected {want}, "
+                  f"got robot {ar} {adev} {aa} {ab} {ac} at {at:.6f} s")
             failures += 1
-    for at, adev, aa, ab, ac in actual[len(expected):]:
-        print(f"{actual_path}: unexpected {adev} {aa} {ab} {ac} at {at:.6f} s")
+    for at, ar, adev, aa, ab, ac in actual[len(expected):]:
+        print(f"{actual_path}: unexpected robot {ar} {adev} {aa} {ab} {ac} at {at:.6f} s")
         failures += 1
     print(f"{len(expected) - failures if failures <= len(expected) else 0} passed, {failures} failed")
     return 1 if failures else 0

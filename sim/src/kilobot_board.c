@@ -1,0 +1,40 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* What a Kilobot's EEPROM and analog inputs hold, set before it runs. */
+#include <avr_adc.h>
+#include <avr_eeprom.h>
+#include <sim_io.h>
+
+#include "sim.h"
+
+/* The Kilobot's analog inputs: simavr converts millivolts against AVcc. */
+#define KILOBOT_AVCC_MV 3300
+
+static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
+#define UID_ADDRESS 0xB0
+
+static void write_eeprom(avr_t *avr, uint16_t address, const uint8_t *bytes, uint32_t n) {
+    avr_eeprom_desc_t d = {(uint8_t *)bytes, address, n};
+    avr_ioctl(avr, AVR_IOCTL_EEPROM_SET, &d);
+}
+
+static void set_analog(avr_t *avr, int channel, int millivolts) {
+    if (millivolts >= 0)
+        avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, channel), (uint32_t)millivolts);
+}
+
+void board_configure(avr_t *avr, const options *o, int index) {
+    avr->vcc = avr->avcc = avr->aref = KILOBOT_AVCC_MV;
+    set_analog(avr, ADC_IRQ_ADC7, o->light_mv);
+    set_analog(avr, ADC_IRQ_ADC6, o->voltage_mv);
+    set_analog(avr, ADC_IRQ_TEMP, o->temperature_mv);
+    for (int i = 0; i < 4; i++) {
+        if (o->calibration[i] < 0) continue;
+        uint8_t v = (uint8_t)o->calibration[i];
+        write_eeprom(avr, calibration_address[i], &v, 1);
+    }
+    if (o->uid >= 0) {
+        int uid = o->uid + index;
+        uint8_t bytes[2] = {(uint8_t)(uid & 0xFF), (uint8_t)(uid >> 8)}; /* little-endian */
+        write_eeprom(avr, UID_ADDRESS, bytes, 2);
+    }
+}

@@ -1,0 +1,100 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* openswarm-sim: load the robots, run them in lockstep, report how they ended. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim.h"
+
+/* Robots advance together in windows this many cycles long, so what one
+ * does is seen by the others within a window. */
+#define LOCKSTEP_CYCLES 64
+
+static robot robots[MAX_ROBOTS];
+
+static int finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
+
+static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
+    r->index = index;
+    r->state = cpu_Running;
+    r->avr = firmware_load(o->elf);
+    if (r->avr == NULL) return -1;
+    board_configure(r->avr, o, index);
+    char prefix[16] = "";
+    if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
+    console_attach(r, o->quiet, prefix);
+    if (o->trace || csv != NULL) trace_attach(r, o->trace, csv);
+    if (measure_attach(r, o) != 0) return -1;
+    return debug_attach(r, o);
+}
+
+/* Run every robot up to cycle end (or until it stops); 1 when all stopped. */
+static int run_window(int n, avr_cycle_count_t end) {
+    int all_finished = 1;
+    for (int i = 0; i < n; i++) {
+        robot *r = &robots[i];
+        while (!finished(r) && r->avr->cycle < end) r->state = avr_run(r->avr);
+        all_finished &= finished(r);
+    }
+    return all_finished;
+}
+
+static int report(int n, const options *o) {
+    int status = 0, crashed = 0, running = 0;
+    for (int i = 0; i < n; i++) {
+        robot *r = &robots[i];
+        double t = (double)r->avr->cycle / (double)r->avr->frequency;
+        if (r->state == cpu_Crashed) {
+            fprintf(stderr, "openswarm-sim: %sthe firmware crashed at %.6f s (PC 0x%04x): a bad "
+                            "jump or a stack overflow; run it with avr-gdb to see where\n",
+                    r->console.prefix, t, (unsigned)r->avr->pc);
+            crashed = 1;
+        } else if (r->state == cpu_Done) {
+            int s = r->avr->data[GPIOR0_ADDR];
+            if (!o->quiet) fprintf(stderr, "openswarm-sim: %sstopped at %.6f s, status %d\n",
+                                   r->console.prefix, t, s);
+            if (status == 0) status = s;
+        } else {
+            running++;
+            if (o->expect_stop)
+                fprintf(stderr, "openswarm-sim: %sthe firmware did not stop within %.3f s of "
+                                "simulated time (PC 0x%04x); give it longer with --time\n",
+                        r->console.prefix, o->seconds, (unsigned)r->avr->pc);
+        }
+    }
+    if (crashed) return EXIT_CRASH;
+    if (running && o->expect_stop) return EXIT_TIMEOUT;
+    if (running && !o->quiet)
+        fprintf(stderr, "openswarm-sim: ran %.3f s of simulated time (%d robot%s)\n", o->seconds,
+                n, n > 1 ? "s" : "");
+    return status;
+}
+
+int main(int argc, char **argv) {
+    options o;
+    if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
+    if (firmware_check(o.elf) != 0) return EXIT_USAGE;
+    FILE *csv = NULL;
+    if (o.trace_csv != NULL) {
+        csv = fopen(o.trace_csv, "w");
+        if (csv == NULL) {
+            fprintf(stderr, "openswarm-sim: --trace-csv %s: %s\n", o.trace_csv, strerror(errno));
+            return EXIT_USAGE;
+        }
+        fprintf(csv, "time_s,cycle,robot,device,a,b,c\n");
+    }
+    for (int i = 0; i < o.robots; i++)
+        if (setup_robot(&robots[i], i, &o, csv) != 0) return EXIT_USAGE;
+
+    avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)robots[0].avr->frequency);
+    for (avr_cycle_count_t end = LOCKSTEP_CYCLES;; end += LOCKSTEP_CYCLES) {
+        if (end > limit) end = limit;
+        if (run_window(o.robots, end) || end == limit) break;
+    }
+    for (int i = 0; i < o.robots; i++) {
+        if (csv != NULL || o.trace) trace_flush(&robots[i]);
+        debug_detach(&robots[i]);
+    }
+    if (csv != NULL) fclose(csv);
+    return report(o.robots, &o);
+}

@@ -1,0 +1,138 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* Command line of openswarm-sim. */
+#include <errno.h>
+#include <getopt.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim.h"
+
+static void usage(FILE *out) {
+    fprintf(out,
+            "usage: openswarm-sim [options] FIRMWARE.elf\n"
+            "Run robots' AVR firmware in simavr, cycle-exactly, and print their consoles.\n\n"
+            "  -t, --time SECONDS   simulated time to run (default 10)\n"
+            "  -n, --robots N       run N robots with this firmware, in lockstep (default 1)\n"
+            "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
+            "  -q, --quiet          do not print the consoles\n"
+            "      --trace          print the robots' LED colour and motor duty changes\n"
+            "      --trace-csv FILE write them as CSV: time_s,cycle,robot,device,a,b,c\n"
+            "      --uid N          the first robot's id (EEPROM 0xB0), 0..65535; robot k gets\n"
+            "                       N + k (default with several robots: 1, 2, ...)\n"
+            "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
+            "                       straight (left and right motor), 0..255 each\n"
+            "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
+            "      --voltage MV     battery sense (ADC6) input, millivolts\n"
+            "      --temperature MV internal temperature sensor input, millivolts\n"
+            "      --gdb PORT       wait for avr-gdb on PORT (one robot)\n"
+            "      --vcd FILE       record LED pins and motor PWM for GTKWave (one robot)\n"
+            "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
+            "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
+            "  -h, --help           this text\n\n"
+            "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
+            "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
+            "or ELF, 3 a firmware crashed.\n");
+}
+
+/* A whole number in [lo, hi], or -1 after printing what was expected. */
+static long number(const char *option, const char *text, long lo, long hi, const char *example) {
+    char *end;
+    errno = 0;
+    long v = strtol(text, &end, 0);
+    if (errno != 0 || *end != '\0' || v < lo || v > hi) {
+        fprintf(stderr, "openswarm-sim: %s '%s': expected %ld..%ld, e.g. %s %s\n", option, text,
+                lo, hi, option, example);
+        return -1;
+    }
+    return v;
+}
+
+static int parse_calibration(const char *text, options *o) {
+    int v[4];
+    char extra;
+    if (sscanf(text, "%d,%d,%d,%d%c", &v[0], &v[1], &v[2], &v[3], &extra) != 4) v[0] = -1;
+    for (int i = 0; i < 4; i++) {
+        if (v[i] < 0 || v[i] > 255) {
+            fprintf(stderr, "openswarm-sim: --calibration '%s': expected four duties 0..255, "
+                            "e.g. --calibration 70,70,65,68\n", text);
+            return -1;
+        }
+    }
+    memcpy(o->calibration, v, sizeof v);
+    return 0;
+}
+
+static int parse_time(const char *text, options *o) {
+    char *end;
+    o->seconds = strtod(text, &end);
+    if (*end == 's') end++;
+    if (*end != '\0' || o->seconds <= 0) {
+        fprintf(stderr, "openswarm-sim: --time '%s': expected seconds, e.g. --time 2.5\n", text);
+        return -1;
+    }
+    return 0;
+}
+
+int parse_options(int argc, char **argv, options *o) {
+    static const struct option longopts[] = {
+        {"time", required_argument, 0, 't'},       {"robots", required_argument, 0, 'n'},
+        {"expect-stop", no_argument, 0, 's'},      {"quiet", no_argument, 0, 'q'},
+        {"marks", no_argument, 0, 'm'},            {"watch-irq", required_argument, 0, 'i'},
+        {"trace", no_argument, 0, 'T'},            {"trace-csv", required_argument, 0, 'C'},
+        {"uid", required_argument, 0, 'U'},        {"calibration", required_argument, 0, 'K'},
+        {"light", required_argument, 0, 'L'},      {"voltage", required_argument, 0, 'V'},
+        {"temperature", required_argument, 0, 'E'}, {"gdb", required_argument, 0, 'G'},
+        {"vcd", required_argument, 0, 'W'},        {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    o->seconds = 10.0;
+    o->robots = 1;
+    o->uid = -1;
+    o->light_mv = o->voltage_mv = o->temperature_mv = -1;
+    for (int i = 0; i < 4; i++) o->calibration[i] = -1;
+    int c;
+    long v = 0;
+    while ((c = getopt_long(argc, argv, "t:n:sqmi:h", longopts, NULL)) != -1) {
+        switch (c) {
+        case 't': if (parse_time(optarg, o) != 0) return -1; break;
+        case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; break;
+        case 's': o->expect_stop = 1; break;
+        case 'q': o->quiet = 1; break;
+        case 'm': o->marks = 1; break;
+        case 'i':
+            if ((v = number("--watch-irq", optarg, 1, 255, "14")) < 0) return -1;
+            if (o->n_watched == MAX_WATCHED_IRQS) {
+                fprintf(stderr, "openswarm-sim: at most %d --watch-irq\n", MAX_WATCHED_IRQS);
+                return -1;
+            }
+            o->watched[o->n_watched++] = (int)v;
+            break;
+        case 'T': o->trace = 1; break;
+        case 'C': o->trace_csv = optarg; break;
+        case 'U': if ((v = number("--uid", optarg, 0, 65535, "42")) < 0) return -1; o->uid = (int)v; break;
+        case 'K': if (parse_calibration(optarg, o) != 0) return -1; break;
+        case 'L': if ((v = number("--light", optarg, 0, 5000, "1650")) < 0) return -1; o->light_mv = (int)v; break;
+        case 'V': if ((v = number("--voltage", optarg, 0, 5000, "3000")) < 0) return -1; o->voltage_mv = (int)v; break;
+        case 'E': if ((v = number("--temperature", optarg, 0, 5000, "330")) < 0) return -1; o->temperature_mv = (int)v; break;
+        case 'G': if ((v = number("--gdb", optarg, 1, 65535, "1234")) < 0) return -1; o->gdb_port = (int)v; break;
+        case 'W': o->vcd = optarg; break;
+        case 'h': usage(stdout); exit(0);
+        default: usage(stderr); return -1;
+        }
+    }
+    if (optind != argc - 1) {
+        fprintf(stderr, "openswarm-sim: expected one FIRMWARE.elf (see --help)\n");
+        return -1;
+    }
+    if (o->robots > 1 && (o->gdb_port != 0 || o->vcd != NULL)) {
+        fprintf(stderr, "openswarm-sim: --gdb and --vcd follow one robot: drop --robots\n");
+        return -1;
+    }
+    if (o->robots > 1 && o->uid < 0) o->uid = 1;
+    if (o->uid >= 0 && o->uid + o->robots - 1 > 65535) {
+        fprintf(stderr, "openswarm-sim: --uid %d: robot ids would pass 65535\n", o->uid);
+        return -1;
+    }
+    o->elf = argv[optind];
+    return 0;
+}

@@ -1,0 +1,109 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/*
+ * openswarm-sim: runs robots' firmware ELFs, cycle-exactly, in simavr.
+ *
+ * Conventions shared with the firmware (ports/kilobot/include/openswarm/kilobot_sim.h):
+ *   GPIOR1  console: each byte written is a character, '\n' ends a line
+ *   UART0   the robot's debug serial port, printed like the console
+ *   GPIOR0  exit status, read when the firmware stops (SLEEP with
+ *           interrupts disabled)
+ *   GPIOR2  marker: with --marks, every change of its value is printed
+ *           with the exact cycle, for cycle-exact measurements
+ */
+#ifndef OPENSWARM_SIM_H
+#define OPENSWARM_SIM_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include <sim_avr.h>
+#include <sim_vcd_file.h>
+
+#define GPIOR0_ADDR 0x3E
+#define GPIOR1_ADDR 0x4A
+#define GPIOR2_ADDR 0x4B
+#define MAX_WATCHED_IRQS 8
+#define MAX_ROBOTS 64
+
+enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4 };
+
+typedef struct options {
+    const char *elf;
+    double seconds;
+    int robots;
+    int quiet;
+    int expect_stop;
+    int marks;
+    int watched[MAX_WATCHED_IRQS];
+    int n_watched;
+    int trace;
+    const char *trace_csv;
+    int gdb_port;       /* 0: no debugger */
+    const char *vcd;
+    int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
+    int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
+    int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
+} options;
+
+/* options.c */
+int parse_options(int argc, char **argv, options *o);
+
+/* A line-buffered text output of one robot (its console or serial port). */
+typedef struct console {
+    char prefix[16];
+    char line[256];
+    size_t len;
+} console;
+
+/* What the robot shows: LED colour and motor duty, reported once settled. */
+typedef struct robot_trace {
+    avr_t *avr;
+    int index;
+    const char *prefix;
+    int print;
+    FILE *csv;
+    uint8_t ddrc, ddrd;
+    uint8_t pwm[2];          /* left (OC2A), right (OC2B) */
+    int shown_rgb;           /* last reported, -1 before the first */
+    int shown_pwm[2];
+    avr_cycle_count_t burst; /* cycle of the first unreported change, 0: none */
+} robot_trace;
+
+typedef struct watched_irq {
+    avr_t *avr;
+    int vector;
+} watched_irq;
+
+typedef struct robot {
+    int index;
+    avr_t *avr;
+    console console, serial;
+    robot_trace trace;
+    watched_irq watches[MAX_WATCHED_IRQS];
+    avr_vcd_t vcd;
+    int vcd_open;
+    int state; /* of its last avr_run */
+} robot;
+
+/* firmware.c: check and load an ELF into a new simulated MCU */
+int firmware_check(const char *path);
+avr_t *firmware_load(const char *path);
+
+/* console.c */
+void console_attach(robot *r, int quiet, const char *prefix);
+
+/* robot_trace.c */
+void trace_attach(robot *r, int print, FILE *csv);
+void trace_flush(robot *r);
+
+/* kilobot_board.c: what the robot's EEPROM and sensors hold */
+void board_configure(avr_t *avr, const options *o, int index);
+
+/* measure.c: markers and interrupt timestamps */
+int measure_attach(robot *r, const options *o);
+
+/* debug.c: avr-gdb and GTKWave */
+int debug_attach(robot *r, const options *o);
+void debug_detach(robot *r);
+
+#endif
