@@ -141,8 +141,8 @@ def main():
                "figures start when simavr raises the interrupt.\n")
     out.append("## Footprint\n")
     out.append("Minimal app (`bench/avr/footprint_app.c`: one thread that sleeps) with the smallest\n"
-               "kernel configuration (`bench/avr/footprint_base.h`: 2 thread slots, the kernel's 2\n"
-               "events, 1 subscription, a 16-byte queue).\n")
+               "kernel configuration (`bench/avr/footprint_base.h`: 2 thread slots, 6 event slots\n"
+               "(the kernel's 2 and the Kilobot port's 4), 1 subscription, a 16-byte queue).\n")
     out.append("| what | bytes | target |")
     out.append("|---|---:|---|")
     out.append(f"| whole image: flash (text + data) | {fp['base'][0] + fp['base'][1]} | |")
@@ -153,10 +153,10 @@ def main():
     out.append(f"| per extra thread slot: 12-byte control block + stack-bitmap growth (the pool also grows by its {frame}-byte frame) | {per_thread - frame} | <= 12 |")
     out.append(f"| per extra event slot (data excluded) | {per_event} | <= 4 |\n")
     tcb = per_thread - frame
-    fixed = ram - tcb * 2 - per_event * 4  # footprint_base has 2 thread and 4 event slots
-    out.append(f"So the kernel's RAM for n user threads and m events (system thread and the kernel's\n"
-               f"own 2 events included in the constant) is about\n\n"
-               f"    {fixed + tcb + per_event * 2} + {tcb} n + {per_event} m + sum(d_i) + sum(stack_i + {frame})\n\n"
+    fixed = ram - tcb * 2 - per_event * 6  # footprint_base has 2 thread and 6 event slots
+    out.append(f"So the kernel's RAM for n user threads and m application events (the system\n"
+               f"thread and the kernel's and port's 6 event slots in the constant) is about\n\n"
+               f"    {fixed + tcb + per_event * 6} + {tcb} n + {per_event} m + sum(d_i) + sum(stack_i + {frame})\n\n"
                f"against the paper's 1142 + 146 n + 6 m + sum(d_i) on the dsPIC, whose 146 B per thread\n"
                f"include a 128-byte stack. The main stack (interrupts, handlers, the system thread)\n"
                f"comes on top of both.\n")

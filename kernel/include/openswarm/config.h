@@ -80,8 +80,8 @@
 #if OS_CFG_MAX_THREADS < 2 || OS_CFG_MAX_THREADS > 16
 #error "OS_CFG_MAX_THREADS must be 2..16 (pids keep the slot in 4 bits)"
 #endif
-#if OS_CFG_MAX_EVENTS < 4 || OS_CFG_MAX_EVENTS > 255
-#error "OS_CFG_MAX_EVENTS must be 4..255 (the kernel's own events use ids 0..3)"
+#if OS_CFG_MAX_EVENTS < 2 || OS_CFG_MAX_EVENTS > 255
+#error "OS_CFG_MAX_EVENTS must be 2..255 (the kernel's own events use ids 0 and 1)"
 #endif
 #if OS_CFG_STACK_POOL_BYTES % OS_CFG_STACK_BLOCK_BYTES != 0
 #error "OS_CFG_STACK_POOL_BYTES must be a multiple of OS_CFG_STACK_BLOCK_BYTES"

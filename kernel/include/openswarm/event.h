@@ -14,6 +14,7 @@
 #define OPENSWARM_EVENT_H
 
 #include "openswarm/types.h"
+#include "openswarm/port_arch.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -23,9 +24,10 @@ extern "C" {
 #define SYS_EVENT_1MS_TIMER ((sys_event_id)0)
 /* Sent when the kernel detects a fault; data: sys_fault_info. */
 #define SYS_EVENT_FAULT ((sys_event_id)1)
-/* Reserved for ports (e.g. the robot's own device events start here). */
+/* Reserved for ports: the robot's own device events (PORT_EVENT_COUNT of
+ * them, from port_arch.h) start here; applications' ids after them. */
 #define SYS_EVENT_PORT_FIRST ((sys_event_id)2)
-#define SYS_EVENT_FIRST_FREE ((sys_event_id)4)
+#define SYS_EVENT_FIRST_FREE ((sys_event_id)(SYS_EVENT_PORT_FIRST + PORT_EVENT_COUNT))
 
 /* The data of one occurrence of an event, as handlers and conditions see it. */
 typedef struct sys_event_data {

@@ -22,4 +22,7 @@ typedef int port_irq_state_t;
 #define PORT_STACK_EXTRA (128u * 1024u)
 #define PORT_STACK_ALIGN 16u
 
+/* Event ids the port reserves for its devices. */
+#define PORT_EVENT_COUNT 2
+
 #endif
