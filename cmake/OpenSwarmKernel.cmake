@@ -25,6 +25,7 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motor_processors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/debug_uart.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/kilolib.c)
 
 # Our own code builds warning-free.

@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <sim_cycle_timers.h>
+
 #include "sim.h"
 
 /* Robots advance together in windows this many cycles long, so what one
@@ -28,11 +30,22 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     return debug_attach(r, o);
 }
 
-/* Run every robot up to cycle end (or until it stops); 1 when all stopped. */
+static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void *param) {
+    (void)avr;
+    (void)when;
+    (void)param;
+    return 0;
+}
+
+/* Run every robot up to cycle end (or until it stops); 1 when all stopped.
+ * With several robots a sleeping one is woken at the window's end, so it
+ * never skips past what the others do. */
 static int run_window(int n, avr_cycle_count_t end) {
     int all_finished = 1;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
+        if (n > 1 && !finished(r) && r->avr->cycle < end)
+            avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
         while (!finished(r) && r->avr->cycle < end) r->state = avr_run(r->avr);
         all_finished &= finished(r);
     }
@@ -85,6 +98,7 @@ int main(int argc, char **argv) {
     }
     for (int i = 0; i < o.robots; i++)
         if (setup_robot(&robots[i], i, &o, csv) != 0) return EXIT_USAGE;
+    ir_channel_attach(robots, o.robots, o.distance_mm);
 
     avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)robots[0].avr->frequency);
     for (avr_cycle_count_t end = LOCKSTEP_CYCLES;; end += LOCKSTEP_CYCLES) {

@@ -21,6 +21,7 @@ static void usage(FILE *out) {
             "                       N + k (default with several robots: 1, 2, ...)\n"
             "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
             "                       straight (left and right motor), 0..255 each\n"
+            "  -d, --distance MM    distance between every two robots (default 50 mm)\n"
             "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
             "      --voltage MV     battery sense (ADC6) input, millivolts\n"
             "      --temperature MV internal temperature sensor input, millivolts\n"
@@ -83,20 +84,23 @@ int parse_options(int argc, char **argv, options *o) {
         {"light", required_argument, 0, 'L'},      {"voltage", required_argument, 0, 'V'},
         {"temperature", required_argument, 0, 'E'}, {"gdb", required_argument, 0, 'G'},
         {"vcd", required_argument, 0, 'W'},        {"help", no_argument, 0, 'h'},
+        {"distance", required_argument, 0, 'd'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
     o->robots = 1;
+    o->distance_mm = 50;
     o->uid = -1;
     o->light_mv = o->voltage_mv = o->temperature_mv = -1;
     for (int i = 0; i < 4; i++) o->calibration[i] = -1;
     int c;
     long v = 0;
-    while ((c = getopt_long(argc, argv, "t:n:sqmi:h", longopts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, "t:n:d:sqmi:h", longopts, NULL)) != -1) {
         switch (c) {
         case 't': if (parse_time(optarg, o) != 0) return -1; break;
         case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; break;
         case 's': o->expect_stop = 1; break;
+        case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; o->distance_mm = (int)v; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'i':

@@ -42,6 +42,7 @@ typedef struct options {
     const char *vcd;
     int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
+    int distance_mm;    /* between every two robots */
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
 } options;
 
@@ -101,6 +102,9 @@ void board_configure(avr_t *avr, const options *o, int index);
 
 /* measure.c: markers and interrupt timestamps */
 int measure_attach(robot *r, const options *o);
+
+/* ir_channel.c: every robot hears every other's IR LED */
+void ir_channel_attach(robot *all, int n, int distance_mm);
 
 /* debug.c: avr-gdb and GTKWave */
 int debug_attach(robot *r, const options *o);

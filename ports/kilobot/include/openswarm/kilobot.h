@@ -23,6 +23,36 @@ typedef struct kilobot_motors {
     uint8_t right;
 } kilobot_motors;
 
+/* IR messages. A frame is 12 bytes on the wire: 9 data, 1 type, CRC-16
+ * CCITT (seed 0xFFFF) over the first 10, little-endian. */
+#define KILOBOT_IR_FRAME_BYTES 12
+/* data: kilobot_ir_rx (a frame whose CRC checked, and how it was heard) */
+#define KILOBOT_EVENT_IR_RX ((sys_event_id)(SYS_EVENT_PORT_FIRST + 2))
+/* data: 10 bytes (9 data + type) to transmit; the Tx processor adds the CRC */
+#define KILOBOT_EVENT_IR_TX ((sys_event_id)(SYS_EVENT_PORT_FIRST + 3))
+
+typedef struct kilobot_ir_rx {
+    uint8_t frame[KILOBOT_IR_FRAME_BYTES];
+    int16_t low_gain;  /* ADC1 at the header's stop pulse */
+    int16_t high_gain; /* ADC0 at the start pulse */
+} kilobot_ir_rx;
+
+extern sys_device kilobot_ir;
+
+/* IR statistics: frames sent, received, rejected (CRC), collisions seen,
+ * transmissions deferred because the channel was busy. */
+typedef struct kilobot_ir_stats {
+    uint16_t sent, received, bad_crc, collisions, busy;
+} kilobot_ir_stats;
+void kilobot_ir_get_stats(kilobot_ir_stats *stats);
+
+/* Send a 12-byte frame now (interrupts masked for its 4.4 ms). SYS_E_QUEUE_FULL
+ * if the channel is busy (a reception in progress): try again later. */
+sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]);
+
+/* CRC-16 CCITT, seed 0xFFFF, over n bytes. */
+uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n);
+
 /* Hardware-independent motion commands. The motors' default post-processor
  * (kilobot_motor_commands) turns them into this robot's calibrated duties. */
 typedef enum kilobot_motion {

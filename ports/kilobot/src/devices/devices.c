@@ -7,5 +7,7 @@ sys_status kilobot_devices_init(void) {
     kilobot_calibration_load();
     sys_status st = Sys_Register_Device(&kilobot_led);
     if (st == SYS_OK) st = Sys_Register_Device(&kilobot_motor_pair);
+    if (st == SYS_OK) st = Sys_Register_Device(&kilobot_ir);
+    if (st == SYS_OK) kilobot_ir_start();
     return st;
 }

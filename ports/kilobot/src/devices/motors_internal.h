@@ -11,4 +11,7 @@ void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback);
 /* Called every 1 ms from the tick interrupt. */
 void kilobot_motors_tick(void);
 
+/* ir.c: start listening (analog comparator to Timer1 input capture). */
+void kilobot_ir_start(void);
+
 #endif

@@ -1,0 +1,217 @@
+/* Infrared messages: the Kilobot's only way to talk to its neighbours.
+ *
+ * Wire format, in slots of one bit time (269 cycles at 8 MHz, 29.7 kbit/s):
+ * a start pulse in slot 0 and a stop pulse in slot 9 (a pulse between them
+ * means two robots started together: a collision), then 12 bytes of 10
+ * slots each: a start bit (1), 8 data bits LSB first, a stop bit (1). A 1
+ * is a short flash of the IR LED on PB0; the receivers see it through the
+ * analog comparator (AIN0 PD6, AIN1 PD7), whose output is wired to Timer1's
+ * input capture, so each edge is timestamped by the hardware. The distance
+ * readings are sampled at the header: ADC0 (high gain) from the start pulse,
+ * ADC1 (low gain) from the stop pulse.
+ *
+ * The lower layer here moves frames; the Rx processor checks the CRC and
+ * the Tx processor adds it (kernel HAL comm device). */
+#include "openswarm/kilobot.h"
+#include "openswarm/port.h"
+
+#include <avr/interrupt.h>
+#include <avr/io.h>
+#include <string.h>
+#include <util/crc16.h>
+
+#include "motors_internal.h"
+
+#define BIT 269u
+#define HEADER_SLOTS 10u
+#define SLOTS (HEADER_SLOTS + KILOBOT_IR_FRAME_BYTES * 10u)
+#define TX_PIN _BV(PB0)
+
+enum { RX_IDLE, RX_HEADER, RX_DATA };
+
+static volatile uint8_t rx_state;
+static uint16_t rx_slot_time; /* Timer1 time of the current slot's centre line */
+static uint8_t rx_slot;
+static kilobot_ir_rx rx;
+static kilobot_ir_stats stats;
+
+uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
+    uint16_t crc = 0xFFFF;
+    while (n-- != 0) crc = _crc_ccitt_update(crc, *bytes++);
+    return crc;
+}
+
+void kilobot_ir_get_stats(kilobot_ir_stats *out) {
+    uint8_t sreg = SREG;
+    cli();
+    *out = stats;
+    SREG = sreg;
+}
+
+static void adc_start(uint8_t channel) {
+    ADMUX = _BV(REFS0) | channel;
+    ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1);
+}
+
+static int16_t adc_take(void) {
+    while (ADCSRA & _BV(ADSC)) {
+    }
+    return (int16_t)ADC;
+}
+
+void kilobot_ir_start(void) {
+    DDRB |= TX_PIN;
+    PORTB &= (uint8_t)~TX_PIN;
+    TCCR1A = 0;
+    TCCR1B = _BV(ICES1) | _BV(CS10); /* free running at F_CPU, capture on rising edges */
+    ACSR = _BV(ACIC);                /* comparator output -> input capture */
+    TIFR1 = _BV(ICF1) | _BV(OCF1A);
+    TIMSK1 = _BV(ICIE1);
+    rx_state = RX_IDLE;
+}
+
+/* Timer1 compare A ends a frame that stopped short. */
+static void arm_timeout(uint16_t start) {
+    OCR1A = (uint16_t)(start + (SLOTS + 1u) * BIT);
+    TIFR1 = _BV(OCF1A);
+    TIMSK1 |= _BV(OCIE1A);
+}
+
+static void rx_reset(void) {
+    rx_state = RX_IDLE;
+    TIMSK1 &= (uint8_t)~_BV(OCIE1A);
+}
+
+static void rx_finish(void) {
+    rx.low_gain = adc_take();
+    rx_reset();
+    os_isr_enter();
+    Sys_Device_Input(&kilobot_ir, &rx, sizeof rx); /* the Rx processor checks the CRC */
+    os_isr_exit();
+}
+
+/* An edge at Timer1 time t: which slot is it in? Slots are counted forward
+ * from the last one, so no division runs in this interrupt. */
+static uint8_t slot_of(uint16_t t) {
+    while ((int16_t)(t - rx_slot_time) > (int16_t)(BIT / 2u)) {
+        rx_slot_time += BIT;
+        rx_slot++;
+    }
+    return rx_slot;
+}
+
+ISR(TIMER1_CAPT_vect) {
+    uint16_t t = ICR1;
+    if (rx_state == RX_IDLE) {
+        rx_slot_time = t;
+        rx_slot = 0;
+        rx_state = RX_HEADER;
+        memset(&rx, 0, sizeof rx);
+        adc_start(0);
+        arm_timeout(t);
+        return;
+    }
+    uint8_t slot = slot_of(t);
+    if (rx_state == RX_HEADER) {
+        if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
+            stats.collisions++;
+            rx_reset();
+        } else if (slot == HEADER_SLOTS - 1u) {
+            rx.high_gain = adc_take();
+            adc_start(1);
+            rx_state = RX_DATA;
+        }
+        return;
+    }
+    uint8_t data_slot = (uint8_t)(slot - HEADER_SLOTS);
+    if (data_slot >= SLOTS - HEADER_SLOTS) return;
+    uint8_t byte = data_slot / 10u, bit = data_slot % 10u;
+    if (bit >= 1u && bit <= 8u) rx.frame[byte] |= (uint8_t)(1u << (bit - 1u));
+    if (data_slot == SLOTS - HEADER_SLOTS - 1u) rx_finish();
+}
+
+ISR(TIMER1_COMPA_vect) { rx_reset(); }
+
+static void flash(void) {
+    PORTB |= TX_PIN;
+    __asm__ __volatile__("nop\n\tnop\n\tnop\n\tnop" ::: "memory");
+    PORTB &= (uint8_t)~TX_PIN;
+}
+
+/* Waits on Timer1, interrupts masked: every slot boundary is exact. */
+static void send_slots(const uint8_t *frame) {
+    uint16_t t0 = TCNT1;
+    uint16_t at = t0;
+    for (uint8_t slot = 0; slot < SLOTS; slot++, at = (uint16_t)(at + BIT)) {
+        uint8_t one;
+        if (slot < HEADER_SLOTS) {
+            one = slot == 0u || slot == HEADER_SLOTS - 1u;
+        } else {
+            uint8_t s = (uint8_t)(slot - HEADER_SLOTS), bit = s % 10u;
+            one = bit == 0u || bit == 9u || ((frame[s / 10u] >> (bit - 1u)) & 1u);
+        }
+        while ((int16_t)(TCNT1 - at) < 0) {
+        }
+        if (one) flash();
+    }
+}
+
+sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
+    uint8_t sreg = SREG;
+    cli();
+    if (rx_state != RX_IDLE) { /* carrier sense: someone is talking */
+        stats.busy++;
+        SREG = sreg;
+        return SYS_E_QUEUE_FULL;
+    }
+    uint16_t t0 = TCNT1;
+    send_slots(frame);
+    stats.sent++;
+    /* The tick could not run meanwhile: count the milliseconds it missed
+     * (the one left pending is taken when interrupts come back). */
+    uint16_t missed = (uint16_t)(TCNT1 - t0) / (uint16_t)(F_CPU / 1000u);
+    if (missed != 0) {
+        os_isr_enter();
+        while (missed-- != 0) os_tick();
+        os_isr_exit();
+    }
+    SREG = sreg;
+    return SYS_OK;
+}
+
+/* ---- the HAL comm device ---- */
+
+/* Rx: a frame whose CRC checks becomes a KILOBOT_EVENT_IR_RX. */
+static uint8_t check_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
+    (void)dev;
+    const kilobot_ir_rx *r = in;
+    if (size != sizeof *r || cap < sizeof *r) return 0;
+    uint16_t crc = (uint16_t)(r->frame[10] | (uint16_t)r->frame[11] << 8);
+    if (crc != kilobot_crc(r->frame, 10)) {
+        stats.bad_crc++;
+        return 0;
+    }
+    stats.received++;
+    memcpy(out, r, sizeof *r);
+    return sizeof *r;
+}
+
+/* Tx: 10 bytes (data + type) get their CRC. */
+static uint8_t add_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
+    (void)dev;
+    if (size != 10u || cap < KILOBOT_IR_FRAME_BYTES) return 0;
+    uint8_t *f = out;
+    memcpy(f, in, 10);
+    uint16_t crc = kilobot_crc(f, 10);
+    f[10] = (uint8_t)crc;
+    f[11] = (uint8_t)(crc >> 8);
+    return KILOBOT_IR_FRAME_BYTES;
+}
+
+static void ir_write(sys_device *dev, const void *raw, uint8_t size) {
+    (void)dev;
+    if (size == KILOBOT_IR_FRAME_BYTES) kilobot_ir_transmit(raw);
+}
+
+sys_device kilobot_ir = {"ir", SYS_DEVICE_COMM, KILOBOT_EVENT_IR_RX, KILOBOT_EVENT_IR_TX,
+                         check_crc, add_crc, ir_write, NULL, 0};
