@@ -71,11 +71,13 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
 
 /* ADC readings (0..1023) a receiver gets from a sender d mm away: the high
  * gain amplifier saturates close by, the low gain one reaches further. */
-static int high_gain_reading(int mm) {
+int ir_high_gain_reading(int mm);
+int ir_low_gain_reading(int mm);
+int ir_high_gain_reading(int mm) {
     int v = 1023 * 40 / (mm > 0 ? mm : 1);
     return v > 1023 ? 1023 : v;
 }
-static int low_gain_reading(int mm) {
+int ir_low_gain_reading(int mm) {
     int v = 1023 * 15 / (mm > 0 ? mm : 1);
     return v > 1023 ? 1023 : v;
 }
@@ -94,8 +96,8 @@ void ir_channel_attach(robot *all, int n, int distance_mm) {
         avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1), AIN1_MV);
         avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0), 0);
         avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0),
-                      millivolts_of(r, high_gain_reading(distance_mm)));
+                      millivolts_of(r, ir_high_gain_reading(distance_mm)));
         avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1),
-                      millivolts_of(r, low_gain_reading(distance_mm)));
+                      millivolts_of(r, ir_low_gain_reading(distance_mm)));
     }
 }

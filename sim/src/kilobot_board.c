@@ -11,6 +11,10 @@
 
 static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
 #define UID_ADDRESS 0xB0
+/* Distance tables: 14 big-endian readings, entry i for 30 + 5 i mm. */
+#define LOW_GAIN_TABLE 0x20
+#define HIGH_GAIN_TABLE 0x50
+#define TABLE_ENTRIES 14
 
 static void write_eeprom(avr_t *avr, uint16_t address, const uint8_t *bytes, uint32_t n) {
     avr_eeprom_desc_t d = {(uint8_t *)bytes, address, n};
@@ -32,6 +36,16 @@ void board_configure(avr_t *avr, const options *o, int index) {
         uint8_t v = (uint8_t)o->calibration[i];
         write_eeprom(avr, calibration_address[i], &v, 1);
     }
+    uint8_t low[2 * TABLE_ENTRIES], high[2 * TABLE_ENTRIES];
+    for (int i = 0; i < TABLE_ENTRIES; i++) {
+        int mm = 30 + 5 * i, l = ir_low_gain_reading(mm), h = ir_high_gain_reading(mm);
+        low[2 * i] = (uint8_t)(l >> 8);
+        low[2 * i + 1] = (uint8_t)l;
+        high[2 * i] = (uint8_t)(h >> 8);
+        high[2 * i + 1] = (uint8_t)h;
+    }
+    write_eeprom(avr, LOW_GAIN_TABLE, low, sizeof low);
+    write_eeprom(avr, HIGH_GAIN_TABLE, high, sizeof high);
     if (o->uid >= 0) {
         int uid = o->uid + index;
         uint8_t bytes[2] = {(uint8_t)(uid & 0xFF), (uint8_t)(uid >> 8)}; /* little-endian */

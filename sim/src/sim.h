@@ -105,6 +105,9 @@ int measure_attach(robot *r, const options *o);
 
 /* ir_channel.c: every robot hears every other's IR LED */
 void ir_channel_attach(robot *all, int n, int distance_mm);
+/* The readings that model, for the calibration tables a robot keeps. */
+int ir_high_gain_reading(int mm);
+int ir_low_gain_reading(int mm);
 
 /* debug.c: avr-gdb and GTKWave */
 int debug_attach(robot *r, const options *o);

@@ -59,6 +59,9 @@ int16_t get_ambientlight(void);
 int16_t get_voltage(void);
 int16_t get_temperature(void);
 
+/* Distance in mm to the robot a message came from (EEPROM calibration). */
+uint8_t estimate_distance(const distance_measurement_t *d);
+
 void delay(uint16_t ms);
 uint8_t rand_hard(void);
 uint8_t rand_soft(void);

@@ -4,6 +4,7 @@
 
 #include <avr/eeprom.h>
 #include <avr/io.h>
+#include <string.h>
 #include <util/crc16.h>
 
 #include "openswarm/kernel.h"
@@ -11,6 +12,9 @@
 
 #ifndef KILOLIB_LOOP_STACK
 #define KILOLIB_LOOP_STACK 192 /* bytes for setup() and loop(), beyond the port's frame */
+#endif
+#ifndef KILOLIB_TX_STACK
+#define KILOLIB_TX_STACK 64 /* for kilo_message_tx and kilo_message_tx_success */
 #endif
 
 volatile uint32_t kilo_ticks;
@@ -62,6 +66,38 @@ static void program(void *arg) {
     for (;;) user_loop();
 }
 
+/* Messages from other robots reach kilo_message_rx; the overhead
+ * controller's system messages (types from 0x80) are the kernel's. */
+static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d) {
+    (void)pid;
+    (void)e;
+    const kilobot_ir_rx *rx = d->value;
+    message_t msg;
+    memcpy(msg.rawdata, rx->frame, sizeof msg.rawdata);
+    if (msg.type >= SPECIAL) return true;
+    distance_measurement_t dist = {rx->low_gain, rx->high_gain};
+    kilo_message_rx(&msg, &dist);
+    return true;
+}
+
+static uint16_t ms_of_ticks(uint16_t ticks) {
+    return (uint16_t)(((uint32_t)ticks * 1000u + TICKS_PER_SEC - 1u) / TICKS_PER_SEC);
+}
+
+/* Every kilo_tx_period, kilo_message_tx's message (its crc set by the
+ * program, as with the classic library) goes out; a busy channel is tried
+ * again after a random few milliseconds. */
+static void transmitter(void *arg) {
+    (void)arg;
+    for (;;) {
+        Sys_Sleep(ms_of_ticks(kilo_tx_period));
+        message_t *msg = kilo_message_tx();
+        if (msg == 0) continue;
+        while (kilobot_ir_transmit(msg->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
+        kilo_message_tx_success();
+    }
+}
+
 /* The robot starts as if the overhead controller had just sent RUN. */
 void kilo_start(void (*setup)(void), void (*loop)(void)) {
     user_setup = setup;
@@ -69,7 +105,9 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     kilo_ticks = 0;
     tick_fraction = 0;
     kilobot_tick_hook = count_kilo_ticks;
+    Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
     Sys_Start_Process_Ex(program, 0, KILOLIB_LOOP_STACK, 0, 0);
+    Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
 }
@@ -124,8 +162,50 @@ uint8_t rand_soft(void) {
 }
 void rand_seed(uint8_t seed) { soft_state = seed != 0 ? seed : 0xA5; }
 
-uint16_t message_crc(const message_t *msg) {
-    uint16_t crc = 0xFFFF;
-    for (uint8_t i = 0; i < 10; i++) crc = _crc_ccitt_update(crc, msg->rawdata[i]);
-    return crc;
+uint16_t message_crc(const message_t *msg) { return kilobot_crc(msg->rawdata, 10); }
+
+/* Distance calibration: two tables of 14 big-endian readings in EEPROM,
+ * low gain at 0x20 and high gain at 0x50; entry i is what the robot reads
+ * from a sender 30 + 5 i mm away (readings fall with distance). */
+#define TABLE_ENTRIES 14
+#define LOW_GAIN_TABLE 0x20
+#define HIGH_GAIN_TABLE 0x50
+#define FIRST_MM 30
+#define STEP_MM 5
+
+static uint16_t table_entry(uint8_t table, uint8_t i) {
+    const uint8_t *at = (const uint8_t *)(uint16_t)(table + 2u * i);
+    return (uint16_t)(eeprom_read_byte(at) << 8 | eeprom_read_byte(at + 1));
+}
+
+/* Distance in mm, times 16, from one gain's reading: interpolated between
+ * the two entries around it, clamped to the table's ends. */
+static uint16_t distance_x16(uint8_t table, int16_t reading) {
+    uint16_t r = reading < 0 ? 0 : (uint16_t)reading;
+    if (r >= table_entry(table, 0)) return FIRST_MM * 16u;
+    for (uint8_t i = 1; i < TABLE_ENTRIES; i++) {
+        uint16_t hi = table_entry(table, (uint8_t)(i - 1u)), lo = table_entry(table, i);
+        if (r >= lo) {
+            uint16_t span = hi > lo ? (uint16_t)(hi - lo) : 1u;
+            uint32_t frac = (uint32_t)(hi - r) * STEP_MM * 16u / span;
+            return (uint16_t)((FIRST_MM + STEP_MM * (i - 1u)) * 16u + frac);
+        }
+    }
+    return (FIRST_MM + STEP_MM * (TABLE_ENTRIES - 1u)) * 16u;
+}
+
+/* The high gain is precise far away but saturates close by: it is used
+ * below 700, the low gain above 900, and a blend of both in between. */
+uint8_t estimate_distance(const distance_measurement_t *d) {
+    uint16_t high = distance_x16(HIGH_GAIN_TABLE, d->high_gain);
+    uint16_t low = distance_x16(LOW_GAIN_TABLE, d->low_gain);
+    uint32_t x16;
+    if (d->high_gain < 700)
+        x16 = high;
+    else if (d->high_gain > 900)
+        x16 = low;
+    else
+        x16 = ((uint32_t)high * (uint32_t)(900 - d->high_gain) +
+               (uint32_t)low * (uint32_t)(d->high_gain - 700)) / 200u;
+    return (uint8_t)((x16 + 8u) / 16u);
 }

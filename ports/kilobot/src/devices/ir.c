@@ -27,12 +27,7 @@
 #define SLOTS (HEADER_SLOTS + KILOBOT_IR_FRAME_BYTES * 10u)
 #define TX_PIN _BV(PB0)
 
-enum { RX_IDLE, RX_HEADER, RX_DATA };
-
-static volatile uint8_t rx_state;
-static uint16_t rx_slot_time; /* Timer1 time of the current slot's centre line */
-static uint8_t rx_slot;
-static kilobot_ir_rx rx;
+static volatile uint8_t receiving; /* carrier sense for the transmitter */
 static kilobot_ir_stats stats;
 
 uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
@@ -65,72 +60,83 @@ void kilobot_ir_start(void) {
     TCCR1A = 0;
     TCCR1B = _BV(ICES1) | _BV(CS10); /* free running at F_CPU, capture on rising edges */
     ACSR = _BV(ACIC);                /* comparator output -> input capture */
-    TIFR1 = _BV(ICF1) | _BV(OCF1A);
+    TIFR1 = _BV(ICF1);
     TIMSK1 = _BV(ICIE1);
-    rx_state = RX_IDLE;
+    receiving = 0;
 }
 
-/* Timer1 compare A ends a frame that stopped short. */
-static void arm_timeout(uint16_t start) {
-    OCR1A = (uint16_t)(start + (SLOTS + 1u) * BIT);
-    TIFR1 = _BV(OCF1A);
-    TIMSK1 |= _BV(OCIE1A);
+/* The tick could not run while interrupts were masked for a whole frame:
+ * count the milliseconds it missed (the one left pending is taken when
+ * interrupts come back). */
+static void catch_up_ticks(uint16_t since) {
+    uint16_t missed = (uint16_t)(TCNT1 - since) / (uint16_t)(F_CPU / 1000u);
+    if (missed == 0) return;
+    os_isr_enter();
+    while (missed-- != 0) os_tick();
+    os_isr_exit();
 }
 
-static void rx_reset(void) {
-    rx_state = RX_IDLE;
-    TIMSK1 &= (uint8_t)~_BV(OCIE1A);
+/* Next edge's Timer1 time, or -1 once the frame's time is over. Edges are
+ * latched by the input capture hardware, so polling loses none. */
+static int32_t next_edge(uint16_t start) {
+    for (;;) {
+        if (TIFR1 & _BV(ICF1)) {
+            uint16_t t = ICR1;
+            TIFR1 = _BV(ICF1);
+            return t;
+        }
+        if ((uint16_t)(TCNT1 - start) > (uint16_t)((SLOTS + 1u) * BIT)) return -1;
+    }
 }
 
-static void rx_finish(void) {
-    rx.low_gain = adc_take();
-    rx_reset();
+/* Decode one frame, interrupts masked throughout (4.4 ms, as the classic
+ * library does): another interrupt in the middle would make us miss the
+ * edges of two consecutive 1 bits. Slots are counted forward from the
+ * start pulse, so no division runs per edge. */
+static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
+    uint16_t slot_time = start;
+    uint8_t slot = 0;
+    memset(rx, 0, sizeof *rx);
+    adc_start(0);
+    for (;;) {
+        int32_t edge = next_edge(start);
+        if (edge < 0) return false; /* the frame stopped short */
+        while ((int16_t)((uint16_t)edge - slot_time) > (int16_t)(BIT / 2u)) {
+            slot_time = (uint16_t)(slot_time + BIT);
+            slot++;
+        }
+        if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
+            stats.collisions++;
+            return false;
+        }
+        if (slot == HEADER_SLOTS - 1u) {
+            rx->high_gain = adc_take();
+            adc_start(1);
+            continue;
+        }
+        uint8_t data_slot = (uint8_t)(slot - HEADER_SLOTS);
+        uint8_t bit = data_slot % 10u;
+        if (bit >= 1u && bit <= 8u) rx->frame[data_slot / 10u] |= (uint8_t)(1u << (bit - 1u));
+        if (data_slot == SLOTS - HEADER_SLOTS - 1u) {
+            rx->low_gain = adc_take();
+            return true;
+        }
+    }
+}
+
+ISR(TIMER1_CAPT_vect) {
+    uint16_t start = ICR1;
+    TIFR1 = _BV(ICF1);
+    kilobot_ir_rx rx;
+    receiving = 1;
+    bool whole = receive_frame(start, &rx);
+    receiving = 0;
+    catch_up_ticks(start);
+    if (!whole) return;
     os_isr_enter();
     Sys_Device_Input(&kilobot_ir, &rx, sizeof rx); /* the Rx processor checks the CRC */
     os_isr_exit();
 }
-
-/* An edge at Timer1 time t: which slot is it in? Slots are counted forward
- * from the last one, so no division runs in this interrupt. */
-static uint8_t slot_of(uint16_t t) {
-    while ((int16_t)(t - rx_slot_time) > (int16_t)(BIT / 2u)) {
-        rx_slot_time += BIT;
-        rx_slot++;
-    }
-    return rx_slot;
-}
-
-ISR(TIMER1_CAPT_vect) {
-    uint16_t t = ICR1;
-    if (rx_state == RX_IDLE) {
-        rx_slot_time = t;
-        rx_slot = 0;
-        rx_state = RX_HEADER;
-        memset(&rx, 0, sizeof rx);
-        adc_start(0);
-        arm_timeout(t);
-        return;
-    }
-    uint8_t slot = slot_of(t);
-    if (rx_state == RX_HEADER) {
-        if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
-            stats.collisions++;
-            rx_reset();
-        } else if (slot == HEADER_SLOTS - 1u) {
-            rx.high_gain = adc_take();
-            adc_start(1);
-            rx_state = RX_DATA;
-        }
-        return;
-    }
-    uint8_t data_slot = (uint8_t)(slot - HEADER_SLOTS);
-    if (data_slot >= SLOTS - HEADER_SLOTS) return;
-    uint8_t byte = data_slot / 10u, bit = data_slot % 10u;
-    if (bit >= 1u && bit <= 8u) rx.frame[byte] |= (uint8_t)(1u << (bit - 1u));
-    if (data_slot == SLOTS - HEADER_SLOTS - 1u) rx_finish();
-}
-
-ISR(TIMER1_COMPA_vect) { rx_reset(); }
 
 static void flash(void) {
     PORTB |= TX_PIN;
@@ -159,7 +165,7 @@ static void send_slots(const uint8_t *frame) {
 sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     uint8_t sreg = SREG;
     cli();
-    if (rx_state != RX_IDLE) { /* carrier sense: someone is talking */
+    if (receiving || (TIFR1 & _BV(ICF1))) { /* carrier sense: someone is talking */
         stats.busy++;
         SREG = sreg;
         return SYS_E_QUEUE_FULL;
@@ -167,14 +173,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     uint16_t t0 = TCNT1;
     send_slots(frame);
     stats.sent++;
-    /* The tick could not run meanwhile: count the milliseconds it missed
-     * (the one left pending is taken when interrupts come back). */
-    uint16_t missed = (uint16_t)(TCNT1 - t0) / (uint16_t)(F_CPU / 1000u);
-    if (missed != 0) {
-        os_isr_enter();
-        while (missed-- != 0) os_tick();
-        os_isr_exit();
-    }
+    catch_up_ticks(t0);
     SREG = sreg;
     return SYS_OK;
 }
