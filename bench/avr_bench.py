@@ -14,6 +14,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.path.join(ROOT, "build-bench")
 FW = os.path.join(BUILD, "avr")
+FW_TESTS = os.path.join(BUILD, "avr-tests")
 SIM = os.path.join(BUILD, "host", "sim", "openswarm-sim")
 F_CPU = 8_000_000
 COMMAND = "python3 bench/avr_bench.py"
@@ -31,6 +32,10 @@ def build():
     run(["cmake", "-S", os.path.join(ROOT, "bench", "avr"), "-B", FW, "-G", "Ninja",
          "-DCMAKE_TOOLCHAIN_FILE=" + os.path.join(ROOT, "ports/kilobot/cmake/avr-gcc.cmake")])
     run(["cmake", "--build", FW])
+    # A typical messaging program: the kilolib test suite's ping.
+    run(["cmake", "-S", os.path.join(ROOT, "tests", "avr"), "-B", FW_TESTS, "-G", "Ninja",
+         "-DCMAKE_TOOLCHAIN_FILE=" + os.path.join(ROOT, "ports/kilobot/cmake/avr-gcc.cmake")])
+    run(["cmake", "--build", FW_TESTS, "--target", "kilolib_ping"])
 
 
 def events(elf, *extra):
@@ -91,9 +96,9 @@ def sizes(elf):
     return int(text), int(data), int(bss)
 
 
-def speed(elf, seconds):
+def speed(elf, seconds, *extra):
     t0 = time.perf_counter()
-    run([SIM, "--quiet", "--time", str(seconds), elf])
+    run([SIM, "--quiet", "--time", str(seconds), *extra, elf])
     return seconds / (time.perf_counter() - t0)
 
 
@@ -123,6 +128,8 @@ def main():
     ram = (fp["base"][1] + fp["base"][2]) - (bare[1] + bare[2]) - pool - frame
     idle_rtf = speed(os.path.join(FW, "footprint_base.elf"), 60)
     busy_rtf = speed(cyc, 0.24)
+    ping = os.path.join(FW_TESTS, "kilolib_ping.elf")
+    ping_rtf = {n: speed(ping, 20, "--robots", str(n), "--distance", "60") for n in (1, 2, 10)}
 
     out = []
     out.append("# Benchmarks\n")
@@ -164,7 +171,11 @@ def main():
     out.append("| firmware | real-time factor |")
     out.append("|---|---:|")
     out.append(f"| mostly idle (the footprint app, 60 simulated s; the CPU sleeps) | {idle_rtf:.0f}x |")
-    out.append(f"| always busy (`kernel_cycles`, spinning threads) | {busy_rtf:.1f}x |\n")
+    out.append(f"| always busy (`kernel_cycles`, spinning threads) | {busy_rtf:.1f}x |")
+    for n, rtf in ping_rtf.items():
+        out.append(f"| messaging (`tests/avr/kilolib_ping.c`, a classic kilolib program: robot 1 sends "
+                   f"twice a second, the others receive), {n} robot{'s' if n > 1 else ''}, 20 s | {rtf:.1f}x |")
+    out.append("")
     out.append("Real-time factor = simulated seconds per wall-clock second on one core of the\n"
                "machine that ran the command; it varies with the machine.\n")
     with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as f:
