@@ -6,8 +6,9 @@
  * behind in its lockstep window the edge is scheduled at that cycle,
  * otherwise as soon as it can be (at most a window late, a quarter bit).
  * Edges to one receiver stay at least EDGE_GAP cycles apart: simavr 1.6
- * updates the comparator a cycle after its input changes, so a rise and a
- * fall in the same cycle would cancel out.
+ * updates the comparator a cycle after its input changes, and a second
+ * change before that update (two edges closer than the instruction being
+ * executed) replaces the first: the pulse would vanish.
  * The distance sensors (ADC0 high gain, ADC1 low gain) read what a robot
  * at --distance millimetres would. */
 #include <avr_acomp.h>
@@ -20,7 +21,7 @@
 
 #define AIN1_MV 500 /* the comparator's threshold */
 #define LIT_MV 1000
-#define EDGE_GAP 2
+#define EDGE_GAP 8
 
 /* One edge on its way from a sender to a receiver; rises and falls have
  * their own, so a pending rise is never replaced by its fall. */

@@ -15,7 +15,11 @@ static void mark_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
 static void irq_raised(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     const watched_irq *w = param;
-    if (value) printf("irq %d %llu\n", w->vector, (unsigned long long)w->avr->cycle);
+    if (!value) return;
+    if (w->robot < 0)
+        printf("irq %d %llu\n", w->vector, (unsigned long long)w->avr->cycle);
+    else
+        printf("irq %d %llu robot %d\n", w->vector, (unsigned long long)w->avr->cycle, w->robot);
 }
 
 int measure_attach(robot *r, const options *o) {
@@ -23,6 +27,7 @@ int measure_attach(robot *r, const options *o) {
     for (int i = 0; i < o->n_watched; i++) {
         r->watches[i].avr = r->avr;
         r->watches[i].vector = o->watched[i];
+        r->watches[i].robot = o->robots > 1 ? r->index : -1;
         avr_irq_t *irq = avr_get_interrupt_irq(r->avr, (uint8_t)o->watched[i]);
         if (irq == NULL) {
             fprintf(stderr, "openswarm-sim: --watch-irq %d: %s has no such interrupt vector\n",

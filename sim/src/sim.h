@@ -73,6 +73,7 @@ typedef struct robot_trace {
 typedef struct watched_irq {
     avr_t *avr;
     int vector;
+    int robot; /* -1 with one robot */
 } watched_irq;
 
 typedef struct robot {

@@ -57,7 +57,8 @@ void kilo_init(void) {
     kilo_straight_left = kilobot_calib.straight_left;
     kilo_straight_right = kilobot_calib.straight_right;
     kilo_uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
-    rand_seed(rand_hard());
+    /* The uid keeps robots apart even where sensor noise is alike (a simulator). */
+    rand_seed((uint8_t)(rand_hard() ^ kilo_uid ^ (kilo_uid >> 8)));
 }
 
 static void program(void *arg) {
@@ -84,13 +85,14 @@ static uint16_t ms_of_ticks(uint16_t ticks) {
     return (uint16_t)(((uint32_t)ticks * 1000u + TICKS_PER_SEC - 1u) / TICKS_PER_SEC);
 }
 
-/* Every kilo_tx_period, kilo_message_tx's message (its crc set by the
- * program, as with the classic library) goes out; a busy channel is tried
- * again after a random few milliseconds. */
+/* Every kilo_tx_period (give or take a random 0-15 ms, so robots that
+ * started together drift apart), kilo_message_tx's message (its crc set by
+ * the program, as with the classic library) goes out; a busy channel is
+ * tried again after a random few milliseconds. */
 static void transmitter(void *arg) {
     (void)arg;
     for (;;) {
-        Sys_Sleep(ms_of_ticks(kilo_tx_period));
+        Sys_Sleep(ms_of_ticks(kilo_tx_period) + (rand_soft() & 15u));
         message_t *msg = kilo_message_tx();
         if (msg == 0) continue;
         while (kilobot_ir_transmit(msg->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));

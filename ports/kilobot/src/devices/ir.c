@@ -138,9 +138,11 @@ ISR(TIMER1_CAPT_vect) {
     os_isr_exit();
 }
 
+/* A flash of about 1.5 us, longer than any instruction a receiver may be
+ * executing when it starts. */
 static void flash(void) {
     PORTB |= TX_PIN;
-    __asm__ __volatile__("nop\n\tnop\n\tnop\n\tnop" ::: "memory");
+    __builtin_avr_delay_cycles(10);
     PORTB &= (uint8_t)~TX_PIN;
 }
 
