@@ -22,6 +22,9 @@ static void usage(FILE *out) {
             "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
             "                       straight (left and right motor), 0..255 each\n"
             "  -d, --distance MM    distance between every two robots (default 50 mm)\n"
+            "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
+            "                       (run, sleep, wakeup, reset, voltage, charge); repeatable.\n"
+            "                       Robots start as if it had just sent run.\n"
             "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
             "      --voltage MV     battery sense (ADC6) input, millivolts\n"
             "      --temperature MV internal temperature sensor input, millivolts\n"
@@ -84,7 +87,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"light", required_argument, 0, 'L'},      {"voltage", required_argument, 0, 'V'},
         {"temperature", required_argument, 0, 'E'}, {"gdb", required_argument, 0, 'G'},
         {"vcd", required_argument, 0, 'W'},        {"help", no_argument, 0, 'h'},
-        {"distance", required_argument, 0, 'd'},
+        {"distance", required_argument, 0, 'd'},   {"ohc", required_argument, 0, 'O'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -120,6 +123,13 @@ int parse_options(int argc, char **argv, options *o) {
         case 'E': if ((v = number("--temperature", optarg, 0, 5000, "330")) < 0) return -1; o->temperature_mv = (int)v; break;
         case 'G': if ((v = number("--gdb", optarg, 1, 65535, "1234")) < 0) return -1; o->gdb_port = (int)v; break;
         case 'W': o->vcd = optarg; break;
+        case 'O':
+            if (o->n_ohc == MAX_OHC_MESSAGES) {
+                fprintf(stderr, "openswarm-sim: at most %d --ohc messages\n", MAX_OHC_MESSAGES);
+                return -1;
+            }
+            if (ohc_parse(optarg, &o->ohc[o->n_ohc++]) != 0) return -1;
+            break;
         case 'h': usage(stdout); exit(0);
         default: usage(stderr); return -1;
         }

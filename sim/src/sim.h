@@ -24,8 +24,15 @@
 #define GPIOR2_ADDR 0x4B
 #define MAX_WATCHED_IRQS 8
 #define MAX_ROBOTS 64
+#define MAX_OHC_MESSAGES 16
 
 enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4 };
+
+/* A system message the overhead controller broadcasts at a time. */
+typedef struct ohc_message {
+    double seconds;
+    uint8_t type;
+} ohc_message;
 
 typedef struct options {
     const char *elf;
@@ -43,6 +50,8 @@ typedef struct options {
     int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
     int distance_mm;    /* between every two robots */
+    ohc_message ohc[MAX_OHC_MESSAGES];
+    int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
 } options;
 
@@ -109,6 +118,10 @@ void ir_channel_attach(robot *all, int n, int distance_mm);
 /* The readings that model, for the calibration tables a robot keeps. */
 int ir_high_gain_reading(int mm);
 int ir_low_gain_reading(int mm);
+
+/* overhead_controller.c: system messages broadcast at given times */
+int ohc_parse(const char *text, ohc_message *m);
+void ohc_attach(robot *all, int n, const options *o);
 
 /* debug.c: avr-gdb and GTKWave */
 int debug_attach(robot *r, const options *o);

@@ -35,6 +35,7 @@ message_tx_success_t kilo_message_tx_success = no_tx_success;
 
 static void (*user_setup)(void);
 static void (*user_loop)(void);
+static sys_pid program_pid = SYS_PID_NONE; /* the thread running setup() and loop() */
 
 /* kilo_ticks advance TICKS_PER_SEC times a second, from the 1 ms tick:
  * every millisecond adds TICKS_PER_SEC thousandths of a tick. */
@@ -67,15 +68,44 @@ static void program(void *arg) {
     for (;;) user_loop();
 }
 
+static void program_start(void) {
+    if (Sys_Get_ProcessState(program_pid, 0) == SYS_OK) return; /* already running */
+    program_pid = SYS_PID_NONE;
+    Sys_Start_Process_Ex(program, 0, KILOLIB_LOOP_STACK, 0, &program_pid);
+}
+
+/* Stopped by the overhead controller: the program ends, the robot goes
+ * still and dark until the next RUN starts it again from setup(). */
+static void program_stop(void) {
+    if (program_pid != SYS_PID_NONE) Sys_Kill_Process(program_pid);
+    program_pid = SYS_PID_NONE;
+    kilobot_motors_apply(0, 0);
+    kilobot_led_apply(0);
+}
+
+/* The overhead controller's messages. Boot loading, charging, voltage
+ * display and calibration are not handled (they are ignored). */
+static void system_message(uint8_t type) {
+    switch (type) {
+    case RUN: program_start(); break;
+    case SLEEP:
+    case RESET: program_stop(); break;
+    default: break;
+    }
+}
+
 /* Messages from other robots reach kilo_message_rx; the overhead
- * controller's system messages (types from 0x80) are the kernel's. */
+ * controller's system messages (types from 0x80) are kilolib's own. */
 static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d) {
     (void)pid;
     (void)e;
     const kilobot_ir_rx *rx = d->value;
     message_t msg;
     memcpy(msg.rawdata, rx->frame, sizeof msg.rawdata);
-    if (msg.type >= SPECIAL) return true;
+    if (msg.type >= SPECIAL) {
+        system_message(msg.type);
+        return true;
+    }
     distance_measurement_t dist = {rx->low_gain, rx->high_gain};
     kilo_message_rx(&msg, &dist);
     return true;
@@ -108,7 +138,7 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     tick_fraction = 0;
     kilobot_tick_hook = count_kilo_ticks;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
-    Sys_Start_Process_Ex(program, 0, KILOLIB_LOOP_STACK, 0, 0);
+    program_start();
     Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
