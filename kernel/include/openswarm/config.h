@@ -4,7 +4,9 @@
  * The kernel never allocates at run time: each table below is a static
  * array whose size is fixed here. An application overrides any value by
  * defining OS_CONFIG_FILE (e.g. -DOS_CONFIG_FILE='"app_config.h"'); the
- * openswarm tool generates that header from openswarm.json.
+ * openswarm tool generates that header from openswarm.json. Next come the
+ * port's defaults (openswarm/port_config.h: what fits the robot), then the
+ * generic ones below.
  */
 #ifndef OPENSWARM_CONFIG_H
 #define OPENSWARM_CONFIG_H
@@ -12,6 +14,7 @@
 #ifdef OS_CONFIG_FILE
 #include OS_CONFIG_FILE
 #endif
+#include "openswarm/port_config.h"
 
 /* Threads, including the system thread (pid 0). At most 16. */
 #ifndef OS_CFG_MAX_THREADS

@@ -1,0 +1,24 @@
+// Building an app's firmware image (shared by build and run).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "../paths.hpp"
+
+namespace openswarm {
+
+struct BuildResult {
+    std::filesystem::path image;
+    unsigned flash = 0, ram = 0; // bytes used
+    std::string port;
+};
+
+// Configure and build the app in dir for port ("" = the app's own);
+// prints progress, and errors ending with what to do. nullopt on failure,
+// with exit_code set.
+std::optional<BuildResult> build_app(const Paths &paths, const std::filesystem::path &dir,
+                                     const std::string &port);
+
+}  // namespace openswarm

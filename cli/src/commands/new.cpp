@@ -1,0 +1,127 @@
+// openswarm new NAME --template T --port P: scaffold an app folder.
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "../ports.hpp"
+#include "../suggest.hpp"
+#include "../templates.hpp"
+#include "commands.hpp"
+
+namespace fs = std::filesystem;
+
+namespace openswarm {
+
+namespace {
+
+struct NewOptions {
+    std::string name;
+    std::string template_name = "blinky";
+    std::string port = "kilobot";
+    std::string parent = ".";
+    bool force = false;
+};
+
+std::string substitute(std::string text, const NewOptions &o) {
+    for (const auto &[key, value] : {std::pair<std::string, std::string>{"{{name}}", o.name},
+                                     {"{{port}}", o.port}}) {
+        for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
+            text.replace(at, key.size(), value);
+    }
+    return text;
+}
+
+// Copy the template into dir (a fresh, empty folder).
+void copy_template(const TemplateInfo &t, const fs::path &dir, const NewOptions &o) {
+    for (const auto &entry : fs::recursive_directory_iterator(t.dir)) {
+        fs::path relative = fs::relative(entry.path(), t.dir);
+        if (relative == "template.json") continue;
+        if (entry.is_directory()) {
+            fs::create_directories(dir / relative);
+            continue;
+        }
+        std::ifstream in(entry.path(), std::ios::binary);
+        std::stringstream content;
+        content << in.rdbuf();
+        std::ofstream out(dir / relative, std::ios::binary);
+        out << substitute(content.str(), o);
+        if (!out) throw std::runtime_error("cannot write " + (dir / relative).string());
+    }
+}
+
+const TemplateInfo *find_template(const std::vector<TemplateInfo> &all, const std::string &name) {
+    for (const auto &t : all)
+        if (t.name == name) return &t;
+    return nullptr;
+}
+
+int run_new(const NewOptions &o, const Paths &paths) {
+    if (!std::regex_match(o.name, std::regex("[A-Za-z][A-Za-z0-9_]*"))) {
+        report("'" + o.name + "' is not a usable app name: use letters, digits and _ "
+               "(starting with a letter), e.g. `openswarm new my_robot`");
+        return EXIT_USAGE;
+    }
+    auto all = list_templates(paths.templates());
+    std::vector<std::string> names;
+    for (const auto &t : all) names.push_back(t.name);
+    const TemplateInfo *t = find_template(all, o.template_name);
+    if (t == nullptr) {
+        std::string hint = nearest(o.template_name, names);
+        report("unknown template '" + o.template_name + "'; templates: " + join(names) +
+               (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+               "; `openswarm templates` describes them");
+        return EXIT_USAGE;
+    }
+    if (!is_port(o.port)) {
+        std::string hint = nearest(o.port, port_names());
+        report("unknown port '" + o.port + "'; ports: " + join(port_names()) +
+               (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+        return EXIT_USAGE;
+    }
+    if (std::find(t->ports.begin(), t->ports.end(), o.port) == t->ports.end()) {
+        report("template '" + t->name + "' does not build for port '" + o.port +
+               "'; it builds for: " + join(t->ports));
+        return EXIT_USAGE;
+    }
+    fs::path dir = fs::path(o.parent) / o.name;
+    if (fs::exists(dir) && !o.force) {
+        report(dir.string() + " already exists; pick another name, or pass --force to replace it");
+        return EXIT_USAGE;
+    }
+    // Build the app beside its final place and move it in at the end, so a
+    // failure leaves nothing half-made.
+    fs::path staging = fs::path(o.parent) / ("." + o.name + ".openswarm-new");
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    try {
+        fs::create_directories(staging);
+        copy_template(*t, staging, o);
+        if (fs::exists(dir)) fs::remove_all(dir);
+        fs::rename(staging, dir);
+    } catch (const std::exception &e) {
+        fs::remove_all(staging, ec);
+        report(std::string("could not create ") + dir.string() + ": " + e.what() +
+               "; check that the folder is writable");
+        return EXIT_FAILED;
+    }
+    std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build && "
+                "openswarm run\n",
+                dir.string().c_str(), t->name.c_str(), o.port.c_str(), dir.string().c_str());
+    return EXIT_OK;
+}
+
+}  // namespace
+
+void add_new_command(CLI::App &app, const Paths &paths) {
+    auto o = std::make_shared<NewOptions>();
+    CLI::App *cmd = app.add_subcommand("new", "Create an app folder from a template");
+    cmd->add_option("name", o->name, "the app's name (and folder)")->required();
+    cmd->add_option("-t,--template", o->template_name, "template to start from (openswarm templates)")
+        ->capture_default_str();
+    cmd->add_option("-p,--port", o->port, "robot to build for (openswarm ports)")->capture_default_str();
+    cmd->add_option("-C,--directory", o->parent, "where to create the folder")->capture_default_str();
+    cmd->add_flag("-f,--force", o->force, "replace an existing folder of that name");
+    cmd->callback([o, &paths] { exit_code = run_new(*o, paths); });
+}
+
+}  // namespace openswarm

@@ -1,0 +1,59 @@
+// openswarm run: build the app, then run it in the simulator.
+#include "../process.hpp"
+#include "build.hpp"
+#include "commands.hpp"
+
+namespace openswarm {
+
+namespace {
+
+struct RunOptions {
+    std::string dir = ".";
+    std::string port;
+    std::string time = "10";
+    int robots = 1;
+    int distance = 50;
+    int gdb = 0;
+    std::string vcd;
+};
+
+int run_app(const RunOptions &o, const Paths &paths) {
+    auto built = build_app(paths, o.dir, o.port);
+    if (!built) return exit_code;
+    if (paths.simulator.empty()) {
+        report("openswarm-sim was not found next to this tool; build it with "
+               "`cmake --build <openswarm>/build --target openswarm-sim`");
+        return EXIT_FAILED;
+    }
+    std::string seconds = o.time;
+    if (!seconds.empty() && seconds.back() == 's') seconds.pop_back();
+    std::vector<std::string> argv = {paths.simulator.string(), "--trace", "--time", seconds,
+                                     "--robots", std::to_string(o.robots),
+                                     "--distance", std::to_string(o.distance)};
+    if (o.gdb != 0) argv.insert(argv.end(), {"--gdb", std::to_string(o.gdb)});
+    if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
+    argv.push_back(built->image.string());
+    std::printf("Running %s in the simulator for %s s\n", built->image.filename().string().c_str(),
+                seconds.c_str());
+    int status = run_program(argv);
+    return status == 0 ? EXIT_OK : EXIT_FAILED;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App &app, const Paths &paths) {
+    auto o = std::make_shared<RunOptions>();
+    CLI::App *cmd = app.add_subcommand("run", "Build the app and run it in the simulator");
+    cmd->add_option("-t,--time", o->time, "simulated time, seconds (e.g. 10 or 2.5s)")->capture_default_str();
+    cmd->add_option("-n,--robots", o->robots, "robots running the app together")
+        ->check(CLI::Range(1, 64))->capture_default_str();
+    cmd->add_option("-d,--distance", o->distance, "millimetres between every two robots")
+        ->check(CLI::Range(10, 1000))->capture_default_str();
+    cmd->add_option("--gdb", o->gdb, "wait for avr-gdb on this TCP port")->check(CLI::Range(1, 65535));
+    cmd->add_option("--vcd", o->vcd, "record pins and motors into this GTKWave file");
+    cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
+    cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
+    cmd->callback([o, &paths] { exit_code = run_app(*o, paths); });
+}
+
+}  // namespace openswarm

@@ -1,0 +1,40 @@
+// openswarm: scaffold, build and run swarm-robot apps.
+#include <cstdio>
+
+#include "commands/commands.hpp"
+
+namespace openswarm {
+
+int exit_code = EXIT_OK;
+
+void report(const std::string &message) { std::fprintf(stderr, "openswarm: %s\n", message.c_str()); }
+
+}  // namespace openswarm
+
+int main(int argc, char **argv) {
+    using namespace openswarm;
+    CLI::App app{"openswarm: scaffold, build and run apps for swarm robots on the OpenSwarm kernel"};
+    app.set_version_flag("-V,--version", "openswarm " OPENSWARM_VERSION);
+    app.require_subcommand(1);
+    app.footer("Exit status: 0 done, 1 a build or run failed, 2 bad usage or configuration.\n"
+               "Start with: openswarm new my_robot --template blinky");
+    Paths paths;
+    try {
+        paths = locate_paths(argv[0]);
+    } catch (const std::exception &e) {
+        report(e.what());
+        return EXIT_USAGE;
+    }
+    add_new_command(app, paths);
+    add_build_command(app, paths);
+    add_run_command(app, paths);
+    add_ports_command(app, paths);
+    add_templates_command(app, paths);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        int rc = app.exit(e);
+        return rc == 0 ? EXIT_OK : EXIT_USAGE;
+    }
+    return exit_code;
+}

@@ -1,0 +1,39 @@
+/* Kilobot port: pool sizes that fit 2 KB of RAM with the robot's devices
+ * (LED, motors, IR: 16-byte values) and kilolib's two threads (192 + 64
+ * bytes of stack), leaving about 900 bytes to the main stack. An
+ * application overrides any of them (OS_CONFIG_FILE). */
+#ifndef OPENSWARM_PORT_CONFIG_H
+#define OPENSWARM_PORT_CONFIG_H
+
+#ifndef OS_CFG_MAX_THREADS
+#define OS_CFG_MAX_THREADS 4
+#endif
+#ifndef OS_CFG_STACK_BLOCK_BYTES
+#define OS_CFG_STACK_BLOCK_BYTES 16
+#endif
+#ifndef OS_CFG_DEFAULT_STACK_BYTES
+#define OS_CFG_DEFAULT_STACK_BYTES 96
+#endif
+#ifndef OS_CFG_STACK_POOL_BYTES
+#define OS_CFG_STACK_POOL_BYTES 448
+#endif
+#ifndef OS_CFG_MAX_EVENTS
+#define OS_CFG_MAX_EVENTS 12
+#endif
+#ifndef OS_CFG_EVENT_DATA_BYTES
+#define OS_CFG_EVENT_DATA_BYTES 96
+#endif
+#ifndef OS_CFG_MAX_SUBSCRIPTIONS
+#define OS_CFG_MAX_SUBSCRIPTIONS 6
+#endif
+#ifndef OS_CFG_EVENT_QUEUE_BYTES
+#define OS_CFG_EVENT_QUEUE_BYTES 48
+#endif
+#ifndef OS_CFG_MAX_DEVICES
+#define OS_CFG_MAX_DEVICES 3
+#endif
+#ifndef OS_CFG_HAL_MAX_VALUE
+#define OS_CFG_HAL_MAX_VALUE 16
+#endif
+
+#endif

@@ -1,0 +1,44 @@
+# The OpenSwarm CMake package. An application's CMakeLists.txt:
+#
+#   cmake_minimum_required(VERSION 3.20)
+#   project(blinky C ASM)
+#   find_package(OpenSwarm REQUIRED)          # -DOpenSwarm_DIR=<openswarm>/sdk/cmake
+#   openswarm_add_firmware(blinky PORT kilobot SOURCES main.c)
+#
+# For PORT kilobot, configure with the robot's toolchain:
+#   -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/kilobot/cmake/avr-gcc.cmake
+# (the openswarm tool does both for you).
+
+get_filename_component(OPENSWARM_SDK_ROOT "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
+include(${OPENSWARM_SDK_ROOT}/cmake/OpenSwarmKernel.cmake)
+set(OpenSwarm_FOUND TRUE)
+
+# openswarm_add_firmware(<name> PORT <kilobot|host> SOURCES <files...> [CONFIG <header>])
+# Builds the kernel for the port and configuration, and the application
+# against it: <name>.elf for a robot, <name> for the host.
+function(openswarm_add_firmware name)
+  cmake_parse_arguments(F "" "PORT;CONFIG" "SOURCES" ${ARGN})
+  if(NOT F_PORT)
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT is required (kilobot or host)")
+  endif()
+  if(NOT F_SOURCES)
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): SOURCES is required")
+  endif()
+  if(F_PORT STREQUAL "kilobot" AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "avr")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT kilobot needs the AVR toolchain: "
+      "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/kilobot/cmake/avr-gcc.cmake "
+      "(or build with `openswarm build`)")
+  endif()
+  set(config_args)
+  if(F_CONFIG)
+    get_filename_component(config "${F_CONFIG}" ABSOLUTE)
+    set(config_args CONFIG ${config})
+  endif()
+  openswarm_add_kernel(${name}_openswarm PORT ${F_PORT} ${config_args})
+  add_executable(${name} ${F_SOURCES})
+  target_link_libraries(${name} PRIVATE ${name}_openswarm)
+  if(F_PORT STREQUAL "kilobot")
+    add_custom_command(TARGET ${name} POST_BUILD
+      COMMAND ${CMAKE_SIZE} --format=avr --mcu=${OPENSWARM_MCU} $<TARGET_FILE:${name}>)
+  endif()
+endfunction()

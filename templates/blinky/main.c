@@ -1,0 +1,39 @@
+/* {{name}}: a thread blinks the LED through the HAL's LED device; an event
+ * handler, run by the kernel between threads, counts the blinks. */
+#include "openswarm/kernel.h"
+#include "openswarm/kilobot.h"
+
+#define EV_BLINK SYS_EVENT_FIRST_FREE
+
+static uint16_t blinks;
+
+static bool count_blink(sys_pid pid, sys_event_id event, const sys_event_data *data) {
+    (void)pid;
+    (void)event;
+    (void)data;
+    blinks++;
+    return true; /* stay subscribed */
+}
+
+static void blinker(void) {
+    for (;;) {
+        uint8_t colour = KILOBOT_RGB(0, 3, 0);
+        Sys_Send_Event(KILOBOT_EVENT_LED, &colour, 1);
+        Sys_Send_Event(EV_BLINK, NULL, 0);
+        Sys_Sleep(250);
+        colour = KILOBOT_RGB(0, 0, 0);
+        Sys_Send_Event(KILOBOT_EVENT_LED, &colour, 1);
+        Sys_Sleep(250);
+    }
+}
+
+int main(void) {
+    Sys_Init_Kernel();
+    kilobot_devices_init();
+    Sys_Register_Event_Sized(EV_BLINK, 0);
+    Sys_Subscribe_to_Event(EV_BLINK, SYS_PID_SYSTEM, count_blink, NULL);
+    Sys_Start_Process(blinker);
+    Sys_Start_Kernel();
+    Sys_Run_SystemThread();
+    return 0;
+}

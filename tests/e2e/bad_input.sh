@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# End to end: each kind of bad input gets its message and exit status, and
+# the file system is left as it was.
+#   bad_input.sh OPENSWARM WORKDIR
+set -uo pipefail
+openswarm=$1 work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+passed=0 failed=0
+
+# expect STATUS REGEX COMMAND...: run it, check the status and stderr.
+expect() {
+    local status=$1 regex=$2
+    shift 2
+    local err
+    err=$("$@" 2>&1 >/dev/null)
+    local got=$?
+    if [ "$got" -eq "$status" ] && printf '%s' "$err" | grep -Eq "$regex"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAILED: $* -> exit $got (expected $status), stderr:"
+        printf '%s\n' "$err"
+    fi
+}
+
+snapshot() { find . -printf '%p %s\n' | sort; }
+
+before=$(snapshot)
+expect 2 "unknown template 'blinki'.*did you mean 'blinky'" "$openswarm" new a --template blinki
+expect 2 "unknown port 'kilobo'.*did you mean 'kilobot'" "$openswarm" new a --port kilobo
+expect 2 "not a usable app name" "$openswarm" new 9lives
+expect 2 "openswarm.json: not found.*openswarm new" "$openswarm" build
+expect 2 "RequiredError|name is required" "$openswarm" new
+[ "$before" = "$(snapshot)" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: a refused command changed the folder"; }
+
+"$openswarm" new keep >/dev/null
+echo "my work" > keep/notes.txt
+before=$(snapshot)
+expect 2 "keep already exists.*--force" "$openswarm" new keep
+[ "$before" = "$(snapshot)" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: new overwrote an existing folder"; }
+
+cat > keep/openswarm.json <<'JSON'
+{
+  "name": "keep",
+  "port": "kilobot",,
+}
+JSON
+expect 2 "keep/openswarm.json:3:21: invalid JSON" "$openswarm" build -C keep
+err=$("$openswarm" build -C keep 2>&1 >/dev/null)
+printf '%s\n' "$err" | grep -q '^      "port": "kilobot",,$' && printf '%s\n' "$err" | grep -q '^                        \^$' \
+    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: no caret under the error:"; printf '%s\n' "$err"; }
+
+printf '{"name": "keep", "port": "kilobott"}' > keep/openswarm.json
+expect 2 "\"port\": unknown port \"kilobott\".*did you mean \"kilobot\"" "$openswarm" build -C keep
+printf '{"name": "keep"}' > keep/openswarm.json
+expect 2 "missing \"port\"" "$openswarm" build -C keep
+printf '{"name": 7, "port": "kilobot"}' > keep/openswarm.json
+expect 2 "\"name\" is number, expected the app's name" "$openswarm" build -C keep
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
