@@ -18,6 +18,8 @@ void add_build_command(CLI::App &app, const Paths &paths);
 void add_run_command(CLI::App &app, const Paths &paths);
 void add_ports_command(CLI::App &app, const Paths &paths);
 void add_templates_command(CLI::App &app, const Paths &paths);
+void add_doctor_command(CLI::App &app, const Paths &paths);
+void add_config_command(CLI::App &app, const Paths &paths);
 
 // "openswarm: <message>" on standard error.
 void report(const std::string &message);

@@ -1,0 +1,37 @@
+// openswarm config check|show: validate openswarm.json and print what it
+// resolves to.
+#include "../app_config.hpp"
+#include "../ports.hpp"
+#include "commands.hpp"
+
+namespace openswarm {
+
+void add_config_command(CLI::App &app, const Paths &) {
+    auto dir = std::make_shared<std::string>(".");
+    CLI::App *cmd = app.add_subcommand("config", "Check or show the app's openswarm.json");
+    cmd->require_subcommand(1);
+    for (const char *name : {"check", "show"}) {
+        bool show = std::string(name) == "show";
+        CLI::App *sub = cmd->add_subcommand(name, show ? "Print what openswarm.json resolves to"
+                                                       : "Validate openswarm.json");
+        sub->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
+        sub->callback([dir, show] {
+            try {
+                AppConfig c = load_app_config(*dir);
+                if (show) {
+                    const PortInfo &p = port_info(c.port);
+                    std::printf("name  %s\nport  %s (%s)\nimage build/%s/%s.elf\n", c.name.c_str(),
+                                c.port.c_str(), p.description.c_str(), c.port.c_str(), c.name.c_str());
+                } else {
+                    std::printf("%s is valid\n", c.file.string().c_str());
+                }
+                exit_code = EXIT_OK;
+            } catch (const ConfigError &e) {
+                report(e.what());
+                exit_code = EXIT_USAGE;
+            }
+        });
+    }
+}
+
+}  // namespace openswarm

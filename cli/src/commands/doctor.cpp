@@ -1,0 +1,60 @@
+// openswarm doctor: is every tool OpenSwarm needs here? Prints the command
+// that installs what is missing.
+#include <filesystem>
+
+#include "../suggest.hpp"
+#include "commands.hpp"
+
+namespace fs = std::filesystem;
+
+namespace openswarm {
+
+namespace {
+
+struct Check {
+    std::string what;
+    bool ok;
+    std::string package; // Debian package that provides it
+};
+
+std::vector<Check> checks(const Paths &paths) {
+    return {
+        {"cmake", find_program("cmake").has_value(), "cmake"},
+        {"ninja (faster builds)", find_program("ninja").has_value(), "ninja-build"},
+        {"avr-gcc (Kilobot firmware)", find_program("avr-gcc").has_value(), "gcc-avr"},
+        {"avr-size", find_program("avr-size").has_value(), "binutils-avr"},
+        {"avr-libc headers", fs::exists("/usr/lib/avr/include/avr/io.h"), "avr-libc"},
+        {"openswarm-sim (the simulator)", !paths.simulator.empty(), ""},
+        {"OpenSwarm SDK and templates at " + paths.root.string(),
+         fs::exists(paths.sdk_cmake() / "OpenSwarmConfig.cmake"), ""},
+    };
+}
+
+}  // namespace
+
+void add_doctor_command(CLI::App &app, const Paths &paths) {
+    CLI::App *cmd = app.add_subcommand("doctor", "Check the tools OpenSwarm needs");
+    cmd->callback([&paths] {
+        std::vector<std::string> missing_packages;
+        bool all_ok = true;
+        for (const auto &c : checks(paths)) {
+            std::printf("%s %s\n", c.ok ? "ok     " : "MISSING", c.what.c_str());
+            if (c.ok) continue;
+            all_ok = false;
+            if (!c.package.empty()) missing_packages.push_back(c.package);
+        }
+        if (all_ok) {
+            std::printf("Everything is in place.\n");
+            exit_code = EXIT_OK;
+            return;
+        }
+        if (!missing_packages.empty())
+            std::printf("Install what is missing with:\n    sudo apt-get install %s\n",
+                        join(missing_packages, " ").c_str());
+        if (paths.simulator.empty())
+            std::printf("Build the simulator with: cmake --build <openswarm>/build --target openswarm-sim\n");
+        exit_code = EXIT_FAILED;
+    });
+}
+
+}  // namespace openswarm

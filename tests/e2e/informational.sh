@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# End to end: the commands that tell rather than do.
+#   informational.sh OPENSWARM WORKDIR
+set -uo pipefail
+openswarm=$1 work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+passed=0 failed=0
+check() { # check DESCRIPTION EXPECTED_STATUS REGEX COMMAND...
+    local what=$1 status=$2 regex=$3
+    shift 3
+    local out
+    out=$("$@" 2>&1)
+    local got=$?
+    if [ "$got" -eq "$status" ] && printf '%s' "$out" | grep -Ezq -- "$regex"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAILED: $what: exit $got (expected $status):"
+        printf '%s\n' "$out"
+    fi
+}
+check "version" 0 "openswarm [0-9]+\.[0-9]+\.[0-9]+" "$openswarm" --version
+check "help names every command" 0 "new.*build.*run.*ports.*templates.*config.*doctor" "$openswarm" --help
+check "help of a command" 0 "--template" "$openswarm" new --help
+check "ports" 0 "kilobot +Kilobot" "$openswarm" ports
+check "templates" 0 "blinky .*\[kilobot\]" "$openswarm" templates
+check "doctor, all there" 0 "Everything is in place" "$openswarm" doctor
+mkdir empty-path
+check "doctor, nothing there" 1 "sudo apt-get install cmake ninja-build gcc-avr binutils-avr" \
+    env PATH="$PWD/empty-path" "$openswarm" doctor
+"$openswarm" new shown >/dev/null
+check "config show" 0 "port +kilobot" "$openswarm" config show -C shown
+check "config check" 0 "shown/openswarm.json is valid" "$openswarm" config check -C shown
+check "config check, bad file" 2 "missing \"port\"" sh -c "printf '{\"name\": \"x\"}' > shown/openswarm.json && \"$openswarm\" config check -C shown"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
