@@ -1,6 +1,8 @@
 #include "app_config.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "ports.hpp"
@@ -31,17 +33,153 @@ std::string located_message(const fs::path &file, const std::string &text, size_
     return out.str();
 }
 
-static const json &require(const json &doc, const fs::path &file, const char *key,
-                           json::value_t type, const char *what) {
-    if (!doc.contains(key))
-        throw ConfigError(file.string() + ": missing \"" + key + "\": expected " + what +
-                          "; add it, e.g. \"" + key + "\": " +
-                          (type == json::value_t::string ? "\"...\"" : "..."));
-    const json &v = doc.at(key);
-    if (v.type() != type)
-        throw ConfigError(file.string() + ": \"" + key + "\" is " + v.type_name() + ", expected " +
-                          what);
-    return v;
+namespace {
+
+// The kernel settings openswarm.json may give, with their config.h names
+// and allowed ranges.
+struct KernelSetting {
+    const char *key, *macro;
+    long min, max;
+};
+const KernelSetting kernel_settings[] = {
+    {"max_threads", "OS_CFG_MAX_THREADS", 2, 16},
+    {"stack_pool", "OS_CFG_STACK_POOL_BYTES", 16, 60000},
+    {"default_stack", "OS_CFG_DEFAULT_STACK_BYTES", 16, 4096},
+    {"max_events", "OS_CFG_MAX_EVENTS", 2, 255},
+    {"event_data", "OS_CFG_EVENT_DATA_BYTES", 0, 60000},
+    {"max_subscriptions", "OS_CFG_MAX_SUBSCRIPTIONS", 1, 254},
+    {"event_queue", "OS_CFG_EVENT_QUEUE_BYTES", 8, 255},
+    {"max_devices", "OS_CFG_MAX_DEVICES", 1, 32},
+    {"hal_max_value", "OS_CFG_HAL_MAX_VALUE", 1, 253},
+};
+
+const std::map<std::string, unsigned> payload_types = {
+    {"none", 0}, {"int8", 1}, {"uint8", 1}, {"int16", 2}, {"uint16", 2}, {"int32", 4}, {"uint32", 4},
+};
+
+// Errors name the key's path, what was expected and what was found.
+[[noreturn]] void fail(const fs::path &file, const std::string &path, const std::string &message) {
+    throw ConfigError(file.string() + ": " + (path.empty() ? "" : "\"" + path + "\": ") + message);
+}
+
+std::string found(const json &v) {
+    std::string text = v.dump();
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    return std::string(v.type_name()) + " " + text;
+}
+
+void check_keys(const fs::path &file, const std::string &path, const json &object,
+                const std::vector<std::string> &allowed) {
+    for (const auto &[key, value] : object.items()) {
+        (void)value;
+        if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+        std::string hint = nearest(key, allowed);
+        fail(file, path.empty() ? key : path + "." + key,
+             "unknown key; expected one of " + join(allowed) +
+                 (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+    }
+}
+
+const json &require(const fs::path &file, const json &doc, const std::string &key) {
+    if (!doc.contains(key)) fail(file, key, "missing; add it, e.g. \"" + key + "\": \"...\"");
+    return doc.at(key);
+}
+
+std::string string_at(const fs::path &file, const std::string &path, const json &v, const char *what) {
+    if (!v.is_string()) fail(file, path, std::string("expected ") + what + ", found " + found(v));
+    return v.get<std::string>();
+}
+
+long number_at(const fs::path &file, const std::string &path, const json &v, long min, long max) {
+    if (!v.is_number_integer() || v.get<long>() < min || v.get<long>() > max)
+        fail(file, path, "expected a whole number " + std::to_string(min) + ".." + std::to_string(max) +
+                             ", found " + found(v));
+    return v.get<long>();
+}
+
+std::string identifier_at(const fs::path &file, const std::string &path, const json &v) {
+    std::string id = string_at(file, path, v, "a C identifier");
+    if (!std::regex_match(id, std::regex("[A-Za-z_][A-Za-z0-9_]*")))
+        fail(file, path, "\"" + id + "\" is not a C identifier (letters, digits, _)");
+    return id;
+}
+
+void load_kernel(const fs::path &file, const json &k, AppConfig &c) {
+    if (!k.is_object()) fail(file, "kernel", "expected an object { ... }, found " + found(k));
+    std::vector<std::string> allowed = {"scheduler", "time_slice_ms"};
+    for (const auto &s : kernel_settings) allowed.push_back(s.key);
+    check_keys(file, "kernel", k, allowed);
+    for (const auto &s : kernel_settings)
+        if (k.contains(s.key)) c.kernel[s.key] = number_at(file, std::string("kernel.") + s.key, k[s.key], s.min, s.max);
+    if (k.contains("time_slice_ms")) c.time_slice_ms = number_at(file, "kernel.time_slice_ms", k["time_slice_ms"], 1, 1000);
+    if (k.contains("scheduler")) {
+        c.scheduler = string_at(file, "kernel.scheduler", k["scheduler"], "\"round-robin\" or \"priority\"");
+        if (c.scheduler != "round-robin" && c.scheduler != "priority") {
+            std::string hint = nearest(c.scheduler, {"round-robin", "priority"});
+            fail(file, "kernel.scheduler", "unknown scheduler \"" + c.scheduler +
+                     "\"; expected \"round-robin\" or \"priority\"" +
+                     (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+        }
+    }
+}
+
+void load_events(const fs::path &file, const json &list, AppConfig &c) {
+    if (!list.is_array()) fail(file, "events", "expected a list [ {\"name\": ...}, ... ], found " + found(list));
+    for (size_t i = 0; i < list.size(); i++) {
+        std::string path = "events[" + std::to_string(i) + "]";
+        const json &e = list[i];
+        if (!e.is_object()) fail(file, path, "expected {\"name\": ..., \"type\": ...}, found " + found(e));
+        check_keys(file, path, e, {"name", "type", "size"});
+        EventConfig ev;
+        ev.name = identifier_at(file, path + ".name", require(file, e, "name"));
+        for (const auto &other : c.events)
+            if (other.name == ev.name) fail(file, path + ".name", "\"" + ev.name + "\" is declared twice");
+        if (e.contains("type") && e.contains("size")) fail(file, path, "give \"type\" or \"size\", not both");
+        if (e.contains("type")) {
+            std::string t = string_at(file, path + ".type", e["type"], "a payload type");
+            auto it = payload_types.find(t);
+            if (it == payload_types.end()) {
+                std::vector<std::string> names;
+                for (const auto &[n, size] : payload_types) { (void)size; names.push_back(n); }
+                std::string hint = nearest(t, names);
+                fail(file, path + ".type", "unknown type \"" + t + "\"; expected one of " + join(names) +
+                         (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+            }
+            ev.size = it->second;
+        } else if (e.contains("size")) {
+            ev.size = (unsigned)number_at(file, path + ".size", e["size"], 0, 253);
+        }
+        c.events.push_back(ev);
+    }
+}
+
+void load_threads(const fs::path &file, const json &list, AppConfig &c) {
+    if (!list.is_array()) fail(file, "threads", "expected a list [ {\"entry\": ...}, ... ], found " + found(list));
+    for (size_t i = 0; i < list.size(); i++) {
+        std::string path = "threads[" + std::to_string(i) + "]";
+        const json &t = list[i];
+        if (!t.is_object()) fail(file, path, "expected {\"entry\": ..., \"stack\": ...}, found " + found(t));
+        check_keys(file, path, t, {"entry", "stack", "priority"});
+        ThreadConfig th;
+        th.entry = identifier_at(file, path + ".entry", require(file, t, "entry"));
+        if (t.contains("stack")) th.stack = (unsigned)number_at(file, path + ".stack", t["stack"], 16, 4096);
+        if (t.contains("priority")) th.priority = (unsigned)number_at(file, path + ".priority", t["priority"], 0, 255);
+        c.threads.push_back(th);
+    }
+    auto max_threads = c.kernel.find("max_threads");
+    if (max_threads != c.kernel.end() && (long)c.threads.size() + 1 > max_threads->second)
+        fail(file, "threads", std::to_string(c.threads.size()) + " threads and the system thread need "
+             "kernel.max_threads >= " + std::to_string(c.threads.size() + 1) + ", found " +
+             std::to_string(max_threads->second));
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros() {
+    static std::vector<std::pair<std::string, std::string>> all;
+    if (all.empty())
+        for (const auto &s : kernel_settings) all.emplace_back(s.key, s.macro);
+    return all;
 }
 
 AppConfig load_app_config(const fs::path &dir) {
@@ -65,19 +203,19 @@ AppConfig load_app_config(const fs::path &dir) {
         throw ConfigError(located_message(config.file, text, e.byte > 0 ? e.byte - 1 : 0,
                                           "invalid JSON: " + reason));
     }
-    if (!doc.is_object())
-        throw ConfigError(config.file.string() + ": expected a JSON object { ... }, found " +
-                          std::string(doc.type_name()));
-    config.name = require(doc, config.file, "name", json::value_t::string, "the app's name")
-                      .get<std::string>();
-    config.port = require(doc, config.file, "port", json::value_t::string, "a port name")
-                      .get<std::string>();
+    const fs::path &file = config.file;
+    if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
+    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads"});
+    config.name = identifier_at(file, "name", require(file, doc, "name"));
+    config.port = string_at(file, "port", require(file, doc, "port"), "a port name");
     if (!is_port(config.port)) {
         std::string hint = nearest(config.port, port_names());
-        throw ConfigError(config.file.string() + ": \"port\": unknown port \"" + config.port +
-                          "\"; known: " + join(port_names()) +
-                          (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+        fail(file, "port", "unknown port \"" + config.port + "\"; known: " + join(port_names()) +
+                               (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
     }
+    if (doc.contains("kernel")) load_kernel(file, doc["kernel"], config);
+    if (doc.contains("events")) load_events(file, doc["events"], config);
+    if (doc.contains("threads")) load_threads(file, doc["threads"], config);
     return config;
 }
 

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,11 +17,30 @@ struct ConfigError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+struct EventConfig {
+    std::string name;  // C identifier; the app uses EV_<NAME>
+    unsigned size = 0; // bytes of data
+};
+
+struct ThreadConfig {
+    std::string entry; // void entry(void) in the app's sources
+    unsigned stack = 0; // bytes; 0 = the kernel's default
+    unsigned priority = 0;
+};
+
 struct AppConfig {
     std::filesystem::path file;
     std::string name;
     std::string port;
+    std::map<std::string, long> kernel; // "max_threads" -> 4, ... (only what the file sets)
+    std::string scheduler;              // "" = the kernel's default (round-robin)
+    long time_slice_ms = 0;             // 0 = the kernel's default
+    std::vector<EventConfig> events;
+    std::vector<ThreadConfig> threads;
 };
+
+// (key, config.h macro) of every kernel setting openswarm.json may give.
+const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros();
 
 // Read and validate dir/openswarm.json.
 AppConfig load_app_config(const std::filesystem::path &dir);

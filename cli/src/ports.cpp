@@ -6,7 +6,7 @@ namespace openswarm {
 
 const std::vector<PortInfo> &ports() {
     static const std::vector<PortInfo> all = {
-        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048},
+        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 6, 6 + 4 * 16, 4, 12, 96, 16},
     };
     return all;
 }

@@ -11,6 +11,11 @@ struct PortInfo {
     std::string description;
     unsigned flash_bytes; // of the MCU, 0 for the host
     unsigned ram_bytes;
+    // What the port's own configuration (port_config.h) reserves, so the
+    // tool can size pools for an app's declared threads and events.
+    unsigned device_events;      // event ids before the app's (kernel's 2 + port's)
+    unsigned device_event_bytes; // their data
+    unsigned default_max_threads, default_max_events, default_stack, stack_block;
 };
 
 const std::vector<PortInfo> &ports();

@@ -1,9 +1,10 @@
 /* {{name}}: a thread blinks the LED through the HAL's LED device; an event
- * handler, run by the kernel between threads, counts the blinks. */
+ * handler, run by the kernel between threads, counts the blinks.
+ * openswarm.json declares the thread and the event: `openswarm build`
+ * turns it into openswarm_app.h (EV_BLINK) and openswarm_app_start(). */
 #include "openswarm/kernel.h"
 #include "openswarm/kilobot.h"
-
-#define EV_BLINK SYS_EVENT_FIRST_FREE
+#include "openswarm_app.h"
 
 static uint16_t blinks;
 
@@ -15,7 +16,7 @@ static bool count_blink(sys_pid pid, sys_event_id event, const sys_event_data *d
     return true; /* stay subscribed */
 }
 
-static void blinker(void) {
+void blinker(void) {
     for (;;) {
         uint8_t colour = KILOBOT_RGB(0, 3, 0);
         Sys_Send_Event(KILOBOT_EVENT_LED, &colour, 1);
@@ -30,9 +31,8 @@ static void blinker(void) {
 int main(void) {
     Sys_Init_Kernel();
     kilobot_devices_init();
-    Sys_Register_Event_Sized(EV_BLINK, 0);
+    openswarm_app_start();
     Sys_Subscribe_to_Event(EV_BLINK, SYS_PID_SYSTEM, count_blink, NULL);
-    Sys_Start_Process(blinker);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
     return 0;

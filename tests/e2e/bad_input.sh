@@ -53,9 +53,23 @@ printf '%s\n' "$err" | grep -q '^      "port": "kilobot",,$' && printf '%s\n' "$
 printf '{"name": "keep", "port": "kilobott"}' > keep/openswarm.json
 expect 2 "\"port\": unknown port \"kilobott\".*did you mean \"kilobot\"" "$openswarm" build -C keep
 printf '{"name": "keep"}' > keep/openswarm.json
-expect 2 "missing \"port\"" "$openswarm" build -C keep
+expect 2 "\"port\": missing" "$openswarm" build -C keep
 printf '{"name": 7, "port": "kilobot"}' > keep/openswarm.json
-expect 2 "\"name\" is number, expected the app's name" "$openswarm" build -C keep
+expect 2 "\"name\": expected a C identifier, found number 7" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "evnets": []}' > keep/openswarm.json
+expect 2 "\"evnets\": unknown key.*did you mean \"events\"" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 40}}' > keep/openswarm.json
+expect 2 "\"kernel.max_threads\": expected a whole number 2..16, found number 40" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "kernel": {"scheduler": "priorty"}}' > keep/openswarm.json
+expect 2 "\"kernel.scheduler\": unknown scheduler.*did you mean \"priority\"" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "events": [{"name": "hop", "type": "int61"}]}' > keep/openswarm.json
+expect 2 "\"events\[0\].type\": unknown type \"int61\".*did you mean \"int16\"" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "events": [{"name": "a"}, {"name": "a"}]}' > keep/openswarm.json
+expect 2 "\"events\[1\].name\": \"a\" is declared twice" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 2}, "threads": [{"entry": "a"}, {"entry": "b"}]}' > keep/openswarm.json
+expect 2 "\"threads\": 2 threads and the system thread need kernel.max_threads >= 3, found 2" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "not an identifier"}]}' > keep/openswarm.json
+expect 2 "\"threads\[0\].entry\": \"not an identifier\" is not a C identifier" "$openswarm" build -C keep
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -31,6 +31,6 @@ check "doctor, nothing there" 1 "sudo apt-get install cmake ninja-build gcc-avr 
 "$openswarm" new shown >/dev/null
 check "config show" 0 "port +kilobot" "$openswarm" config show -C shown
 check "config check" 0 "shown/openswarm.json is valid" "$openswarm" config check -C shown
-check "config check, bad file" 2 "missing \"port\"" sh -c "printf '{\"name\": \"x\"}' > shown/openswarm.json && \"$openswarm\" config check -C shown"
+check "config check, bad file" 2 "\"port\": missing" sh -c "printf '{\"name\": \"x\"}' > shown/openswarm.json && \"$openswarm\" config check -C shown"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

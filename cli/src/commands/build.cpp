@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "../app_config.hpp"
+#include "../generate.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
 #include "commands.hpp"
@@ -76,9 +77,20 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir, co
         return std::nullopt;
     }
     fs::path build_dir = dir / "build" / port;
+    fs::path generated = build_dir / "openswarm";
+    config.port = port;
+    try {
+        generate_app_files(config, generated);
+    } catch (const std::exception &e) {
+        report(std::string(e.what()) + "; check that " + build_dir.string() + " is writable");
+        exit_code = EXIT_FAILED;
+        return std::nullopt;
+    }
     std::vector<std::string> configure = {"cmake", "-S", dir.string(), "-B", build_dir.string(),
                                           "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(),
-                                          "-DOPENSWARM_PORT=" + port, "--log-level=WARNING"};
+                                          "-DOPENSWARM_PORT=" + port,
+                                          "-DOPENSWARM_GENERATED_DIR=" + fs::absolute(generated).string(),
+                                          "--log-level=WARNING"};
     if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
     if (port == "kilobot") configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(port).string());
     std::printf("Configuring %s for %s\n", config.name.c_str(), port.c_str());

@@ -1,5 +1,7 @@
 // openswarm config check|show: validate openswarm.json and print what it
 // resolves to.
+#include <cctype>
+
 #include "../app_config.hpp"
 #include "../ports.hpp"
 #include "commands.hpp"
@@ -22,6 +24,19 @@ void add_config_command(CLI::App &app, const Paths &) {
                     const PortInfo &p = port_info(c.port);
                     std::printf("name  %s\nport  %s (%s)\nimage build/%s/%s.elf\n", c.name.c_str(),
                                 c.port.c_str(), p.description.c_str(), c.port.c_str(), c.name.c_str());
+                    std::printf("scheduler %s, time slice %ld ms\n",
+                                c.scheduler.empty() ? "round-robin" : c.scheduler.c_str(),
+                                c.time_slice_ms ? c.time_slice_ms : 10L);
+                    for (const auto &[key, value] : c.kernel) std::printf("kernel.%s %ld\n", key.c_str(), value);
+                    for (size_t i = 0; i < c.events.size(); i++) {
+                        std::string macro = c.events[i].name;
+                        for (auto &ch : macro) ch = (char)std::toupper((unsigned char)ch);
+                        std::printf("event EV_%s (id SYS_EVENT_FIRST_FREE + %zu), %u bytes\n", macro.c_str(), i,
+                                    c.events[i].size);
+                    }
+                    for (const auto &t : c.threads)
+                        std::printf("thread %s, stack %u bytes%s, priority %u\n", t.entry.c_str(), t.stack,
+                                    t.stack ? "" : " (default)", t.priority);
                 } else {
                     std::printf("%s is valid\n", c.file.string().c_str());
                 }
