@@ -43,7 +43,8 @@ function(openswarm_add_kernel target)
   endif()
   add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES})
   target_include_directories(${target} PUBLIC
-    ${OPENSWARM_ROOT}/kernel/include ${OPENSWARM_ROOT}/ports/${K_PORT}/include)
+    ${OPENSWARM_ROOT}/kernel/include ${OPENSWARM_ROOT}/ports/${K_PORT}/include
+    ${OPENSWARM_ROOT}/sdk/include)
   if(K_PORT STREQUAL "kilobot")
     target_include_directories(${target} PUBLIC ${OPENSWARM_ROOT}/ports/kilobot/kilolib/include)
   endif()

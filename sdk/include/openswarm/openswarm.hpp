@@ -1,0 +1,143 @@
+// The C++ API over the kernel's C calls: typed events, functions and
+// lambdas as handlers and conditions, threads, and an RAII critical
+// section. C++14 without the standard library (avr-g++ 5.4 has none), and
+// no cost over the C calls: every wrapper is inline, and a handler given as
+// a template argument is called directly.
+//
+//   constexpr openswarm::Event<int16_t> speed{SYS_EVENT_FIRST_FREE};
+//   speed.enroll();
+//   speed.subscribe<&on_speed>();                      // void on_speed(const int16_t &)
+//   speed.subscribe([](const int16_t &v) { ... });     // a lambda without captures
+//   speed.send(42);
+//   int16_t v; speed.wait(v);
+//   { openswarm::CriticalSection guard; ... }
+#ifndef OPENSWARM_HPP
+#define OPENSWARM_HPP
+
+#include "openswarm/kernel.h"
+
+namespace openswarm {
+
+using Status = sys_status;
+
+// An event whose data is one T (a plain struct or number).
+template <typename T>
+class Event {
+  public:
+    using Handler = void (*)(const T &);
+    using Condition = bool (*)(const T &);
+
+    constexpr explicit Event(sys_event_id id) noexcept : id_(id) {}
+    constexpr sys_event_id id() const noexcept { return id_; }
+
+    // Register the event with room for one T.
+    Status enroll() const noexcept { return Sys_Register_Event_Sized(id_, sizeof(T)); }
+
+    Status send(const T &value) const noexcept { return Sys_Send_Event(id_, &value, sizeof(T)); }
+
+    // Block the calling thread until the next occurrence; its data into out.
+    Status wait(T &out) const noexcept { return Sys_Wait_for_Event(id_, &out, sizeof(T), nullptr); }
+    Status wait(T &out, uint32_t timeout_ms) const noexcept {
+        return Sys_Wait_for_Event_Timeout(id_, timeout_ms, &out, sizeof(T), nullptr);
+    }
+
+    // Block until an occurrence satisfies condition (a function given as a
+    // template argument: called directly).
+    template <Condition condition>
+    Status wait_until(T &out) const noexcept {
+        return Sys_Wait_for_Condition(id_, &check<condition>, &out, sizeof(T), nullptr);
+    }
+
+    // Run handler (a function given as a template argument) for every
+    // occurrence, in the system thread: costs what a C handler costs.
+    template <Handler handler>
+    Status subscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Subscribe_to_Event(id_, pid, &call<handler>, nullptr);
+    }
+    template <Handler handler>
+    Status unsubscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Unsubscribe_from_Event(id_, pid, &call<handler>);
+    }
+
+    // Run a lambda without captures for every occurrence. Each lambda type
+    // keeps its function pointer in one static (2 bytes on the AVR).
+    template <typename Lambda>
+    Status subscribe(Lambda lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        Stored<Lambda>::handler = lambda; // a captureless lambda converts to Handler
+        return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
+    }
+
+    // The data the last occurrence carried, if any is kept.
+    Status last(T &out) const noexcept { return Sys_Get_EventData(id_, &out, sizeof(T), nullptr); }
+
+  private:
+    static const T &value_of(const sys_event_data *d) noexcept { return *static_cast<const T *>(d->value); }
+
+    template <Handler handler>
+    static bool call(sys_pid, sys_event_id, const sys_event_data *d) noexcept {
+        handler(value_of(d));
+        return true;
+    }
+    template <Condition condition>
+    static bool check(const sys_event_data *d) noexcept {
+        return condition(value_of(d));
+    }
+    template <typename Lambda>
+    struct Stored {
+        static Handler handler;
+    };
+    template <typename Lambda>
+    static bool call_stored(sys_pid, sys_event_id, const sys_event_data *d) noexcept {
+        Stored<Lambda>::handler(value_of(d));
+        return true;
+    }
+
+    sys_event_id id_;
+};
+
+template <typename T>
+template <typename Lambda>
+typename Event<T>::Handler Event<T>::Stored<Lambda>::handler = nullptr;
+
+// Threads.
+struct Thread {
+    // Start fn (a function or a lambda without captures) on a stack of
+    // stack_bytes (0: the kernel's default).
+    static Status start(void (*fn)(), uint16_t stack_bytes = 0, uint8_t priority = 0,
+                        sys_pid *pid = nullptr) noexcept {
+        union {
+            void (*plain)();
+            void *erased;
+        } f;
+        f.plain = fn;
+        return Sys_Start_Process_Ex(&run, f.erased, stack_bytes, priority, pid);
+    }
+    static Status yield() noexcept { return Sys_Yield(); }
+    static Status sleep(uint32_t ms) noexcept { return Sys_Sleep(ms); }
+    static sys_pid self() noexcept { return Sys_Get_ProcessID(); }
+
+  private:
+    static void run(void *erased) noexcept {
+        union {
+            void (*plain)();
+            void *erased;
+        } f;
+        f.erased = erased;
+        f.plain();
+    }
+};
+
+// No thread switch and no event dispatch while it lives.
+class CriticalSection {
+  public:
+    CriticalSection() noexcept { Sys_Start_CriticalSection(); }
+    ~CriticalSection() { Sys_End_CriticalSection(); }
+    CriticalSection(const CriticalSection &) = delete;
+    CriticalSection &operator=(const CriticalSection &) = delete;
+};
+
+inline uint32_t now_ms() noexcept { return Sys_Get_SystemTime(); }
+
+}  // namespace openswarm
+
+#endif

@@ -1,0 +1,13 @@
+# Pass if the C++ twin's code (text) is no larger than the C one's.
+foreach(elf C CPP)
+  execute_process(COMMAND avr-size ${${elf}} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "avr-size ${${elf}} failed")
+  endif()
+  string(REGEX MATCH "\n *([0-9]+)" m "${out}")
+  set(${elf}_TEXT ${CMAKE_MATCH_1})
+endforeach()
+message(STATUS "C: ${C_TEXT} bytes of code, C++: ${CPP_TEXT} bytes")
+if(CPP_TEXT GREATER C_TEXT)
+  message(FATAL_ERROR "the C++ SDK costs ${CPP_TEXT} - ${C_TEXT} bytes over the C calls")
+endif()

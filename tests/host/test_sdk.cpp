@@ -1,0 +1,86 @@
+// The C++ SDK on the host port: typed events, handlers as template
+// arguments and as lambdas, conditions, threads, the RAII critical section.
+#include "kernel_fixture.hpp"
+
+#include "openswarm/openswarm.hpp"
+
+using Sdk = KernelTest;
+using openswarm::Event;
+
+struct Reading {
+    int16_t x, y;
+};
+static constexpr Event<Reading> reading{EV_A};
+static constexpr Event<int16_t> number{EV_B};
+
+static std::atomic<int> sum{0};
+static void add(const int16_t &v) { sum += v; }
+static bool over_ten(const int16_t &v) { return v > 10; }
+
+TEST_F(Sdk, TypedEventsReachFunctionAndLambdaHandlers) {
+    sum = 0;
+    static std::atomic<int> last_x{0};
+    last_x = 0;
+    boot([] {
+        EXPECT_STATUS(SYS_OK, reading.enroll());
+        EXPECT_STATUS(SYS_OK, number.enroll());
+        EXPECT_STATUS(SYS_OK, number.subscribe<&add>());
+        EXPECT_STATUS(SYS_E_EXISTS, number.subscribe<&add>()) << "once per (event, thread)";
+        EXPECT_STATUS(SYS_OK, reading.subscribe([](const Reading &r) { last_x = r.x; }));
+    });
+    irq([] {
+        number.send(5);
+        number.send(7);
+        reading.send(Reading{3, 4});
+    });
+    settle();
+    EXPECT_EQ(12, sum.load());
+    EXPECT_EQ(3, last_x.load());
+    Reading kept{};
+    irq([&] { EXPECT_STATUS(SYS_OK, reading.last(kept)); });
+    EXPECT_EQ(4, kept.y);
+}
+
+TEST_F(Sdk, ThreadsWaitWithTypedDataAndConditions) {
+    static std::atomic<int> got{0}, big{0};
+    got = big = 0;
+    boot([] {
+        number.enroll();
+        EXPECT_STATUS(SYS_OK, openswarm::Thread::start([] {
+            int16_t v = 0;
+            number.wait(v);
+            got = v;
+            number.wait_until<&over_ten>(v);
+            big = v;
+        }));
+    });
+    settle();
+    irq([] { number.send(2); });
+    settle();
+    irq([] {
+        number.send(9);
+        number.send(11);
+    });
+    settle();
+    EXPECT_EQ(2, got.load());
+    EXPECT_EQ(11, big.load());
+}
+
+TEST_F(Sdk, CriticalSectionGuardEndsWithItsScope) {
+    static std::atomic<int> handled{0};
+    handled = 0;
+    boot([] {
+        number.enroll();
+        number.subscribe([](const int16_t &) { handled++; });
+        openswarm::Thread::start([] {
+            {
+                openswarm::CriticalSection guard;
+                number.send(1);
+                EXPECT_EQ(0, handled.load()) << "postponed inside the section";
+            }
+            EXPECT_EQ(1, handled.load()) << "run when the guard went";
+        });
+    });
+    settle();
+    EXPECT_EQ(1, handled.load());
+}
