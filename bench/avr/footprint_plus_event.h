@@ -1,11 +1,4 @@
 /* footprint_base.h plus one event slot (same data arena). */
-#define OS_CFG_MAX_THREADS 2
-#define OS_CFG_STACK_POOL_BYTES 64
-#define OS_CFG_STACK_BLOCK_BYTES 16
-#define OS_CFG_DEFAULT_STACK_BYTES 48
+#include "footprint_base.h"
+#undef OS_CFG_MAX_EVENTS
 #define OS_CFG_MAX_EVENTS 7
-#define OS_CFG_EVENT_DATA_BYTES 6
-#define OS_CFG_MAX_SUBSCRIPTIONS 1
-#define OS_CFG_EVENT_QUEUE_BYTES 16
-#define OS_CFG_MAX_DEVICES 1
-#define OS_CFG_HAL_MAX_VALUE 4
