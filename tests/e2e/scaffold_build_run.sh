@@ -13,6 +13,9 @@ cd app
 "$openswarm" build | tee build.log
 grep -q "^Built ./build/$port/app.elf for $port" build.log
 "$openswarm" build --json | tail -1 | grep -q '"flash_total": 32768'
+"$openswarm" size | tee size.log
+grep -Eq "^Equation \(1\) for this app: RAM = kernel [0-9]+ \+ stacks [0-9]+ \+ event data [0-9]+" size.log
+grep -Eq "^  kernel and port +[1-9][0-9]+ +[1-9][0-9]+$" size.log
 "$openswarm" run --time "$seconds" "$@" 2>&1 | tee run.log
 grep -Eq "$expected" run.log
 echo "1 passed, 0 failed"

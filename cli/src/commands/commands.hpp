@@ -20,6 +20,7 @@ void add_ports_command(CLI::App &app, const Paths &paths);
 void add_templates_command(CLI::App &app, const Paths &paths);
 void add_doctor_command(CLI::App &app, const Paths &paths);
 void add_config_command(CLI::App &app, const Paths &paths);
+void add_size_command(CLI::App &app, const Paths &paths);
 
 // "openswarm: <message>" on standard error.
 void report(const std::string &message);

@@ -21,15 +21,21 @@ set(OPENSWARM_MCU atmega328p CACHE STRING "AVR part")
 set(OPENSWARM_F_CPU 8000000 CACHE STRING "CPU clock in Hz")
 
 # Link-time optimisation lets the kernel's one-concern-per-file sources
-# inline across files: it shrinks the image and the switch path.
-set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os -flto -ffunction-sections -fdata-sections")
+# inline across files: it shrinks the image and the switch path. (Off for
+# `openswarm size`'s attribution build, whose link map must name each file.)
+option(OPENSWARM_LTO "link-time optimisation" ON)
+set(_lto "")
+if(OPENSWARM_LTO)
+  set(_lto "-flto")
+endif()
+set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os ${_lto} -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${_avr_flags}")
 set(CMAKE_CXX_FLAGS_INIT "${_avr_flags} -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
 # --undefined keeps the .mmcu record simavr reads; it must sit where
 # simavr 1.6 looks for it, or it crashes at load.
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-mmcu=${OPENSWARM_MCU} -Os -flto -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
+    "-mmcu=${OPENSWARM_MCU} -Os ${_lto} -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
 set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
