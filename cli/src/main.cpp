@@ -30,6 +30,7 @@ int main(int argc, char **argv) {
     add_run_command(app, paths);
     add_ports_command(app, paths);
     add_templates_command(app, paths);
+    add_test_command(app, paths);
     add_size_command(app, paths);
     add_config_command(app, paths);
     add_doctor_command(app, paths);

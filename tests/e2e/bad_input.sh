@@ -71,5 +71,19 @@ expect 2 "\"threads\": 2 threads and the system thread need kernel.max_threads >
 printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "not an identifier"}]}' > keep/openswarm.json
 expect 2 "\"threads\[0\].entry\": \"not an identifier\" is not a C identifier" "$openswarm" build -C keep
 
+# A test whose expectation the app does not meet fails, naming the line.
+"$openswarm" new tested >/dev/null
+sed -i 's/^0.252,led,0,0,0$/0.252,led,3,0,0/' tested/tests/blinks.trace
+out=$("$openswarm" test -C tested 2>&1)
+status=$?
+if [ "$status" -eq 1 ] && printf '%s' "$out" | grep -q "tests/blinks.trace:5: expected robot 0 led 3 0 0 at 0.252 s, got robot 0 led 0 0 0" \
+    && printf '%s' "$out" | grep -q "^0 passed, 1 failed$"; then
+    passed=$((passed + 1))
+else
+    failed=$((failed + 1)); echo "FAILED: a failing app test: exit $status"; printf '%s\n' "$out" | tail -5
+fi
+rm -rf empty-app && mkdir empty-app && printf '{"name": "e", "port": "kilobot"}' > empty-app/openswarm.json
+expect 2 "no tests: add tests/NAME.trace" "$openswarm" test -C empty-app
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

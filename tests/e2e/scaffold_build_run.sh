@@ -18,4 +18,6 @@ grep -Eq "^Equation \(1\) for this app: RAM = kernel [0-9]+ \+ stacks [0-9]+ \+ 
 grep -Eq "^  kernel and port +[1-9][0-9]+ +[1-9][0-9]+$" size.log
 "$openswarm" run --time "$seconds" "$@" 2>&1 | tee run.log
 grep -Eq "$expected" run.log
+"$openswarm" test | tee test.log
+grep -Eq "^[1-9][0-9]* passed, 0 failed$" test.log
 echo "1 passed, 0 failed"

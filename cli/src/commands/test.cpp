@@ -1,0 +1,174 @@
+// openswarm test: build the app, run each of its tests in the simulator and
+// compare what the robots did with what the test expects.
+//
+// A test is a file tests/NAME.trace in the app: a first line
+// "# run: <simulator options>" (e.g. --time 1.2 --robots 2), then one
+// expected change a line, "time_s,device,a,b,c" (robot 0) or
+// "time_s,robot,device,a,b,c"; times may be 5 ms off. Each robot's changes
+// are compared in order.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "../process.hpp"
+#include "build.hpp"
+#include "commands.hpp"
+
+namespace fs = std::filesystem;
+
+namespace openswarm {
+
+namespace {
+
+const double tolerance_s = 0.005;
+
+struct Change {
+    double t;
+    int robot;
+    std::string device;
+    int a, b, c;
+    int line; // in the expectation, 0 for the simulator's
+};
+
+std::vector<std::string> split(const std::string &s, char sep) {
+    std::vector<std::string> parts;
+    std::string part;
+    std::istringstream in(s);
+    while (std::getline(in, part, sep)) parts.push_back(part);
+    return parts;
+}
+
+struct Expectation {
+    std::vector<std::string> options;
+    std::vector<Change> changes;
+};
+
+Expectation read_expectation(const fs::path &file) {
+    Expectation e;
+    std::ifstream in(file);
+    std::string line;
+    for (int n = 1; std::getline(in, line); n++) {
+        if (line.rfind("# run:", 0) == 0) {
+            std::istringstream words(line.substr(6));
+            std::string w;
+            while (words >> w) e.options.push_back(w);
+            continue;
+        }
+        if (line.empty() || line[0] == '#') continue;
+        auto f = split(line, ',');
+        if (f.size() == 5) f.insert(f.begin() + 1, "0");
+        try {
+            if (f.size() != 6) throw std::invalid_argument("fields");
+            e.changes.push_back({std::stod(f[0]), std::stoi(f[1]), f[2], std::stoi(f[3]), std::stoi(f[4]),
+                                 std::stoi(f[5]), n});
+        } catch (const std::exception &) {
+            throw std::runtime_error(file.string() + ":" + std::to_string(n) +
+                                     ": expected time_s,device,a,b,c or time_s,robot,device,a,b,c");
+        }
+    }
+    return e;
+}
+
+std::vector<Change> read_trace(const fs::path &csv) {
+    std::vector<Change> out;
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line); // header: time_s,cycle,robot,device,a,b,c
+    while (std::getline(in, line)) {
+        auto f = split(line, ',');
+        if (f.size() == 7) out.push_back({std::stod(f[0]), std::stoi(f[2]), f[3], std::stoi(f[4]), std::stoi(f[5]), std::stoi(f[6]), 0});
+    }
+    return out;
+}
+
+std::string describe(const Change &c) {
+    char text[96];
+    std::snprintf(text, sizeof text, "robot %d %s %d %d %d at %.3f s", c.robot, c.device.c_str(), c.a, c.b, c.c, c.t);
+    return text;
+}
+
+// Mismatches, one a line; empty if the trace is as expected.
+std::vector<std::string> compare(const fs::path &file, const std::vector<Change> &want, const std::vector<Change> &got) {
+    std::map<int, std::vector<Change>> want_by, got_by;
+    for (const auto &c : want) want_by[c.robot].push_back(c);
+    for (const auto &c : got) {
+        got_by[c.robot].push_back(c);
+        want_by[c.robot]; // every robot that did something is checked
+    }
+    std::vector<std::string> problems;
+    for (const auto &[robot, expected] : want_by) {
+        const auto &actual = got_by[robot];
+        for (size_t i = expected.size(); i < actual.size(); i++)
+            problems.push_back(file.string() + ": unexpected " + describe(actual[i]));
+        for (size_t i = 0; i < expected.size(); i++) {
+            const Change &w = expected[i];
+            std::string where = file.string() + ":" + std::to_string(w.line) + ": expected " + describe(w);
+            if (i >= actual.size()) {
+                problems.push_back(where + ", nothing more happened");
+                continue;
+            }
+            const Change &g = actual[i];
+            if (g.device != w.device || g.a != w.a || g.b != w.b || g.c != w.c || std::abs(g.t - w.t) > tolerance_s)
+                problems.push_back(where + ", got " + describe(g));
+        }
+    }
+    return problems;
+}
+
+int run_tests(const std::string &dir, const Paths &paths) {
+    fs::path tests = fs::path(dir) / "tests";
+    std::vector<fs::path> files;
+    if (fs::exists(tests))
+        for (const auto &e : fs::directory_iterator(tests))
+            if (e.path().extension() == ".trace") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    if (files.empty()) {
+        report("no tests: add tests/NAME.trace files to " + fs::path(dir).string() +
+               " (see `openswarm test --help`)");
+        return EXIT_USAGE;
+    }
+    auto built = build_app(paths, dir, "");
+    if (!built) return exit_code;
+    int passed = 0, failed = 0;
+    std::vector<std::pair<std::string, std::string>> rows;
+    for (const auto &file : files) {
+        std::string name = file.stem().string();
+        std::vector<std::string> problems;
+        try {
+            Expectation e = read_expectation(file);
+            fs::path csv = built->image.parent_path() / (name + ".trace.csv");
+            std::vector<std::string> argv = {paths.simulator.string(), "--quiet", "--trace-csv", csv.string()};
+            argv.insert(argv.end(), e.options.begin(), e.options.end());
+            argv.push_back(built->image.string());
+            std::string ignored;
+            int status = capture_program(argv, ignored);
+            if (status != 0) problems.push_back("the simulator exited with " + std::to_string(status));
+            else problems = compare(file, e.changes, read_trace(csv));
+        } catch (const std::exception &ex) {
+            problems.push_back(ex.what());
+        }
+        for (const auto &p : problems) std::printf("%s\n", p.c_str());
+        rows.emplace_back(name, problems.empty() ? "PASSED" : "FAILED");
+        (problems.empty() ? passed : failed)++;
+    }
+    std::printf("\n%-24s %s\n", "Test", "Result");
+    for (const auto &[name, result] : rows) std::printf("%-24s %s\n", name.c_str(), result.c_str());
+    std::printf("%d passed, %d failed\n", passed, failed);
+    return failed == 0 ? EXIT_OK : EXIT_FAILED;
+}
+
+}  // namespace
+
+void add_test_command(CLI::App &app, const Paths &paths) {
+    auto dir = std::make_shared<std::string>(".");
+    CLI::App *cmd = app.add_subcommand("test", "Run the app's tests (tests/*.trace) in the simulator");
+    cmd->footer("A test is tests/NAME.trace: a line \"# run: <simulator options>\" (e.g. --time 1.2\n"
+                "--robots 2), then one expected LED or motor change a line: time_s,device,a,b,c\n"
+                "(robot 0) or time_s,robot,device,a,b,c. Times may be 5 ms off.");
+    cmd->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
+    cmd->callback([dir, &paths] { exit_code = run_tests(*dir, paths); });
+}
+
+}  // namespace openswarm
