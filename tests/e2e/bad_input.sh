@@ -76,7 +76,7 @@ expect 2 "\"threads\[0\].entry\": \"not an identifier\" is not a C identifier" "
 sed -i 's/^0.252,led,0,0,0$/0.252,led,3,0,0/' tested/tests/blinks.trace
 out=$("$openswarm" test -C tested 2>&1)
 status=$?
-if [ "$status" -eq 1 ] && printf '%s' "$out" | grep -q "tests/blinks.trace:5: expected robot 0 led 3 0 0 at 0.252 s, got robot 0 led 0 0 0" \
+if [ "$status" -eq 1 ] && printf '%s' "$out" | grep -q "tests/blinks.trace:4: expected robot 0 led 3 0 0 at 0.252 s, got robot 0 led 0 0 0" \
     && printf '%s' "$out" | grep -q "^0 passed, 1 failed$"; then
     passed=$((passed + 1))
 else
