@@ -80,8 +80,10 @@ void check_keys(const fs::path &file, const std::string &path, const json &objec
     }
 }
 
-const json &require(const fs::path &file, const json &doc, const std::string &key) {
-    if (!doc.contains(key)) fail(file, key, "missing; add it, e.g. \"" + key + "\": \"...\"");
+const json &require(const fs::path &file, const json &doc, const std::string &key,
+                    const std::string &parent = "") {
+    if (!doc.contains(key))
+        fail(file, parent.empty() ? key : parent + "." + key, "missing; add \"" + key + "\" there");
     return doc.at(key);
 }
 
@@ -131,7 +133,7 @@ void load_events(const fs::path &file, const json &list, AppConfig &c) {
         if (!e.is_object()) fail(file, path, "expected {\"name\": ..., \"type\": ...}, found " + found(e));
         check_keys(file, path, e, {"name", "type", "size"});
         EventConfig ev;
-        ev.name = identifier_at(file, path + ".name", require(file, e, "name"));
+        ev.name = identifier_at(file, path + ".name", require(file, e, "name", path));
         for (const auto &other : c.events)
             if (other.name == ev.name) fail(file, path + ".name", "\"" + ev.name + "\" is declared twice");
         if (e.contains("type") && e.contains("size")) fail(file, path, "give \"type\" or \"size\", not both");
@@ -161,7 +163,7 @@ void load_threads(const fs::path &file, const json &list, AppConfig &c) {
         if (!t.is_object()) fail(file, path, "expected {\"entry\": ..., \"stack\": ...}, found " + found(t));
         check_keys(file, path, t, {"entry", "stack", "priority"});
         ThreadConfig th;
-        th.entry = identifier_at(file, path + ".entry", require(file, t, "entry"));
+        th.entry = identifier_at(file, path + ".entry", require(file, t, "entry", path));
         if (t.contains("stack")) th.stack = (unsigned)number_at(file, path + ".stack", t["stack"], 16, 4096);
         if (t.contains("priority")) th.priority = (unsigned)number_at(file, path + ".priority", t["priority"], 0, 255);
         c.threads.push_back(th);
@@ -171,6 +173,48 @@ void load_threads(const fs::path &file, const json &list, AppConfig &c) {
         fail(file, "threads", std::to_string(c.threads.size()) + " threads and the system thread need "
              "kernel.max_threads >= " + std::to_string(c.threads.size() + 1) + ", found " +
              std::to_string(max_threads->second));
+}
+
+std::vector<std::string> names_of(const std::vector<DeviceInfo> &all) {
+    std::vector<std::string> n;
+    for (const auto &d : all) n.push_back(d.name);
+    return n;
+}
+
+void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
+    if (!devices.is_object())
+        fail(file, "devices", "expected an object {\"motors\": {\"processor\": ...}}, found " + found(devices));
+    const auto &known = devices_of(c.port);
+    for (const auto &[name, d] : devices.items()) {
+        std::string path = "devices." + name;
+        auto device = std::find_if(known.begin(), known.end(), [&](const DeviceInfo &i) { return i.name == name; });
+        if (device == known.end()) {
+            std::string hint = nearest(name, names_of(known));
+            fail(file, path, "no device \"" + name + "\" on " + c.port + "; devices: " + join(names_of(known)) +
+                                 (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+        }
+        if (!d.is_object()) fail(file, path, "expected {\"processor\": ...}, found " + found(d));
+        DeviceConfig dc;
+        dc.device = name;
+        dc.processor = string_at(file, path + ".processor", require(file, d, "processor", path), "a processor name");
+        std::vector<std::string> processor_names;
+        const ProcessorInfo *p = nullptr;
+        for (const auto &candidate : device->processors) {
+            processor_names.push_back(candidate.name);
+            if (candidate.name == dc.processor) p = &candidate;
+        }
+        if (p == nullptr) {
+            std::string hint = nearest(dc.processor, processor_names);
+            fail(file, path + ".processor", "unknown processor \"" + dc.processor + "\" for " + name +
+                     "; processors: " + join(processor_names) + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+        }
+        std::vector<std::string> allowed = {"processor"};
+        for (const auto &param : p->params) allowed.push_back(param.name);
+        check_keys(file, path, d, allowed);
+        for (const auto &param : p->params)
+            dc.params[param.name] = number_at(file, path + "." + param.name, require(file, d, param.name, path), param.min, param.max);
+        c.devices.push_back(dc);
+    }
 }
 
 }  // namespace
@@ -205,7 +249,7 @@ AppConfig load_app_config(const fs::path &dir) {
     }
     const fs::path &file = config.file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
-    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads"});
+    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices"});
     config.name = identifier_at(file, "name", require(file, doc, "name"));
     config.port = string_at(file, "port", require(file, doc, "port"), "a port name");
     if (!is_port(config.port)) {
@@ -216,6 +260,7 @@ AppConfig load_app_config(const fs::path &dir) {
     if (doc.contains("kernel")) load_kernel(file, doc["kernel"], config);
     if (doc.contains("events")) load_events(file, doc["events"], config);
     if (doc.contains("threads")) load_threads(file, doc["threads"], config);
+    if (doc.contains("devices")) load_devices(file, doc["devices"], config);
     return config;
 }
 

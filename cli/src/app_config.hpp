@@ -28,6 +28,12 @@ struct ThreadConfig {
     unsigned priority = 0;
 };
 
+struct DeviceConfig {
+    std::string device;    // "motors"
+    std::string processor; // "spinup-limited"
+    std::map<std::string, long> params;
+};
+
 struct AppConfig {
     std::filesystem::path file;
     std::string name;
@@ -37,6 +43,7 @@ struct AppConfig {
     long time_slice_ms = 0;             // 0 = the kernel's default
     std::vector<EventConfig> events;
     std::vector<ThreadConfig> threads;
+    std::vector<DeviceConfig> devices; // processors chosen in openswarm.json
 };
 
 // (key, config.h macro) of every kernel setting openswarm.json may give.

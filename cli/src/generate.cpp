@@ -65,15 +65,37 @@ std::string app_header(const AppConfig &c) {
     for (size_t i = 0; i < c.events.size(); i++)
         h << "#define EV_" << upper(c.events[i].name) << " ((sys_event_id)(SYS_EVENT_FIRST_FREE + " << i
           << ")) /* " << c.events[i].size << " bytes */\n";
-    h << "\n/* Registers the events and starts the threads openswarm.json declares;\n"
-         " * call it between Sys_Init_Kernel and Sys_Start_Kernel. */\n"
+    h << "\n/* Registers the events, installs the device processors and starts the\n"
+         " * threads openswarm.json declares; call it between the port's device set-up\n"
+         " * (kilobot_devices_init) and Sys_Start_Kernel. */\n"
          "sys_status openswarm_app_start(void);\n\n#endif\n";
     return h.str();
 }
 
+const ProcessorInfo &processor_info(const AppConfig &c, const DeviceConfig &d, const DeviceInfo **device) {
+    for (const auto &dev : devices_of(c.port)) {
+        if (dev.name != d.device) continue;
+        *device = &dev;
+        for (const auto &p : dev.processors)
+            if (p.name == d.processor) return p;
+    }
+    throw std::logic_error("validated device " + d.device);
+}
+
 std::string app_source(const AppConfig &c) {
     std::ostringstream s;
-    s << banner << "#include \"openswarm_app.h\"\n\n";
+    s << banner << "#include \"openswarm_app.h\"\n";
+    if (c.port == "kilobot" && !c.devices.empty()) s << "#include \"openswarm/kilobot.h\"\n";
+    s << "\n";
+    for (const auto &d : c.devices) {
+        const DeviceInfo *dev = nullptr;
+        const ProcessorInfo &p = processor_info(c, d, &dev);
+        if (p.c_params_type.empty()) continue;
+        s << "static const " << p.c_params_type << " " << d.device << "_params = {";
+        for (size_t i = 0; i < p.params.size(); i++)
+            s << (i ? ", " : "") << "." << p.params[i].c_field << " = " << d.params.at(p.params[i].name);
+        s << "};\n\n";
+    }
     for (const auto &t : c.threads)
         s << "void " << t.entry << "(void);\nstatic void start_" << t.entry << "(void *arg) {\n    (void)arg;\n    "
           << t.entry << "();\n}\n\n";
@@ -81,6 +103,13 @@ std::string app_source(const AppConfig &c) {
     if (c.scheduler == "priority") s << "    if (st == SYS_OK) st = Sys_Set_Scheduler(&sys_scheduler_priority);\n";
     for (const auto &e : c.events)
         s << "    if (st == SYS_OK) st = Sys_Register_Event_Sized(EV_" << upper(e.name) << ", " << e.size << ");\n";
+    for (const auto &d : c.devices) {
+        const DeviceInfo *dev = nullptr;
+        const ProcessorInfo &p = processor_info(c, d, &dev);
+        if (p.c_function.empty()) continue; /* the device's default */
+        s << "    if (st == SYS_OK) st = Sys_Set_Processor(&" << dev->c_device << ", " << p.c_function << ", "
+          << (p.c_params_type.empty() ? std::string("0") : "(void *)&" + d.device + "_params") << ");\n";
+    }
     for (const auto &t : c.threads)
         s << "    if (st == SYS_OK) st = Sys_Start_Process_Ex(start_" << t.entry << ", 0, " << t.stack << ", "
           << t.priority << ", 0);\n";

@@ -11,6 +11,21 @@ const std::vector<PortInfo> &ports() {
     return all;
 }
 
+const std::vector<DeviceInfo> &devices_of(const std::string &port) {
+    static const std::vector<DeviceInfo> kilobot = {
+        {"motors", "kilobot_motor_pair",
+         {{"calibrated", "kilobot_motor_commands", "", {},
+           "motion commands become the robot's EEPROM calibration; duties pass"},
+          {"spinup-limited", "kilobot_spinup_limited", "kilobot_spinup_limit",
+           {{"limit_ms", "limit_ms", 1, 60000}, {"fallback", "fallback", 0, 254}},
+           "as calibrated, and full power drops to fallback after limit_ms"}}},
+        {"led", "kilobot_led", {{"copy", "", "", {}, "the colour byte as it is"}}},
+        {"ir", "kilobot_ir", {{"crc", "", "", {}, "frames whose CRC checks reach KILOBOT_EVENT_IR_RX"}}},
+    };
+    static const std::vector<DeviceInfo> none;
+    return port == "kilobot" ? kilobot : none;
+}
+
 std::vector<std::string> port_names() {
     std::vector<std::string> names;
     for (const auto &p : ports()) names.push_back(p.name);

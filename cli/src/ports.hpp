@@ -18,6 +18,26 @@ struct PortInfo {
     unsigned default_max_threads, default_max_events, default_stack, stack_block;
 };
 
+// A processor a device can use, as openswarm.json names it, and what the
+// generated code installs.
+struct ProcessorParam {
+    std::string name, c_field;
+    long min, max;
+};
+struct ProcessorInfo {
+    std::string name;
+    std::string c_function;          // the sys_processor to install
+    std::string c_params_type;       // "" if it takes no parameters
+    std::vector<ProcessorParam> params;
+    std::string description;
+};
+struct DeviceInfo {
+    std::string name;     // "motors"
+    std::string c_device; // "kilobot_motor_pair"
+    std::vector<ProcessorInfo> processors; // the first is the default
+};
+const std::vector<DeviceInfo> &devices_of(const std::string &port);
+
 const std::vector<PortInfo> &ports();
 std::vector<std::string> port_names();
 bool is_port(const std::string &name);

@@ -34,6 +34,11 @@ void add_config_command(CLI::App &app, const Paths &) {
                         std::printf("event EV_%s (id SYS_EVENT_FIRST_FREE + %zu), %u bytes\n", macro.c_str(), i,
                                     c.events[i].size);
                     }
+                    for (const auto &d : c.devices) {
+                        std::printf("device %s: processor %s", d.device.c_str(), d.processor.c_str());
+                        for (const auto &[k, v] : d.params) std::printf(", %s %ld", k.c_str(), v);
+                        std::printf("\n");
+                    }
                     for (const auto &t : c.threads)
                         std::printf("thread %s, stack %u bytes%s, priority %u\n", t.entry.c_str(), t.stack,
                                     t.stack ? "" : " (default)", t.priority);
