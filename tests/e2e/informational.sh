@@ -24,6 +24,8 @@ check "help names every command" 0 "new.*build.*run.*ports.*templates.*config.*d
 check "help of a command" 0 "--template" "$openswarm" new --help
 check "ports" 0 "kilobot +Kilobot" "$openswarm" ports
 check "templates" 0 "blinky .*\[kilobot\]" "$openswarm" templates
+check "templates as JSON" 0 "\"name\": \"threads-and-events\"" "$openswarm" templates --json
+check "ports as JSON" 0 "\"ram_bytes\": 2048" "$openswarm" ports --json
 check "doctor, all there" 0 "Everything is in place" "$openswarm" doctor
 mkdir empty-path
 check "doctor, nothing there" 1 "sudo apt-get install cmake ninja-build gcc-avr binutils-avr" \

@@ -1,4 +1,6 @@
 // openswarm templates: what `openswarm new` can start from.
+#include <nlohmann/json.hpp>
+
 #include "../suggest.hpp"
 #include "../templates.hpp"
 #include "commands.hpp"
@@ -6,10 +8,20 @@
 namespace openswarm {
 
 void add_templates_command(CLI::App &app, const Paths &paths) {
+    auto json = std::make_shared<bool>(false);
     CLI::App *cmd = app.add_subcommand("templates", "List the app templates");
-    cmd->callback([&paths] {
-        for (const auto &t : list_templates(paths.templates()))
-            std::printf("%-10s %s [%s]\n", t.name.c_str(), t.description.c_str(), join(t.ports).c_str());
+    cmd->add_flag("--json", *json, "print them as JSON");
+    cmd->callback([json, &paths] {
+        auto all = list_templates(paths.templates());
+        if (*json) {
+            nlohmann::json out = nlohmann::json::array();
+            for (const auto &t : all)
+                out.push_back({{"name", t.name}, {"description", t.description}, {"ports", t.ports}});
+            std::printf("%s\n", out.dump(2).c_str());
+        } else {
+            for (const auto &t : all)
+                std::printf("%-19s %s [%s]\n", t.name.c_str(), t.description.c_str(), join(t.ports).c_str());
+        }
         exit_code = EXIT_OK;
     });
 }
