@@ -15,7 +15,7 @@ sys_status Sys_Send_Event(sys_event_id event, const void *data, uint8_t size) {
         os.stats.event_queue_full++;
         st = SYS_E_QUEUE_FULL;
     } else {
-        os_schedule(); /* from a thread: the handlers run now */
+        if (os.isr_depth == 0) os_schedule(); /* a thread's: handlers now; an ISR's: at its exit */
     }
     port_irq_restore(s);
     return st;

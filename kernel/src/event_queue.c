@@ -48,11 +48,16 @@ static void ring_read(uint8_t *dest, uint8_t n) {
     head = (uint8_t)(src - ring);
 }
 
+static uint8_t take_byte(void) {
+    uint8_t byte = ring[head];
+    head = (uint8_t)(head + 1u == QUEUE_BYTES ? 0u : head + 1u);
+    os.queued_bytes--;
+    return byte;
+}
+
 bool os_event_queue_pop(sys_event_data *out) {
-    uint8_t header[HEADER_BYTES];
-    ring_read(header, HEADER_BYTES);
-    sys_event_id event = header[0];
-    uint8_t size = header[1];
+    sys_event_id event = take_byte();
+    uint8_t size = take_byte();
     bool deliverable = os_event_registered(event) && size <= os_event_capacity(event);
     ring_read(deliverable ? os_event_buffer(event) : NULL, size);
     if (!deliverable) {

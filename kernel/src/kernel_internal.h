@@ -58,6 +58,7 @@ typedef struct os_kernel {
     uint16_t slice_ms;
     uint16_t slice_left;
     uint8_t queued_bytes; /* of the event queue: non-zero means dispatch is due */
+    uint8_t event_waiters; /* threads blocked on an event: none means no waiter scan */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
     bool slice_expired;
@@ -121,6 +122,7 @@ void os_dispatch_on_system_stack(void);
 
 /* wait.c */
 void os_wake_waiters(const sys_event_data *data);
+void os_wait_abandon(sys_tcb *t); /* t is killed while it waits */
 void os_wake_all_waiting_for(sys_event_id event, sys_status status);
 void os_check_timeouts(void);
 

@@ -88,7 +88,7 @@ void os_terminate(sys_tcb *t) {
         os.preempted = NULL;
     else if (t->state == SYS_PROCESS_READY || t->state == SYS_PROCESS_NEW)
         os_ready_remove(t);
-    t->wait = NULL;
+    os_wait_abandon(t);
     t->state = SYS_PROCESS_ZOMBIE;
     os.reap_pending = true;
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 static sys_status block_current(os_wait *w) {
+    if (w->event != OS_NO_EVENT) os.event_waiters++;
     os.current->wait = w;
     os.current->state = SYS_PROCESS_BLOCKED;
     os_schedule(); /* returns once woken */
@@ -68,7 +69,13 @@ sys_status Sys_Sleep(uint32_t ms) {
     return st == SYS_E_TIMEOUT ? SYS_OK : st;
 }
 
+void os_wait_abandon(sys_tcb *t) {
+    if (t->wait != NULL && t->wait->event != OS_NO_EVENT) os.event_waiters--;
+    t->wait = NULL;
+}
+
 static void wake(sys_tcb *t, sys_status status) {
+    if (t->wait->event != OS_NO_EVENT) os.event_waiters--;
     t->wait->status = status;
     t->wait = NULL;
     os_make_ready(t);
@@ -76,6 +83,7 @@ static void wake(sys_tcb *t, sys_status status) {
 
 /* Dispatch of one occurrence: wake every thread whose wait it satisfies. */
 void os_wake_waiters(const sys_event_data *data) {
+    if (os.event_waiters == 0) return; /* the common case costs one test */
     for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
         sys_tcb *t = &os.threads[i];
         os_wait *w = t->wait;
