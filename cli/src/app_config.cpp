@@ -73,10 +73,9 @@ void check_keys(const fs::path &file, const std::string &path, const json &objec
     for (const auto &[key, value] : object.items()) {
         (void)value;
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-        std::string hint = nearest(key, allowed);
         fail(file, path.empty() ? key : path + "." + key,
              "unknown key; expected one of " + join(allowed) +
-                 (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+                 did_you_mean(key, allowed));
     }
 }
 
@@ -117,10 +116,9 @@ void load_kernel(const fs::path &file, const json &k, AppConfig &c) {
     if (k.contains("scheduler")) {
         c.scheduler = string_at(file, "kernel.scheduler", k["scheduler"], "\"round-robin\" or \"priority\"");
         if (c.scheduler != "round-robin" && c.scheduler != "priority") {
-            std::string hint = nearest(c.scheduler, {"round-robin", "priority"});
             fail(file, "kernel.scheduler", "unknown scheduler \"" + c.scheduler +
                      "\"; expected \"round-robin\" or \"priority\"" +
-                     (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+                     did_you_mean(c.scheduler, {"round-robin", "priority"}));
         }
     }
 }
@@ -143,9 +141,8 @@ void load_events(const fs::path &file, const json &list, AppConfig &c) {
             if (it == payload_types.end()) {
                 std::vector<std::string> names;
                 for (const auto &[n, size] : payload_types) { (void)size; names.push_back(n); }
-                std::string hint = nearest(t, names);
                 fail(file, path + ".type", "unknown type \"" + t + "\"; expected one of " + join(names) +
-                         (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+                         did_you_mean(t, names));
             }
             ev.size = it->second;
         } else if (e.contains("size")) {
@@ -189,9 +186,8 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
         std::string path = "devices." + name;
         auto device = std::find_if(known.begin(), known.end(), [&](const DeviceInfo &i) { return i.name == name; });
         if (device == known.end()) {
-            std::string hint = nearest(name, names_of(known));
             fail(file, path, "no device \"" + name + "\" on " + c.port + "; devices: " + join(names_of(known)) +
-                                 (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+                                 did_you_mean(name, names_of(known)));
         }
         if (!d.is_object()) fail(file, path, "expected {\"processor\": ...}, found " + found(d));
         DeviceConfig dc;
@@ -204,9 +200,8 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
             if (candidate.name == dc.processor) p = &candidate;
         }
         if (p == nullptr) {
-            std::string hint = nearest(dc.processor, processor_names);
             fail(file, path + ".processor", "unknown processor \"" + dc.processor + "\" for " + name +
-                     "; processors: " + join(processor_names) + (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+                     "; processors: " + join(processor_names) + did_you_mean(dc.processor, processor_names));
         }
         std::vector<std::string> allowed = {"processor"};
         for (const auto &param : p->params) allowed.push_back(param.name);
@@ -253,9 +248,8 @@ AppConfig load_app_config(const fs::path &dir) {
     config.name = identifier_at(file, "name", require(file, doc, "name"));
     config.port = string_at(file, "port", require(file, doc, "port"), "a port name");
     if (!is_port(config.port)) {
-        std::string hint = nearest(config.port, port_names());
         fail(file, "port", "unknown port \"" + config.port + "\"; known: " + join(port_names()) +
-                               (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+                               did_you_mean(config.port, port_names()));
     }
     if (doc.contains("kernel")) load_kernel(file, doc["kernel"], config);
     if (doc.contains("events")) load_events(file, doc["events"], config);

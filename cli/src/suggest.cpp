@@ -32,6 +32,11 @@ std::string nearest(const std::string &word, const std::vector<std::string> &cho
     return best;
 }
 
+std::string did_you_mean(const std::string &word, const std::vector<std::string> &choices, char quote) {
+    std::string hint = nearest(word, choices);
+    return hint.empty() ? "" : " (did you mean " + std::string(1, quote) + hint + quote + "?)";
+}
+
 std::string join(const std::vector<std::string> &items, const std::string &sep) {
     std::string out;
     for (const auto &i : items) out += (out.empty() ? "" : sep) + i;

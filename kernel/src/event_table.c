@@ -117,16 +117,21 @@ static void unlink_dead_subscriptions(void) {
     sweep_needed = false;
 }
 
+/* Marked entries are unlinked now, or after the dispatch under way. */
+static void release_marked(void) {
+    if (dispatching)
+        sweep_needed = true;
+    else
+        unlink_dead_subscriptions();
+}
+
 /* Remove the subscriptions matching (event or any, pid or any). */
 static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid, bool any_pid) {
     for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
         subscription *sub = &subs[i];
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
-    if (dispatching)
-        sweep_needed = true;
-    else
-        unlink_dead_subscriptions();
+    release_marked();
 }
 
 sys_status Sys_Unregister_Event(sys_event_id event) {
@@ -208,10 +213,7 @@ sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event
     subscription *sub = find_subscription(event, pid, handler);
     if (sub != NULL) {
         sub->handler = NULL;
-        if (dispatching)
-            sweep_needed = true;
-        else
-            unlink_dead_subscriptions();
+        release_marked();
     }
     port_irq_restore(s);
     return sub != NULL ? SYS_OK : SYS_E_NOT_FOUND;

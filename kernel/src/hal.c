@@ -57,6 +57,11 @@ static sys_status ensure_registered(sys_event_id event) {
     return Sys_Register_Event_Sized(event, OS_CFG_HAL_MAX_VALUE);
 }
 
+/* The event whose data an output or comm device writes out. */
+static sys_event_id command_event(const sys_device *dev) {
+    return dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event;
+}
+
 static int device_index(const sys_device *dev) {
     for (unsigned i = 0; i < OS_CFG_MAX_DEVICES; i++)
         if (devices[i] == dev) return (int)i;
@@ -67,7 +72,7 @@ static sys_status register_device(sys_device *dev) {
     if (device_index(dev) >= 0) return SYS_E_EXISTS;
     /* One command event drives one device: a second would never be written. */
     if (dev->kind != SYS_DEVICE_INPUT &&
-        device_for_command(dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event) != NULL)
+        device_for_command(command_event(dev)) != NULL)
         return SYS_E_EXISTS;
     int slot = device_index(NULL);
     if (slot < 0) {
@@ -77,9 +82,8 @@ static sys_status register_device(sys_device *dev) {
     sys_status st = ensure_registered(dev->event);
     if (st == SYS_OK && dev->kind == SYS_DEVICE_COMM) st = ensure_registered(dev->tx_event);
     if (st != SYS_OK) return st;
-    sys_event_id command = dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event;
     if (dev->kind != SYS_DEVICE_INPUT) {
-        st = Sys_Subscribe_to_Event(command, SYS_PID_SYSTEM, command_handler, NULL);
+        st = Sys_Subscribe_to_Event(command_event(dev), SYS_PID_SYSTEM, command_handler, NULL);
         if (st != SYS_OK && st != SYS_E_EXISTS) return st;
     }
     devices[slot] = dev;
@@ -107,7 +111,7 @@ sys_status Sys_Unregister_Device(sys_device *dev) {
     }
     devices[slot] = NULL;
     if (dev->kind != SYS_DEVICE_INPUT) {
-        sys_event_id command = dev->kind == SYS_DEVICE_COMM ? dev->tx_event : dev->event;
+        sys_event_id command = command_event(dev);
         if (device_for_command(command) == NULL)
             Sys_Unsubscribe_from_Event(command, SYS_PID_SYSTEM, command_handler);
     }

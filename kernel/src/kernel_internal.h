@@ -122,7 +122,7 @@ void os_dispatch_on_system_stack(void);
 
 /* wait.c */
 void os_wake_waiters(const sys_event_data *data);
-void os_wait_abandon(sys_tcb *t); /* t is killed while it waits */
+void os_wait_abandon(sys_tcb *t); /* t stops waiting: woken or killed */
 void os_wake_all_waiting_for(sys_event_id event, sys_status status);
 void os_check_timeouts(void);
 

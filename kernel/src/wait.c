@@ -69,15 +69,15 @@ sys_status Sys_Sleep(uint32_t ms) {
     return st == SYS_E_TIMEOUT ? SYS_OK : st;
 }
 
+/* The thread stops waiting (woken, or killed): it no longer counts. */
 void os_wait_abandon(sys_tcb *t) {
     if (t->wait != NULL && t->wait->event != OS_NO_EVENT) os.event_waiters--;
     t->wait = NULL;
 }
 
 static void wake(sys_tcb *t, sys_status status) {
-    if (t->wait->event != OS_NO_EVENT) os.event_waiters--;
     t->wait->status = status;
-    t->wait = NULL;
+    os_wait_abandon(t);
     os_make_ready(t);
 }
 

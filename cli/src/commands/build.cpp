@@ -56,6 +56,21 @@ struct BuildOptions {
 
 }  // namespace
 
+std::vector<std::string> configure_command(const Paths &paths, const fs::path &dir,
+                                           const fs::path &build_dir, const std::string &port) {
+    std::vector<std::string> configure = {
+        "cmake", "-S", dir.string(), "-B", build_dir.string(), "--log-level=WARNING",
+        "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(), "-DOPENSWARM_PORT=" + port,
+        "-DOPENSWARM_GENERATED_DIR=" + fs::absolute(generated_dir(dir, port)).string()};
+    if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
+    if (port == "kilobot") configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(port).string());
+    return configure;
+}
+
+fs::path generated_dir(const fs::path &dir, const std::string &port) {
+    return dir / "build" / port / "openswarm";
+}
+
 std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir, const std::string &port_option) {
     AppConfig config;
     try {
@@ -71,13 +86,14 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir, co
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }
-    if (!toolchain_present(port) || !find_program("cmake")) {
-        if (!find_program("cmake")) report("cmake was not found: sudo apt-get install cmake");
+    bool have_cmake = find_program("cmake").has_value();
+    if (!have_cmake) report("cmake was not found: sudo apt-get install cmake");
+    if (!have_cmake || !toolchain_present(port)) {
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
     fs::path build_dir = dir / "build" / port;
-    fs::path generated = build_dir / "openswarm";
+    fs::path generated = generated_dir(dir, port);
     config.port = port;
     try {
         generate_app_files(config, generated);
@@ -86,13 +102,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir, co
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    std::vector<std::string> configure = {"cmake", "-S", dir.string(), "-B", build_dir.string(),
-                                          "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(),
-                                          "-DOPENSWARM_PORT=" + port,
-                                          "-DOPENSWARM_GENERATED_DIR=" + fs::absolute(generated).string(),
-                                          "--log-level=WARNING"};
-    if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
-    if (port == "kilobot") configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(port).string());
+    std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
     std::printf("Configuring %s for %s\n", config.name.c_str(), port.c_str());
     if (run_program(configure) != 0) {
         report("configuring failed (CMake's messages are above); check " +

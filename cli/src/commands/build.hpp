@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "../paths.hpp"
 
@@ -14,6 +15,14 @@ struct BuildResult {
     unsigned flash = 0, ram = 0; // bytes used
     std::string port;
 };
+
+// Where `build` writes the files generated from openswarm.json.
+std::filesystem::path generated_dir(const std::filesystem::path &dir, const std::string &port);
+
+// The CMake configure command line for the app in dir, built in build_dir.
+std::vector<std::string> configure_command(const Paths &paths, const std::filesystem::path &dir,
+                                           const std::filesystem::path &build_dir,
+                                           const std::string &port);
 
 // Configure and build the app in dir for port ("" = the app's own);
 // prints progress, and errors ending with what to do. nullopt on failure,

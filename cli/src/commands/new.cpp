@@ -66,16 +66,14 @@ int run_new(const NewOptions &o, const Paths &paths) {
     for (const auto &t : all) names.push_back(t.name);
     const TemplateInfo *t = find_template(all, o.template_name);
     if (t == nullptr) {
-        std::string hint = nearest(o.template_name, names);
         report("unknown template '" + o.template_name + "'; templates: " + join(names) +
-               (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+               did_you_mean(o.template_name, names, '\'') +
                "; `openswarm templates` describes them");
         return EXIT_USAGE;
     }
     if (!is_port(o.port)) {
-        std::string hint = nearest(o.port, port_names());
         report("unknown port '" + o.port + "'; ports: " + join(port_names()) +
-               (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+               did_you_mean(o.port, port_names(), '\''));
         return EXIT_USAGE;
     }
     if (std::find(t->ports.begin(), t->ports.end(), o.port) == t->ports.end()) {

@@ -82,12 +82,8 @@ int run_size(const std::string &dir, const Paths &paths) {
     fs::path attribution = fs::path(dir) / "build" / (built->port + "-size");
     fs::path map = fs::absolute(attribution / "link.map");
     std::printf("Building once more without link-time optimisation, to attribute every byte\n");
-    std::vector<std::string> configure = {
-        "cmake", "-S", dir, "-B", attribution.string(), "--log-level=WARNING",
-        "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(), "-DOPENSWARM_PORT=" + built->port,
-        "-DOPENSWARM_LTO=OFF", "-DOPENSWARM_GENERATED_DIR=" + fs::absolute(built->image.parent_path() / "openswarm").string(),
-        "-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(built->port).string(),
-        "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + map.string()};
+    std::vector<std::string> configure = configure_command(paths, dir, attribution, built->port);
+    configure.insert(configure.end(), {"-DOPENSWARM_LTO=OFF", "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + map.string()});
     std::string quiet;
     if (capture_program(configure, quiet) != 0 || capture_program({"cmake", "--build", attribution.string()}, quiet) != 0) {
         report("the attribution build failed:\n" + quiet);

@@ -182,10 +182,21 @@ static unsigned raise_irq(void) {
     return seq;
 }
 
+/* For sem_timedwait: now plus ms of wall-clock time. */
+static struct timespec deadline_in(uint32_t ms) {
+    struct timespec t;
+    clock_gettime(CLOCK_REALTIME, &t);
+    t.tv_sec += ms / 1000;
+    t.tv_nsec += (long)(ms % 1000) * 1000000L;
+    if (t.tv_nsec >= 1000000000L) {
+        t.tv_nsec -= 1000000000L;
+        t.tv_sec++;
+    }
+    return t;
+}
+
 static void wait_ack(unsigned seq) {
-    struct timespec deadline;
-    clock_gettime(CLOCK_REALTIME, &deadline);
-    deadline.tv_sec += 10;
+    struct timespec deadline = deadline_in(10000);
     while ((int)(atomic_load(&acked) - seq) < 0) {
         if (sem_timedwait(&progress, &deadline) != 0 && errno == ETIMEDOUT) {
             fprintf(stderr, "host port: the CPU did not service interrupt %u within 10 s "
@@ -252,14 +263,7 @@ void host_cpu_interrupt(void (*isr)(void *), void *arg) {
 }
 
 bool host_cpu_wait_idle(uint32_t timeout_ms) {
-    struct timespec deadline;
-    clock_gettime(CLOCK_REALTIME, &deadline);
-    deadline.tv_sec += timeout_ms / 1000;
-    deadline.tv_nsec += (long)(timeout_ms % 1000) * 1000000L;
-    if (deadline.tv_nsec >= 1000000000L) {
-        deadline.tv_nsec -= 1000000000L;
-        deadline.tv_sec++;
-    }
+    struct timespec deadline = deadline_in(timeout_ms);
     for (;;) {
         if (atomic_load(&cpu_idle) && atomic_load(&acked) == atomic_load(&raised) &&
             !anything_pending())
