@@ -24,6 +24,7 @@ check "help names every command" 0 "new.*build.*run.*ports.*templates.*config.*d
 check "help of a command" 0 "--template" "$openswarm" new --help
 check "ports" 0 "kilobot +Kilobot" "$openswarm" ports
 check "templates" 0 "blinky .*\[kilobot\]" "$openswarm" templates
+check "templates, the C++ ones" 0 "threads-and-events-cpp +the paper's Listing 1 in C\+\+" "$openswarm" templates
 check "templates as JSON" 0 "\"name\": \"threads-and-events\"" "$openswarm" templates --json
 check "ports as JSON" 0 "\"ram_bytes\": 2048" "$openswarm" ports --json
 check "doctor, all there" 0 "Everything is in place" "$openswarm" doctor

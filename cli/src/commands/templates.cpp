@@ -1,4 +1,6 @@
 // openswarm templates: what `openswarm new` can start from.
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "../suggest.hpp"
@@ -19,8 +21,11 @@ void add_templates_command(CLI::App &app, const Paths &paths) {
                 out.push_back({{"name", t.name}, {"description", t.description}, {"ports", t.ports}});
             std::printf("%s\n", out.dump(2).c_str());
         } else {
+            int width = 0; // the longest name: descriptions line up in one column
+            for (const auto &t : all) width = std::max(width, static_cast<int>(t.name.size()));
             for (const auto &t : all)
-                std::printf("%-19s %s [%s]\n", t.name.c_str(), t.description.c_str(), join(t.ports).c_str());
+                std::printf("%-*s  %s [%s]\n", width, t.name.c_str(), t.description.c_str(),
+                            join(t.ports).c_str());
         }
         exit_code = EXIT_OK;
     });
