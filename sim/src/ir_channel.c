@@ -1,19 +1,27 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
-/* The IR channel between robots: every robot hears every other.
+/* The IR channel between robots: a robot hears every other within range.
  *
  * A flash of a robot's IR LED (PB0 high) drives the analog comparator of
- * every other robot (AIN0 above AIN1) at the same cycle: if the receiver is
+ * every other robot within --ir-range (AIN0 above AIN1) at the same cycle;
+ * robots farther away see nothing, so they neither receive the frame nor
+ * sense it as carrier, and frames collide only where both senders reach.
+ * The pairs in range are listed once, when the robots are placed: a flash
+ * costs one step per receiver in range, nothing per cycle. If the receiver is
  * behind in its lockstep window the edge is scheduled at that cycle,
  * otherwise as soon as it can be (at most a window late, a quarter bit).
  * Edges to one receiver stay at least EDGE_GAP cycles apart: simavr 1.6
  * updates the comparator a cycle after its input changes, and a second
  * change before that update (two edges closer than the instruction being
  * executed) replaces the first: the pulse would vanish.
- * The distance sensors (ADC0 high gain, ADC1 low gain) read what a robot
- * at --distance millimetres would. */
+ * The distance sensors (ADC0 high gain, ADC1 low gain) read what the
+ * sender of the last flash would give at its distance: the firmware samples
+ * them during a frame (after its start and stop pulses, ports/kilobot/src/
+ * devices/ir.c), so they show the robot whose frame is being received.
+ * Before the first flash they read 0 V, as in the dark. */
 #include <avr_acomp.h>
 #include <avr_adc.h>
 #include <avr_ioport.h>
+#include <math.h>
 #include <sim_cycle_timers.h>
 #include <sim_io.h>
 
@@ -23,31 +31,47 @@
 #define LIT_MV 1000
 #define EDGE_GAP 8
 
+typedef struct ir_link ir_link;
+
 /* One edge on its way from a sender to a receiver; rises and falls have
  * their own, so a pending rise is never replaced by its fall. */
 typedef struct ir_edge {
-    robot *to;
+    ir_link *link;
     uint32_t level; /* AIN0 millivolts to apply */
 } ir_edge;
 
-typedef struct ir_link {
-    ir_edge edge[2]; /* [0] fall, [1] rise */
-    avr_cycle_count_t next_free; /* earliest receiver cycle for the next edge */
-} ir_link;
+/* A sender and one receiver in its range. */
+struct ir_link {
+    robot *to;
+    uint32_t high_gain_mv, low_gain_mv; /* the receiver's distance sensors, from this sender */
+    ir_edge edge[2];                    /* [0] fall, [1] rise */
+    avr_cycle_count_t next_free;        /* earliest receiver cycle for the next edge */
+};
 
-static robot *robots_of;
-static int n_robots;
-static ir_link links[MAX_ROBOTS * MAX_ROBOTS];
+/* links[s][0 .. n_links[s] - 1]: the receivers sender s reaches. */
+static ir_link links[MAX_ROBOTS][MAX_ROBOTS - 1];
+static int n_links[MAX_ROBOTS];
+/* The link each robot's distance sensors read now, NULL before any. */
+static const ir_link *sensed[MAX_ROBOTS];
 
-static void apply(robot *to, uint32_t millivolts) {
-    avr_raise_irq(avr_io_getirq(to->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0), millivolts);
+static void set_input(avr_t *avr, uint32_t ioctl, int irq, uint32_t millivolts) {
+    avr_raise_irq(avr_io_getirq(avr, ioctl, irq), millivolts);
+}
+
+static void sense(const ir_link *l) {
+    if (sensed[l->to->index] == l) return;
+    sensed[l->to->index] = l;
+    avr_t *avr = l->to->avr;
+    set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0, l->high_gain_mv);
+    set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1, l->low_gain_mv);
 }
 
 static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void *param) {
     (void)avr;
     (void)when;
     ir_edge *e = param;
-    apply(e->to, e->level);
+    if (e->level != 0) sense(e->link);
+    set_input(e->link->to->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, e->level);
     return 0;
 }
 
@@ -55,13 +79,10 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     robot *from = param;
     avr_cycle_count_t sent = from->avr->cycle;
-    for (int j = 0; j < n_robots; j++) {
-        robot *to = &robots_of[j];
-        if (to == from) continue;
-        ir_link *l = &links[from->index * MAX_ROBOTS + j];
+    for (int k = 0; k < n_links[from->index]; k++) {
+        ir_link *l = &links[from->index][k];
         ir_edge *e = &l->edge[value ? 1 : 0];
-        e->to = to;
-        e->level = value ? LIT_MV : 0;
+        robot *to = l->to;
         avr_cycle_count_t now = to->avr->cycle;
         avr_cycle_count_t at = sent > now ? sent : now;
         if (at < l->next_free) at = l->next_free;
@@ -72,8 +93,6 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
 
 /* ADC readings (0..1023) a receiver gets from a sender d mm away: the high
  * gain amplifier saturates close by, the low gain one reaches further. */
-int ir_high_gain_reading(int mm);
-int ir_low_gain_reading(int mm);
 int ir_high_gain_reading(int mm) {
     int v = 1023 * 40 / (mm > 0 ? mm : 1);
     return v > 1023 ? 1023 : v;
@@ -87,18 +106,27 @@ static uint32_t millivolts_of(const robot *r, int reading) {
     return (uint32_t)reading * r->avr->avcc / 1024u;
 }
 
-void ir_channel_attach(robot *all, int n, int distance_mm) {
-    robots_of = all;
-    n_robots = n;
+/* List the receivers sender s reaches, with what their sensors read. */
+static void link_sender(robot *all, int n, int s, const placement *p, int range_mm) {
+    for (int j = 0; j < n; j++) {
+        double mm = placement_distance(p, s, j);
+        if (j == s || mm > range_mm) continue;
+        ir_link *l = &links[s][n_links[s]++];
+        l->to = &all[j];
+        l->edge[0] = (ir_edge){l, 0};
+        l->edge[1] = (ir_edge){l, LIT_MV};
+        l->high_gain_mv = millivolts_of(l->to, ir_high_gain_reading((int)lround(mm)));
+        l->low_gain_mv = millivolts_of(l->to, ir_low_gain_reading((int)lround(mm)));
+    }
+}
+
+void ir_channel_attach(robot *all, int n, const placement *p, int range_mm) {
     for (int i = 0; i < n; i++) {
         robot *r = &all[i];
         avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
                                 tx_pin, r);
-        avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1), AIN1_MV);
-        avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0), 0);
-        avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0),
-                      millivolts_of(r, ir_high_gain_reading(distance_mm)));
-        avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1),
-                      millivolts_of(r, ir_low_gain_reading(distance_mm)));
+        set_input(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1, AIN1_MV);
+        set_input(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, 0);
+        link_sender(all, n, i, p, range_mm);
     }
 }

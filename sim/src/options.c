@@ -7,6 +7,17 @@
 
 #include "sim.h"
 
+#define DEFAULT_DISTANCE_MM 50
+#define DEFAULT_IR_RANGE_MM 100 /* a Kilobot hears neighbours up to about 10 cm away */
+
+/* The options that place the robots; at most one of them is given. */
+typedef struct placement_options {
+    int distance_mm;       /* -1: not given */
+    const char *line;      /* --line SPACING */
+    const char *positions; /* --positions FILE */
+    int robots_given;
+} placement_options;
+
 static void usage(FILE *out) {
     fprintf(out,
             "usage: openswarm-sim [options] FIRMWARE.elf\n"
@@ -22,6 +33,11 @@ static void usage(FILE *out) {
             "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
             "                       straight (left and right motor), 0..255 each\n"
             "  -d, --distance MM    distance between every two robots (default 50 mm)\n"
+            "      --line SPACING   robots on a line, SPACING mm (33 or more) apart\n"
+            "      --positions FILE where each robot stands: one \"x y\" line in mm per robot,\n"
+            "                       '#' starts a comment; --robots defaults to the count\n"
+            "      --ir-range MM    a robot hears senders at most MM away (default 100,\n"
+            "                       a Kilobot's IR range), 10..1000\n"
             "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
             "                       (run, sleep, wakeup, reset, voltage, charge); repeatable.\n"
             "                       Robots start as if it had just sent run.\n"
@@ -77,6 +93,20 @@ static int parse_time(const char *text, options *o) {
     return 0;
 }
 
+static int place_robots(const placement_options *given, options *o) {
+    int ways = (given->distance_mm >= 0) + (given->line != NULL) + (given->positions != NULL);
+    if (ways > 1) {
+        fprintf(stderr, "openswarm-sim: --distance, --line and --positions each place the robots: "
+                        "give only one of them\n");
+        return -1;
+    }
+    if (given->line != NULL) return placement_line(&o->place, o->robots, given->line);
+    if (given->positions != NULL)
+        return placement_file(&o->place, given->positions, &o->robots, given->robots_given);
+    placement_all_at(&o->place, given->distance_mm >= 0 ? given->distance_mm : DEFAULT_DISTANCE_MM);
+    return 0;
+}
+
 int parse_options(int argc, char **argv, options *o) {
     static const struct option longopts[] = {
         {"time", required_argument, 0, 't'},       {"robots", required_argument, 0, 'n'},
@@ -88,11 +118,14 @@ int parse_options(int argc, char **argv, options *o) {
         {"temperature", required_argument, 0, 'E'}, {"gdb", required_argument, 0, 'G'},
         {"vcd", required_argument, 0, 'W'},        {"help", no_argument, 0, 'h'},
         {"distance", required_argument, 0, 'd'},   {"ohc", required_argument, 0, 'O'},
+        {"line", required_argument, 0, 'N'},       {"positions", required_argument, 0, 'P'},
+        {"ir-range", required_argument, 0, 'I'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
     o->robots = 1;
-    o->distance_mm = 50;
+    o->ir_range_mm = DEFAULT_IR_RANGE_MM;
+    placement_options place = {-1, NULL, NULL, 0};
     o->uid = -1;
     o->light_mv = o->voltage_mv = o->temperature_mv = -1;
     for (int i = 0; i < 4; i++) o->calibration[i] = -1;
@@ -101,9 +134,12 @@ int parse_options(int argc, char **argv, options *o) {
     while ((c = getopt_long(argc, argv, "t:n:d:sqmi:h", longopts, NULL)) != -1) {
         switch (c) {
         case 't': if (parse_time(optarg, o) != 0) return -1; break;
-        case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; break;
+        case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; place.robots_given = 1; break;
         case 's': o->expect_stop = 1; break;
-        case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; o->distance_mm = (int)v; break;
+        case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; break;
+        case 'N': place.line = optarg; break;
+        case 'P': place.positions = optarg; break;
+        case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'i':
@@ -138,6 +174,7 @@ int parse_options(int argc, char **argv, options *o) {
         fprintf(stderr, "openswarm-sim: expected one FIRMWARE.elf (see --help)\n");
         return -1;
     }
+    if (place_robots(&place, o) != 0) return -1;
     if (o->robots > 1 && (o->gdb_port != 0 || o->vcd != NULL)) {
         fprintf(stderr, "openswarm-sim: --gdb and --vcd follow one robot: drop --robots\n");
         return -1;

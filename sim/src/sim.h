@@ -34,6 +34,13 @@ typedef struct ohc_message {
     uint8_t type;
 } ohc_message;
 
+/* Where the robots stand, in millimetres. */
+typedef struct placement {
+    int has_positions; /* 0: every pair distance_mm apart */
+    int distance_mm;
+    double x_mm[MAX_ROBOTS], y_mm[MAX_ROBOTS];
+} placement;
+
 typedef struct options {
     const char *elf;
     double seconds;
@@ -49,7 +56,8 @@ typedef struct options {
     const char *vcd;
     int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
-    int distance_mm;    /* between every two robots */
+    placement place;    /* --distance (default), --line or --positions */
+    int ir_range_mm;    /* a robot hears senders this close or closer */
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
@@ -57,6 +65,13 @@ typedef struct options {
 
 /* options.c */
 int parse_options(int argc, char **argv, options *o);
+
+/* placement.c: --distance, --line SPACING, --positions FILE (robots is
+ * set to the file's count; it must match when robots_given) */
+void placement_all_at(placement *p, int distance_mm);
+int placement_line(placement *p, int robots, const char *spacing_text);
+int placement_file(placement *p, const char *path, int *robots, int robots_given);
+double placement_distance(const placement *p, int a, int b);
 
 /* A line-buffered text output of one robot (its console or serial port). */
 typedef struct console {
@@ -113,8 +128,8 @@ void board_configure(avr_t *avr, const options *o, int index);
 /* measure.c: markers and interrupt timestamps */
 int measure_attach(robot *r, const options *o);
 
-/* ir_channel.c: every robot hears every other's IR LED */
-void ir_channel_attach(robot *all, int n, int distance_mm);
+/* ir_channel.c: every robot hears the IR LED of every other within range */
+void ir_channel_attach(robot *all, int n, const placement *p, int range_mm);
 /* The readings that model, for the calibration tables a robot keeps. */
 int ir_high_gain_reading(int mm);
 int ir_low_gain_reading(int mm);
