@@ -13,6 +13,10 @@ struct RunOptions {
     std::string time = "10";
     int robots = 1;
     int distance = 50;
+    std::string line;      // --line SPACING: robots on a line
+    std::string positions; // --positions FILE: one "x y" per robot
+    int ir_range = 0;      // 0: the simulator's default
+    bool robots_given = false;
     int gdb = 0;
     std::string vcd;
 };
@@ -27,9 +31,14 @@ int run_app(const RunOptions &o, const Paths &paths) {
     }
     std::string seconds = o.time;
     if (!seconds.empty() && seconds.back() == 's') seconds.pop_back();
-    std::vector<std::string> argv = {paths.simulator.string(), "--trace", "--time", seconds,
-                                     "--robots", std::to_string(o.robots),
-                                     "--distance", std::to_string(o.distance)};
+    std::vector<std::string> argv = {paths.simulator.string(), "--trace", "--time", seconds};
+    // With --positions the file's line count is the number of robots.
+    if (o.positions.empty() || o.robots_given)
+        argv.insert(argv.end(), {"--robots", std::to_string(o.robots)});
+    if (!o.line.empty()) argv.insert(argv.end(), {"--line", o.line});
+    else if (!o.positions.empty()) argv.insert(argv.end(), {"--positions", o.positions});
+    else argv.insert(argv.end(), {"--distance", std::to_string(o.distance)});
+    if (o.ir_range != 0) argv.insert(argv.end(), {"--ir-range", std::to_string(o.ir_range)});
     if (o.gdb != 0) argv.insert(argv.end(), {"--gdb", std::to_string(o.gdb)});
     if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
     argv.push_back(built->image.string());
@@ -45,15 +54,28 @@ void add_run_command(CLI::App &app, const Paths &paths) {
     auto o = std::make_shared<RunOptions>();
     CLI::App *cmd = app.add_subcommand("run", "Build the app and run it in the simulator");
     cmd->add_option("-t,--time", o->time, "simulated time, seconds (e.g. 10 or 2.5s)")->capture_default_str();
-    cmd->add_option("-n,--robots", o->robots, "robots running the app together")
+    auto robots = cmd->add_option("-n,--robots", o->robots, "robots running the app together")
         ->check(CLI::Range(1, 64))->capture_default_str();
-    cmd->add_option("-d,--distance", o->distance, "millimetres between every two robots")
-        ->check(CLI::Range(10, 1000))->capture_default_str();
+    auto distance =
+        cmd->add_option("-d,--distance", o->distance, "millimetres between every two robots")
+            ->check(CLI::Range(10, 1000))->capture_default_str();
+    auto line =
+        cmd->add_option("--line", o->line, "place the robots on a line, SPACING millimetres apart")
+            ->type_name("SPACING")->excludes(distance);
+    cmd->add_option("--positions", o->positions,
+                    "place the robots where FILE says: one \"x y\" line (millimetres) per robot")
+        ->type_name("FILE")->excludes(distance)->excludes(line);
+    cmd->add_option("--ir-range", o->ir_range,
+                    "millimetres a robot's IR reaches (simulator default 100)")
+        ->check(CLI::Range(10, 1000));
     cmd->add_option("--gdb", o->gdb, "wait for avr-gdb on this TCP port")->check(CLI::Range(1, 65535));
     cmd->add_option("--vcd", o->vcd, "record pins and motors into this GTKWave file");
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
-    cmd->callback([o, &paths] { exit_code = run_app(*o, paths); });
+    cmd->callback([o, robots, &paths] {
+        o->robots_given = robots->count() > 0;
+        exit_code = run_app(*o, paths);
+    });
 }
 
 }  // namespace openswarm
