@@ -6,16 +6,12 @@
 sys_status Sys_Send_Event(sys_event_id event, const void *data, uint8_t size) {
     if (event >= OS_CFG_MAX_EVENTS || (data == NULL && size != 0)) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
-    sys_status st = SYS_OK;
-    if (!os_event_registered(event)) {
-        st = SYS_E_NOT_REGISTERED;
-    } else if (size > os_event_capacity(event)) {
-        st = SYS_E_TOO_BIG;
-    } else if (!os_event_queue_push(event, data, size)) {
+    sys_status st = os_event_admit(event, size);
+    if (st == SYS_OK && !os_event_queue_push(event, data, size)) {
         os.stats.event_queue_full++;
         st = SYS_E_QUEUE_FULL;
-    } else {
-        if (os.isr_depth == 0) os_schedule(); /* a thread's: handlers now; an ISR's: at its exit */
+    } else if (st == SYS_OK && os.isr_depth == 0) {
+        os_schedule(); /* a thread's: handlers now; an ISR's: at its exit */
     }
     port_irq_restore(s);
     return st;
@@ -25,12 +21,16 @@ sys_status Sys_Send_IntEvent(sys_event_id event, int16_t value) {
     return Sys_Send_Event(event, &value, (uint8_t)sizeof value);
 }
 
+/* The occurrence being dispatched. Only the system thread dispatches and
+ * a handler's sends are queued, never dispatched inside it, so one static
+ * copy serves (no stack frame on the way to the first handler). */
+static sys_event_data occurrence;
+
 /* Called by the system thread with interrupts masked. */
 void os_dispatch_one(void) {
-    sys_event_data data;
-    if (!os_event_queue_pop(&data)) return;
-    os_wake_waiters(&data);
-    os_run_handlers(&data);
+    if (!os_event_queue_pop(&occurrence)) return;
+    os_wake_waiters(&occurrence);
+    os_run_handlers(&occurrence);
 }
 
 static void dispatch_all(void) {

@@ -12,57 +12,50 @@ static uint8_t head; /* next byte to pop; os.queued_bytes follow it */
 
 void os_event_queue_reset(void) { head = os.queued_bytes = 0; }
 
-/* Copy n bytes into the ring at `at`, wrapping once if needed. */
-static void ring_write(uint8_t at, const uint8_t *src, uint8_t n) {
-    uint8_t *dst = &ring[at];
-    while (n-- != 0) {
-        *dst++ = *src++;
-        if (dst == &ring[QUEUE_BYTES]) dst = ring;
-    }
-}
+/* The ring index after i. */
+static inline uint8_t after(uint8_t i) { return (uint8_t)(i + 1u == QUEUE_BYTES ? 0u : i + 1u); }
 
-static uint8_t wrap(uint16_t index) {
+static inline uint8_t wrap(uint16_t index) {
     return (uint8_t)(index >= QUEUE_BYTES ? index - QUEUE_BYTES : index);
 }
 
+/* Byte by byte with the wrap test inline: occurrences are a few bytes, so
+ * this beats splitting the copy in two memcpy calls. */
 bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size) {
-    if ((uint16_t)os.queued_bytes + HEADER_BYTES + size > QUEUE_BYTES) return false;
-    uint8_t header[HEADER_BYTES] = {event, size};
-    uint8_t tail = wrap((uint16_t)head + os.queued_bytes);
-    ring_write(tail, header, HEADER_BYTES);
-    ring_write(wrap((uint16_t)tail + HEADER_BYTES), (const uint8_t *)data, size);
-    os.queued_bytes = (uint8_t)(os.queued_bytes + HEADER_BYTES + size);
-    if (os.queued_bytes > os.stats.event_queue_peak) os.stats.event_queue_peak = os.queued_bytes;
+    uint8_t used = os.queued_bytes;
+    if ((uint16_t)used + HEADER_BYTES + size > QUEUE_BYTES) return false;
+    uint8_t at = wrap((uint16_t)head + used);
+    ring[at] = event;
+    at = after(at);
+    ring[at] = size;
+    const uint8_t *src = (const uint8_t *)data;
+    for (uint8_t n = size; n != 0; n--) {
+        at = after(at);
+        ring[at] = *src++;
+    }
+    used = (uint8_t)(used + HEADER_BYTES + size);
+    os.queued_bytes = used;
+    if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
     return true;
 }
 
-/* Take n bytes from the head into dest (NULL: drop them). */
-static void ring_read(uint8_t *dest, uint8_t n) {
-    const uint8_t *src = &ring[head];
-    os.queued_bytes = (uint8_t)(os.queued_bytes - n);
-    while (n-- != 0) {
-        uint8_t byte = *src++;
-        if (src == &ring[QUEUE_BYTES]) src = ring;
-        if (dest != NULL) *dest++ = byte;
-    }
-    head = (uint8_t)(src - ring);
-}
-
-static uint8_t take_byte(void) {
-    uint8_t byte = ring[head];
-    head = (uint8_t)(head + 1u == QUEUE_BYTES ? 0u : head + 1u);
-    os.queued_bytes--;
-    return byte;
-}
-
 bool os_event_queue_pop(sys_event_data *out) {
-    sys_event_id event = take_byte();
-    uint8_t size = take_byte();
-    bool deliverable = os_event_registered(event) && size <= os_event_capacity(event);
-    ring_read(deliverable ? os_event_buffer(event) : NULL, size);
-    if (!deliverable) {
+    uint8_t at = head;
+    sys_event_id event = ring[at];
+    at = after(at);
+    uint8_t size = ring[at];
+    at = after(at);
+    os.queued_bytes = (uint8_t)(os.queued_bytes - HEADER_BYTES - size);
+    uint8_t *dest = os_event_keep(event, size, out);
+    if (dest == NULL) {
+        at = wrap((uint16_t)at + size); /* dropped: the event was unregistered meanwhile */
         os.stats.events_discarded++;
-        return false;
+    } else {
+        for (uint8_t n = size; n != 0; n--) {
+            *dest++ = ring[at];
+            at = after(at);
+        }
     }
-    return os_event_store(event, size, out);
+    head = at;
+    return dest != NULL;
 }

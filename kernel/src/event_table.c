@@ -55,7 +55,10 @@ bool os_event_registered(sys_event_id event) {
     return event < OS_CFG_MAX_EVENTS && events[event].size != UNREGISTERED;
 }
 
-uint8_t os_event_capacity(sys_event_id event) { return events[event].capacity; }
+sys_status os_event_admit(sys_event_id event, uint8_t size) {
+    if (!os_event_registered(event)) return SYS_E_NOT_REGISTERED;
+    return size > events[event].capacity ? SYS_E_TOO_BIG : SYS_OK;
+}
 
 /* Find capacity bytes: a block left by an unregistered event, or new arena. */
 static bool take_data_block(event_slot *slot, uint8_t capacity) {
@@ -232,17 +235,16 @@ bool os_event_has_listeners(sys_event_id event) {
     return false;
 }
 
-bool os_event_store(sys_event_id event, uint8_t size, sys_event_data *out) {
+uint8_t *os_event_keep(sys_event_id event, uint8_t size, sys_event_data *out) {
+    if (event >= OS_CFG_MAX_EVENTS) return NULL;
     event_slot *slot = &events[event];
-    if (slot->size == UNREGISTERED || size > slot->capacity) return false;
+    if (slot->size == UNREGISTERED || size > slot->capacity) return NULL;
     slot->size = size;
     out->value = slot->data;
     out->size = size;
     out->event = event;
-    return true;
+    return slot->data != NULL ? slot->data : arena; /* capacity 0: nothing is copied */
 }
-
-uint8_t *os_event_buffer(sys_event_id event) { return events[event].data; }
 
 /* Runs in the system thread with interrupts masked; each handler runs with
  * interrupts enabled. Handlers subscribed during the dispatch wait for the

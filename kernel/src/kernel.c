@@ -59,5 +59,5 @@ void Sys_Stop_Kernel(void) {
 void os_isr_enter(void) { os.isr_depth++; }
 
 void os_isr_exit(void) {
-    if (--os.isr_depth == 0) os_schedule();
+    if (--os.isr_depth == 0) os_schedule_after_interrupt();
 }

@@ -5,6 +5,15 @@
 #include "openswarm/kernel.h"
 #include "openswarm/port.h"
 
+/* Small functions on the scheduling and dispatch paths: inlined even where
+ * -Os would rather call them, because a call and its register saves cost
+ * more cycles than their bodies. */
+#if defined(__GNUC__)
+#define OS_HOT inline __attribute__((always_inline))
+#else
+#define OS_HOT inline
+#endif
+
 /* State of an unused thread slot (never visible through the API). */
 #define OS_SLOT_FREE 0xFFu
 #define OS_SYSTEM (&os.threads[0])
@@ -71,10 +80,10 @@ typedef struct os_kernel {
 
 extern os_kernel os;
 
-static inline bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
+static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
 
 /* Has the system thread work to do (on every scheduling decision)? */
-static inline bool os_system_work_pending(void) {
+static OS_HOT bool os_system_work_pending(void) {
     return (os.queued_bytes | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
 }
 
@@ -88,6 +97,7 @@ void os_scheduler_reset(void);
 void os_make_ready(sys_tcb *t);
 void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
+void os_schedule_after_interrupt(void); /* the same, as the outermost interrupt ends */
 sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
 void os_switch_to(sys_tcb *next);
 
@@ -95,23 +105,37 @@ void os_switch_to(sys_tcb *next);
 void os_stack_pool_reset(void);
 uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size);
 void os_stack_free(uint8_t *stack, os_block_count blocks);
-bool os_stack_guard_intact(const sys_tcb *t);
+/* The pattern in the lowest bytes of every thread stack; checked at every
+ * scheduling decision a thread makes and at every tick, so overwriting it
+ * (an overflow) is caught. Compared byte by byte
+ * against constants: a dozen cycles on an 8-bit CPU, not a memcmp call. */
+#define OS_STACK_GUARD_BYTES 4u
+#define OS_STACK_GUARD {0xA5u, 0x5Au, 0xC3u, 0x3Cu}
+static OS_HOT bool os_stack_guard_intact(const sys_tcb *t) {
+    static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
+    const uint8_t *g = t->stack;
+    return g == NULL || (g[0] == guard[0] && g[1] == guard[1] && g[2] == guard[2] && g[3] == guard[3]);
+}
+
+void os_stop_if_overflowed(sys_tcb *t);
 
 /* event_table.c */
 void os_event_table_reset(void);
 bool os_event_registered(sys_event_id event);
-uint8_t os_event_capacity(sys_event_id event);
+/* May an occurrence of size bytes be sent: SYS_OK, or why not. */
+sys_status os_event_admit(sys_event_id event, uint8_t size);
 bool os_event_has_listeners(sys_event_id event);
 void os_subscriptions_remove_thread(sys_pid pid);
-/* Store an occurrence as the event's kept data; false if it no longer fits. */
-bool os_event_store(sys_event_id event, uint8_t size, sys_event_data *out);
-uint8_t *os_event_buffer(sys_event_id event);
+/* Make an occurrence of size bytes the event's kept data, describe it in
+ * *out and return where its bytes go; NULL if it no longer fits (the event
+ * was unregistered or registered again smaller since it was sent). */
+uint8_t *os_event_keep(sys_event_id event, uint8_t size, sys_event_data *out);
 void os_run_handlers(const sys_event_data *data);
 
 /* event_queue.c */
 void os_event_queue_reset(void);
 bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size);
-static inline bool os_event_queue_empty(void) { return os.queued_bytes == 0; }
+static OS_HOT bool os_event_queue_empty(void) { return os.queued_bytes == 0; }
 /* Pop one occurrence into the event's kept data and describe it in *out;
  * false if it had to be discarded (event unregistered meanwhile). */
 bool os_event_queue_pop(sys_event_data *out);

@@ -37,7 +37,7 @@ void os_ready_remove(sys_tcb *t) {
     }
 }
 
-static sys_tcb *ready_pop(void) {
+static inline sys_tcb *ready_pop(void) {
     sys_tcb *t = os.ready;
     if (t != NULL) {
         os.ready = t->next;
@@ -50,7 +50,7 @@ static sys_tcb *ready_pop(void) {
 
 /* Should the running (or preempted) thread t give up the CPU to the ready
  * list's head? */
-static bool must_rotate(const sys_tcb *t) {
+static inline bool must_rotate(const sys_tcb *t) {
     if (os.ready == NULL) {
         if (os.slice_expired) { /* nobody is waiting: renew the slice */
             os.slice_expired = false;
@@ -83,28 +83,39 @@ void os_switch_to(sys_tcb *next) {
     port_switch(&prev->ctx, &next->ctx);
 }
 
+/* Who runs after cur, which still could run; NULL if cur goes on. */
+static inline sys_tcb *successor_of_running(sys_tcb *cur) {
+    if (os_system_work_pending()) { /* cur resumes once the work is done */
+        cur->state = SYS_PROCESS_READY;
+        os.preempted = cur;
+        return OS_SYSTEM;
+    }
+    if (!must_rotate(cur)) return NULL;
+    os_make_ready(cur);
+    return ready_pop(); /* cur again if it still comes first */
+}
+
+/* The decision for the running thread cur (not the system thread). */
+static void decide(sys_tcb *cur) {
+    if (cur->state == SYS_PROCESS_RUNNING) {
+        if (os.lock_depth != 0) return; /* postponed */
+        if (!os_event_queue_empty()) os_dispatch_on_system_stack(); /* may kill cur */
+    }
+    sys_tcb *next = cur->state == SYS_PROCESS_RUNNING ? successor_of_running(cur) : os_choose_next();
+    if (next != NULL) os_switch_to(next);
+}
+
 void os_schedule(void) {
     sys_tcb *cur = os.current;
     if (cur == OS_SYSTEM || os.isr_depth != 0) return; /* the system loop decides */
-    if (cur->state == SYS_PROCESS_RUNNING && os.lock_depth != 0) return; /* postponed */
-    if (cur->state != SYS_PROCESS_ZOMBIE && !os_stack_guard_intact(cur)) {
-        os.stats.stack_overflows++;
-        os_fault(SYS_FAULT_STACK_OVERFLOW, cur->pid);
-        os_terminate(cur); /* a thread about to block is caught too */
-    }
-    if (cur->state == SYS_PROCESS_RUNNING && !os_event_queue_empty())
-        os_dispatch_on_system_stack(); /* a handler may kill cur: checked below */
-    if (cur->state == SYS_PROCESS_RUNNING) {
-        if (os_system_work_pending()) {
-            cur->state = SYS_PROCESS_READY;
-            os.preempted = cur;
-        } else if (must_rotate(cur)) {
-            os_make_ready(cur);
-        } else {
-            return;
-        }
-    }
-    os_switch_to(os_choose_next());
+    if (os.lock_depth == 0 && !os_stack_guard_intact(cur))
+        os_stop_if_overflowed(cur); /* before it runs on or blocks */
+    decide(cur);
+}
+
+/* An interrupt's end costs no guard check: the tick makes one. */
+void os_schedule_after_interrupt(void) {
+    if (os.current != OS_SYSTEM) decide(os.current);
 }
 
 sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {

@@ -6,6 +6,7 @@ void os_tick(void) {
     if (os.current != OS_SYSTEM || os.preempted != NULL) {
         if (os.slice_left != 0 && --os.slice_left == 0) os.slice_expired = true;
     }
+    if (os.lock_depth == 0 && !os_stack_guard_intact(os.current)) os_stop_if_overflowed(os.current);
     os_check_timeouts();
     if (os_event_registered(SYS_EVENT_1MS_TIMER) && os_event_has_listeners(SYS_EVENT_1MS_TIMER)) {
         uint32_t now = os.now_ms;

@@ -4,8 +4,6 @@
  * same event and each is woken with its own copy of the data. */
 #include "kernel_internal.h"
 
-#include <string.h>
-
 static sys_status block_current(os_wait *w) {
     if (w->event != OS_NO_EVENT) os.event_waiters++;
     os.current->wait = w;
@@ -70,27 +68,34 @@ sys_status Sys_Sleep(uint32_t ms) {
 }
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */
-void os_wait_abandon(sys_tcb *t) {
-    if (t->wait != NULL && t->wait->event != OS_NO_EVENT) os.event_waiters--;
+static inline void leave_wait(sys_tcb *t) {
+    if (t->wait->event != OS_NO_EVENT) os.event_waiters--;
     t->wait = NULL;
 }
 
-static void wake(sys_tcb *t, sys_status status) {
+void os_wait_abandon(sys_tcb *t) {
+    if (t->wait != NULL) leave_wait(t);
+}
+
+static inline void wake(sys_tcb *t, sys_status status) {
     t->wait->status = status;
-    os_wait_abandon(t);
+    leave_wait(t);
     os_make_ready(t);
 }
 
-/* Dispatch of one occurrence: wake every thread whose wait it satisfies. */
+/* Dispatch of one occurrence: wake every thread whose wait it satisfies.
+ * A thread's wait is set exactly while it is blocked. */
 void os_wake_waiters(const sys_event_data *data) {
     if (os.event_waiters == 0) return; /* the common case costs one test */
-    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
-        sys_tcb *t = &os.threads[i];
+    sys_event_id event = data->event;
+    for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait;
-        if (t->state != SYS_PROCESS_BLOCKED || w == NULL || w->event != data->event) continue;
+        if (w == NULL || w->event != event) continue;
         if (w->condition != NULL && !w->condition(data)) continue;
-        uint8_t n = data->size < w->capacity ? data->size : w->capacity;
-        if (n != 0) memcpy(w->buffer, data->value, n);
+        const uint8_t *src = (const uint8_t *)data->value;
+        uint8_t *dst = w->buffer;
+        for (uint8_t n = data->size < w->capacity ? data->size : w->capacity; n != 0; n--)
+            *dst++ = *src++; /* a few bytes: no memcpy call */
         w->size = data->size;
         wake(t, data->size > w->capacity ? SYS_E_TRUNCATED : SYS_OK);
     }

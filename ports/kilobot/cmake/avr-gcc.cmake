@@ -28,14 +28,16 @@ set(_lto "")
 if(OPENSWARM_LTO)
   set(_lto "-flto")
 endif()
-set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os ${_lto} -ffunction-sections -fdata-sections")
+# -mrelax lets the linker shorten calls and jumps that reach (rcall/rjmp):
+# two bytes and a cycle each.
+set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os ${_lto} -mrelax -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${_avr_flags}")
 set(CMAKE_CXX_FLAGS_INIT "${_avr_flags} -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
 # --undefined keeps the .mmcu record simavr reads; it must sit where
 # simavr 1.6 looks for it, or it crashes at load.
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-mmcu=${OPENSWARM_MCU} -Os ${_lto} -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
+    "-mmcu=${OPENSWARM_MCU} -Os ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
 set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
