@@ -99,9 +99,11 @@ static inline sys_tcb *successor_of_running(sys_tcb *cur) {
 static void decide(sys_tcb *cur) {
     if (cur->state == SYS_PROCESS_RUNNING) {
         if (os.lock_depth != 0) return; /* postponed */
-        if (!os_event_queue_empty()) os_dispatch_on_system_stack(); /* may kill cur */
+        /* Events first, on the system stack; a handler may kill cur. */
+        if (!os_event_queue_empty()) os_dispatch_on_system_stack();
     }
-    sys_tcb *next = cur->state == SYS_PROCESS_RUNNING ? successor_of_running(cur) : os_choose_next();
+    sys_tcb *next =
+        cur->state == SYS_PROCESS_RUNNING ? successor_of_running(cur) : os_choose_next();
     if (next != NULL) os_switch_to(next);
 }
 
