@@ -10,27 +10,30 @@
 
 message_t message;
 volatile uint8_t hops = UNKNOWN;
+volatile uint8_t announced = UNKNOWN; /* the count message holds */
 
 void setup(void) {
     message.type = NORMAL;
     if (kilo_uid == ORIGIN_UID) hops = 0;
 }
 
+/* The message changes only here, as in classic programs: message_tx runs
+ * on a small stack (an interrupt in the classic library) and only points
+ * at it. A frame sent while it changes fails its CRC and is dropped by
+ * the receivers; the next one carries the new count. */
 void loop(void) {
     static const uint8_t colours[] = {RGB(3, 0, 0), RGB(0, 3, 0), RGB(0, 0, 3), RGB(3, 3, 3)};
     uint8_t h = hops;
+    if (h != announced) {
+        message.data[0] = h;
+        message.crc = message_crc(&message);
+        announced = h;
+    }
     set_color(h == UNKNOWN ? RGB(0, 0, 0) : colours[h < 3 ? h : 3]);
     delay(50);
 }
 
-/* The message is filled here, inside the transmitter's interrupt, so loop()
- * never changes it while it is on the air. */
-message_t *message_tx(void) {
-    if (hops == UNKNOWN) return 0;
-    message.data[0] = hops;
-    message.crc = message_crc(&message);
-    return &message;
-}
+message_t *message_tx(void) { return announced == UNKNOWN ? 0 : &message; }
 
 void message_rx(message_t *m, distance_measurement_t *d) {
     (void)d;
