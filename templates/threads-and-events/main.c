@@ -58,8 +58,14 @@ static void logger(void *arg) {
     (void)arg;
     for (;;) {
         Sys_Wait_for_Condition(SYS_EVENT_1MS_TIMER, wait250, NULL, 0, NULL);
-        printf("%lu:(%u,%u) primes %lu\n", (unsigned long)Sys_Get_SystemTime(), left, right,
-               (unsigned long)primes);
+        /* A consistent snapshot: no switch and no handler inside the section,
+         * so the 4-byte count and the two speeds are read whole. */
+        Sys_Start_CriticalSection();
+        uint32_t n = primes;
+        uint8_t l = left, r = right;
+        Sys_End_CriticalSection();
+        printf("%lu:(%u,%u) primes %lu\n", (unsigned long)Sys_Get_SystemTime(), l, r,
+               (unsigned long)n);
     }
 }
 
