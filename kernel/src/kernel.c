@@ -16,7 +16,6 @@ void Sys_Init_Kernel(void) {
     OS_SYSTEM->state = SYS_PROCESS_RUNNING;
     OS_SYSTEM->pid = SYS_PID_SYSTEM;
     os_scheduler_reset();
-    os_stack_pool_reset();
     os_event_table_reset();
     os_event_queue_reset();
     os_hal_reset();

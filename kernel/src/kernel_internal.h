@@ -102,9 +102,9 @@ sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
 void os_switch_to(sys_tcb *next);
 
 /* stack_pool.c */
-void os_stack_pool_reset(void);
+/* A stack of at least bytes (plus the port's extra and the guard), or NULL.
+ * It stays the thread's until the thread's stack pointer is cleared. */
 uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size);
-void os_stack_free(uint8_t *stack, os_block_count blocks);
 /* The pattern in the lowest bytes of every thread stack; checked at every
  * scheduling decision a thread makes and at every tick, so overwriting it
  * (an overflow) is caught. Compared byte by byte

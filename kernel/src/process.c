@@ -98,8 +98,7 @@ void os_reap_zombies(void) {
     for (uint8_t i = 1; i < OS_CFG_MAX_THREADS; i++) {
         sys_tcb *t = &os.threads[i];
         if (t->state != SYS_PROCESS_ZOMBIE) continue;
-        os_stack_free(t->stack, t->stack_blocks);
-        t->stack = NULL;
+        t->stack = NULL; /* frees it for os_stack_alloc */
         t->state = OS_SLOT_FREE;
         t->pid = (sys_pid)(t->pid + 0x10u); /* next generation */
         if (t->pid == SYS_PID_NONE) t->pid = (sys_pid)(t->pid + 0x10u); /* 0xFF means "none" */

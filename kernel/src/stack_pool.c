@@ -1,56 +1,53 @@
 /* Thread stacks, carved from one static pool in fixed-size blocks.
  *
- * A bitmap marks used blocks; a stack is a run of contiguous blocks, found
- * first-fit. Each stack's lowest bytes hold a guard pattern: a thread that
- * overflows its stack overwrites it, and the kernel checks it at every
- * scheduling decision a thread makes and at every tick. */
+ * The live threads' control blocks are the only record of what is used:
+ * each holds its stack and its length in blocks, and a thread keeps its
+ * stack until it is reaped. So the pool needs no bitmap. A new stack takes
+ * the lowest gap large enough (first fit); such a gap starts at the pool's
+ * start or right after a live stack, so those are the only places tried.
+ * Each stack's lowest bytes hold a guard pattern: a thread that overflows
+ * its stack overwrites it, and the kernel checks it at every scheduling
+ * decision a thread makes and at every tick. */
 #include "kernel_internal.h"
 
 #include <string.h>
 
 #define BLOCK ((size_t)OS_CFG_STACK_BLOCK_BYTES)
-#define BLOCKS OS_STACK_BLOCKS
+#define BLOCKS ((size_t)OS_STACK_BLOCKS)
 
 typedef char block_is_aligned[(OS_CFG_STACK_BLOCK_BYTES % PORT_STACK_ALIGN) == 0 ? 1 : -1];
 
 static uint8_t pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
-static uint8_t used[(BLOCKS + 7) / 8];
 
 static const uint8_t guard_pattern[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
 
-static bool block_used(size_t i) { return (used[i / 8] >> (i % 8)) & 1u; }
+static size_t first_block(const sys_tcb *t) { return (size_t)(t->stack - pool) / BLOCK; }
 
-static void mark(size_t first, size_t count, bool in_use) {
-    for (size_t i = first; i < first + count; i++) {
-        if (in_use)
-            used[i / 8] |= (uint8_t)(1u << (i % 8));
-        else
-            used[i / 8] &= (uint8_t)~(1u << (i % 8));
+/* Do blocks [first, first + count) lie in the pool, clear of every live stack? */
+static bool gap_is_free(size_t first, size_t count) {
+    if (first + count > BLOCKS) return false;
+    for (const sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
+        if (t->stack == NULL) continue;
+        size_t f = first_block(t);
+        if (first < f + t->stack_blocks && f < first + count) return false;
     }
+    return true;
 }
-
-void os_stack_pool_reset(void) { memset(used, 0, sizeof used); }
 
 uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size) {
     size_t need = ((size_t)bytes + PORT_STACK_EXTRA + OS_STACK_GUARD_BYTES + BLOCK - 1) / BLOCK;
-    size_t run = 0;
-    for (size_t i = 0; i < BLOCKS; i++) {
-        run = block_used(i) ? 0 : run + 1;
-        if (run == need) {
-            size_t first = i + 1 - need;
-            uint8_t *stack = &pool[first * BLOCK];
-            mark(first, need, true);
-            memcpy(stack, guard_pattern, OS_STACK_GUARD_BYTES);
-            *blocks = (os_block_count)need;
-            *size = need * BLOCK;
-            return stack;
-        }
+    size_t best = gap_is_free(0, need) ? 0 : BLOCKS; /* BLOCKS: no room */
+    for (const sys_tcb *t = &os.threads[1]; best != 0 && t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
+        if (t->stack == NULL) continue;
+        size_t after = first_block(t) + t->stack_blocks;
+        if (after < best && gap_is_free(after, need)) best = after;
     }
-    return NULL;
-}
-
-void os_stack_free(uint8_t *stack, os_block_count blocks) {
-    mark((size_t)(stack - pool) / BLOCK, blocks, false);
+    if (best == BLOCKS) return NULL;
+    uint8_t *stack = &pool[best * BLOCK];
+    memcpy(stack, guard_pattern, OS_STACK_GUARD_BYTES);
+    *blocks = (os_block_count)need;
+    *size = need * BLOCK;
+    return stack;
 }
 
 /* A thread whose stack guard is broken has overflowed: it is stopped

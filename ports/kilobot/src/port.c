@@ -22,12 +22,11 @@ void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*ent
     uint16_t start = (uint16_t)port_thread_start;
     *sp-- = (uint8_t)start; /* return address of port_switch's ret: low byte on top */
     *sp-- = (uint8_t)(start >> 8);
-    uint8_t regs[SWITCH_FRAME_REGISTERS] = {0}; /* r2..r17, r28, r29 */
-    regs[0] = (uint8_t)(uint16_t)entry;        /* r2 */
-    regs[1] = (uint8_t)((uint16_t)entry >> 8); /* r3 */
-    regs[2] = (uint8_t)(uint16_t)arg;          /* r4 */
-    regs[3] = (uint8_t)((uint16_t)arg >> 8);   /* r5 */
-    for (uint8_t i = 0; i < SWITCH_FRAME_REGISTERS; i++) *sp-- = regs[i];
+    *sp-- = (uint8_t)(uint16_t)entry; /* r2, r3: what port_thread_start calls */
+    *sp-- = (uint8_t)((uint16_t)entry >> 8);
+    *sp-- = (uint8_t)(uint16_t)arg; /* r4, r5: its argument */
+    *sp-- = (uint8_t)((uint16_t)arg >> 8);
+    for (uint8_t i = 4; i < SWITCH_FRAME_REGISTERS; i++) *sp-- = 0; /* r6..r17, r28, r29 */
     ctx->sp = sp;
 }
 
