@@ -30,11 +30,15 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     return debug_attach(r, o);
 }
 
+/* Fires again a cycle later until the next window re-registers it: simavr
+ * 1.6 fires due timers before it computes how long a sleeping robot
+ * sleeps, so a robot whose SLEEP ended right at the window's end would
+ * otherwise find this timer spent and sleep on to its next tick, thousands
+ * of cycles past the others (and hear their IR edges merged into one). */
 static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void *param) {
     (void)avr;
-    (void)when;
     (void)param;
-    return 0;
+    return when + 1;
 }
 
 /* Run every robot up to cycle end (or until it stops); 1 when all stopped.
