@@ -26,7 +26,10 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motor_processors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/debug_uart.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir.c
-    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/kilolib.c)
+    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/kilolib.c
+    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/overhead_controller.c
+    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/calibration.c
+    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/status_lights.c)
 
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)

@@ -2,6 +2,7 @@
 /* What a Kilobot's EEPROM and analog inputs hold, set before it runs. */
 #include <avr_adc.h>
 #include <avr_eeprom.h>
+#include <avr_ioport.h>
 #include <sim_io.h>
 
 #include "sim.h"
@@ -31,6 +32,8 @@ void board_configure(avr_t *avr, const options *o, int index) {
     set_analog(avr, ADC_IRQ_ADC7, o->light_mv);
     set_analog(avr, ADC_IRQ_ADC6, o->voltage_mv);
     set_analog(avr, ADC_IRQ_TEMP, o->temperature_mv);
+    /* The charger's status output holds PD0 high, low while it charges. */
+    avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN0), !o->charging);
     for (int i = 0; i < 4; i++) {
         if (o->calibration[i] < 0) continue;
         uint8_t v = (uint8_t)o->calibration[i];

@@ -16,6 +16,10 @@ static robot robots[MAX_ROBOTS];
 
 static int finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
 
+/* A robot that jumped to its bootloader (a BOOT message asks for it). The
+ * simulated flash is erased there: simavr 1.6 would run through it. */
+static int at_bootloader(const robot *r) { return r->avr->pc == KILOBOT_BOOTLOADER_ADDRESS; }
+
 static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     r->index = index;
     r->state = cpu_Running;
@@ -50,18 +54,26 @@ static int run_window(int n, avr_cycle_count_t end) {
         robot *r = &robots[i];
         if (n > 1 && !finished(r) && r->avr->cycle < end)
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
-        while (!finished(r) && r->avr->cycle < end) r->state = avr_run(r->avr);
+        while (!finished(r) && r->avr->cycle < end) {
+            r->state = avr_run(r->avr);
+            if (at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
+        }
         all_finished &= finished(r);
     }
     return all_finished;
 }
 
 static int report(int n, const options *o) {
-    int status = 0, crashed = 0, running = 0;
+    int status = 0, crashed = 0, running = 0, booted = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         double t = (double)r->avr->cycle / (double)r->avr->frequency;
-        if (r->state == cpu_Crashed) {
+        if (at_bootloader(r)) {
+            fprintf(stderr, "openswarm-sim: robot %d jumped to the bootloader (BOOT message) at "
+                            "%.6f s: on a robot the overhead controller would now reprogram it\n",
+                    r->index, t);
+            booted = 1;
+        } else if (r->state == cpu_Crashed) {
             fprintf(stderr, "openswarm-sim: %sthe firmware crashed at %.6f s (PC 0x%04x): a bad "
                             "jump or a stack overflow; run it with avr-gdb to see where\n",
                     r->console.prefix, t, (unsigned)r->avr->pc);
@@ -80,6 +92,7 @@ static int report(int n, const options *o) {
         }
     }
     if (crashed) return EXIT_CRASH;
+    if (booted) return EXIT_BOOTLOADER;
     if (running && o->expect_stop) return EXIT_TIMEOUT;
     if (running && !o->quiet)
         fprintf(stderr, "openswarm-sim: ran %.3f s of simulated time (%d robot%s)\n", o->seconds,

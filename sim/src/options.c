@@ -39,11 +39,15 @@ static void usage(FILE *out) {
             "      --ir-range MM    a robot hears senders at most MM away (default 100,\n"
             "                       a Kilobot's IR range), 10..1000\n"
             "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
-            "                       (run, sleep, wakeup, reset, voltage, charge); repeatable.\n"
+            "                       (run, sleep, wakeup, reset, voltage, charge, boot;\n"
+            "                       calibration: calib-uid:UID, calib-left:DUTY,\n"
+            "                       calib-right:DUTY, calib-straight:LEFT,RIGHT, calib-save;\n"
+            "                       readuid:BIT), e.g. --ohc calib-left:70@1; repeatable.\n"
             "                       Robots start as if it had just sent run.\n"
             "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
             "      --voltage MV     battery sense (ADC6) input, millivolts\n"
             "      --temperature MV internal temperature sensor input, millivolts\n"
+            "      --charging       the robots stand on their charger (it pulls PD0 low)\n"
             "      --gdb PORT       wait for avr-gdb on PORT (one robot)\n"
             "      --vcd FILE       record LED pins and motor PWM for GTKWave (one robot)\n"
             "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
@@ -51,7 +55,7 @@ static void usage(FILE *out) {
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
-            "or ELF, 3 a firmware crashed.\n");
+            "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot).\n");
 }
 
 /* A whole number in [lo, hi], or -1 after printing what was expected. */
@@ -119,7 +123,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"vcd", required_argument, 0, 'W'},        {"help", no_argument, 0, 'h'},
         {"distance", required_argument, 0, 'd'},   {"ohc", required_argument, 0, 'O'},
         {"line", required_argument, 0, 'N'},       {"positions", required_argument, 0, 'P'},
-        {"ir-range", required_argument, 0, 'I'},
+        {"ir-range", required_argument, 0, 'I'},   {"charging", no_argument, 0, 'H'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -159,6 +163,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'E': if ((v = number("--temperature", optarg, 0, 5000, "330")) < 0) return -1; o->temperature_mv = (int)v; break;
         case 'G': if ((v = number("--gdb", optarg, 1, 65535, "1234")) < 0) return -1; o->gdb_port = (int)v; break;
         case 'W': o->vcd = optarg; break;
+        case 'H': o->charging = 1; break;
         case 'O':
             if (o->n_ohc == MAX_OHC_MESSAGES) {
                 fprintf(stderr, "openswarm-sim: at most %d --ohc messages\n", MAX_OHC_MESSAGES);

@@ -1,8 +1,8 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
-/* The overhead controller: system messages (RUN, SLEEP, ...) broadcast to
- * every robot over IR at given times (--ohc NAME@SECONDS). Each robot gets
- * the frame's flashes at exact cycles, through its analog comparator, in
- * the same wire format robots use (see ports/kilobot/src/devices/ir.c). */
+/* The overhead controller: system messages (RUN, SLEEP, CALIB, ...)
+ * broadcast to every robot over IR at given times (--ohc NAME[:VALUES]@SECONDS).
+ * Each robot gets the frame's flashes at exact cycles, through its analog
+ * comparator, in the same wire format robots use (ports/kilobot/src/devices/ir.c). */
 #include <avr_acomp.h>
 #include <sim_cycle_timers.h>
 #include <sim_io.h>
@@ -18,38 +18,114 @@
 #define FLASH_CYCLES 12
 #define LIT_MV 1000
 
-static const struct {
+#define CALIB 0x8A
+#define NO_MODE (-1)
+
+/* The messages --ohc knows. A CALIB message's data holds the mode, the uid
+ * (little-endian) at 1, the duties to turn left at 3, right at 4 and go
+ * straight at 5 and 6 (KiloGUI's layout); READUID's the uid bit at 0. */
+typedef struct message_kind {
     const char *name;
     uint8_t type;
-} system_messages[] = {
-    {"reset", 0x83}, {"sleep", 0x84}, {"wakeup", 0x85}, {"charge", 0x86},
-    {"voltage", 0x87}, {"run", 0x88},
+    int mode;         /* data[0] of a CALIB message, NO_MODE otherwise */
+    int at, values;   /* data index of the first value, how many values */
+    long max;         /* each value 0..max; a value above 255 takes two bytes */
+    const char *form; /* what the values look like */
+    const char *example;
+} message_kind;
+
+static const message_kind kinds[] = {
+    {"run", 0x88, NO_MODE, 0, 0, 0, "", "run@1.5"},
+    {"sleep", 0x84, NO_MODE, 0, 0, 0, "", "sleep@1.5"},
+    {"wakeup", 0x85, NO_MODE, 0, 0, 0, "", "wakeup@1.5"},
+    {"reset", 0x83, NO_MODE, 0, 0, 0, "", "reset@1.5"},
+    {"voltage", 0x87, NO_MODE, 0, 0, 0, "", "voltage@1.5"},
+    {"charge", 0x86, NO_MODE, 0, 0, 0, "", "charge@1.5"},
+    {"boot", 0x80, NO_MODE, 0, 0, 0, "", "boot@1.5"},
+    {"calib-save", CALIB, 0, 0, 0, 0, "", "calib-save@3"},
+    {"calib-uid", CALIB, 1, 1, 1, 65535, "UID", "calib-uid:42@1"},
+    {"calib-left", CALIB, 2, 3, 1, 255, "DUTY", "calib-left:70@1"},
+    {"calib-right", CALIB, 3, 4, 1, 255, "DUTY", "calib-right:70@1"},
+    {"calib-straight", CALIB, 4, 5, 2, 255, "LEFT,RIGHT", "calib-straight:65,68@1"},
+    {"readuid", 0x89, NO_MODE, 0, 1, 15, "BIT", "readuid:0@1"},
 };
-#define N_SYSTEM_MESSAGES (sizeof system_messages / sizeof system_messages[0])
+#define N_KINDS (sizeof kinds / sizeof kinds[0])
+
+static const message_kind *kind_named(const char *name, size_t length) {
+    for (unsigned i = 0; i < N_KINDS; i++)
+        if (strlen(kinds[i].name) == length && strncmp(name, kinds[i].name, length) == 0)
+            return &kinds[i];
+    return NULL;
+}
+
+static void unknown_message(const char *text) {
+    fprintf(stderr, "openswarm-sim: --ohc '%s': expected MESSAGE@SECONDS with MESSAGE one of",
+            text);
+    for (unsigned i = 0; i < N_KINDS; i++)
+        fprintf(stderr, "%s %s%s%s", i == 0 ? "" : ",", kinds[i].name, *kinds[i].form ? ":" : "",
+                kinds[i].form);
+    fprintf(stderr, "; e.g. --ohc sleep@1.5\n");
+}
+
+/* ":V1,V2...", exactly k->values of them, from p up to end, into data. */
+static int parse_values(const message_kind *k, const char *p, const char *end, uint8_t *data) {
+    if (k->values == 0) return p == end ? 0 : -1;
+    for (int i = 0; i < k->values; i++) {
+        if (*p != (i == 0 ? ':' : ',')) return -1;
+        char *stop;
+        long v = strtol(++p, &stop, 10);
+        if (stop == p || v < 0 || v > k->max) return -1;
+        data[k->at + i] = (uint8_t)v;
+        if (k->max > 255) data[k->at + i + 1] = (uint8_t)(v >> 8);
+        p = stop;
+    }
+    return p == end ? 0 : -1;
+}
+
+static void kind_usage(const char *text, const message_kind *k) {
+    if (k->values == 0)
+        fprintf(stderr,
+                "openswarm-sim: --ohc '%s': expected %s@SECONDS (it takes no values), "
+                "e.g. --ohc %s\n",
+                text, k->name, k->example);
+    else
+        fprintf(stderr,
+                "openswarm-sim: --ohc '%s': expected %s:%s@SECONDS, values 0..%ld, "
+                "e.g. --ohc %s\n",
+                text, k->name, k->form, k->max, k->example);
+}
 
 int ohc_parse(const char *text, ohc_message *m) {
-    const char *at = strchr(text, '@');
-    if (at != NULL) {
-        for (unsigned i = 0; i < N_SYSTEM_MESSAGES; i++) {
-            size_t n = strlen(system_messages[i].name);
-            if ((size_t)(at - text) == n && strncmp(text, system_messages[i].name, n) == 0) {
-                char *end;
-                m->seconds = strtod(at + 1, &end);
-                m->type = system_messages[i].type;
-                if (*end == '\0' && m->seconds >= 0) return 0;
-            }
-        }
+    const char *at = strrchr(text, '@');
+    size_t length = strcspn(text, ":@");
+    const message_kind *k = kind_named(text, length);
+    if (k == NULL) {
+        unknown_message(text);
+        return -1;
     }
-    fprintf(stderr, "openswarm-sim: --ohc '%s': expected MESSAGE@SECONDS with MESSAGE one of "
-                    "run, sleep, wakeup, reset, voltage, charge; e.g. --ohc sleep@1.5\n", text);
-    return -1;
+    memset(m, 0, sizeof *m);
+    m->type = k->type;
+    if (k->mode != NO_MODE) m->data[0] = (uint8_t)k->mode;
+    if (at == NULL || parse_values(k, text + length, at, m->data) != 0) {
+        kind_usage(text, k);
+        return -1;
+    }
+    char *end;
+    m->seconds = strtod(at + 1, &end);
+    if (end == at + 1 || *end != '\0' || m->seconds < 0) {
+        fprintf(stderr, "openswarm-sim: --ohc '%s': expected seconds after '@', e.g. --ohc %s\n",
+                text, k->example);
+        return -1;
+    }
+    return 0;
 }
 
 /* CRC-16 CCITT as avr-libc's _crc_ccitt_update computes it (seed 0xFFFF). */
 static uint16_t crc_ccitt_update(uint16_t crc, uint8_t data) {
     data ^= (uint8_t)(crc & 0xFF);
     data ^= (uint8_t)(data << 4);
-    return (uint16_t)(((uint16_t)data << 8 | (crc >> 8)) ^ (uint8_t)(data >> 4) ^ ((uint16_t)data << 3));
+    return (uint16_t)(((uint16_t)data << 8 | (crc >> 8)) ^ (uint8_t)(data >> 4) ^
+                      ((uint16_t)data << 3));
 }
 
 static int slot_lit(const uint8_t *frame, int slot) {
@@ -62,8 +138,8 @@ static int slot_lit(const uint8_t *frame, int slot) {
 typedef struct broadcast {
     robot *to;
     uint8_t frame[FRAME_BYTES];
-    int slot;   /* next slot to consider */
-    int lit;    /* the LED is on now */
+    int slot; /* next slot to consider */
+    int lit;  /* the LED is on now */
 } broadcast;
 
 static void set_ain0(robot *r, uint32_t mv) {
@@ -92,6 +168,7 @@ static broadcast broadcasts[MAX_OHC_MESSAGES][MAX_ROBOTS];
 void ohc_attach(robot *all, int n, const options *o) {
     for (int k = 0; k < o->n_ohc; k++) {
         uint8_t frame[FRAME_BYTES] = {0};
+        memcpy(frame, o->ohc[k].data, sizeof o->ohc[k].data);
         frame[9] = o->ohc[k].type;
         uint16_t crc = 0xFFFF;
         for (int i = 0; i < 10; i++) crc = crc_ccitt_update(crc, frame[i]);

@@ -26,12 +26,17 @@
 #define MAX_ROBOTS 64
 #define MAX_OHC_MESSAGES 16
 
-enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4 };
+enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5 };
+
+/* Where a Kilobot's IR bootloader starts (a byte address): the ATmega328P's
+ * 4 KB boot section. The overhead controller's BOOT message jumps there. */
+#define KILOBOT_BOOTLOADER_ADDRESS 0x7000
 
 /* A system message the overhead controller broadcasts at a time. */
 typedef struct ohc_message {
     double seconds;
     uint8_t type;
+    uint8_t data[9];
 } ohc_message;
 
 /* Where the robots stand, in millimetres. */
@@ -55,6 +60,7 @@ typedef struct options {
     int gdb_port;       /* 0: no debugger */
     const char *vcd;
     int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
+    int charging;       /* on the charger: its status output (PD0) low */
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
     placement place;    /* --distance (default), --line or --positions */
     int ir_range_mm;    /* a robot hears senders this close or closer */
@@ -137,6 +143,7 @@ int ir_low_gain_reading(int mm);
 /* overhead_controller.c: system messages broadcast at given times */
 int ohc_parse(const char *text, ohc_message *m);
 void ohc_attach(robot *all, int n, const options *o);
+
 
 /* debug.c: avr-gdb and GTKWave */
 int debug_attach(robot *r, const options *o);

@@ -67,6 +67,8 @@ typedef struct kilobot_calibration {
     uint8_t turn_left, turn_right, straight_left, straight_right;
 } kilobot_calibration;
 extern kilobot_calibration kilobot_calib;
+/* Read kilobot_calib from the EEPROM (again, after calibration rewrote it). */
+void kilobot_calibration_load(void);
 
 /* Post-processor: a motion byte becomes calibrated duties, two bytes pass. */
 uint8_t kilobot_motor_commands(sys_device *dev, const void *in, uint8_t size, void *out,

@@ -7,12 +7,9 @@
 #include <string.h>
 #include <util/crc16.h>
 
-#include "openswarm/kernel.h"
+#include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
 
-#ifndef KILOLIB_LOOP_STACK
-#define KILOLIB_LOOP_STACK 192 /* bytes for setup() and loop(), beyond the port's frame */
-#endif
 #ifndef KILOLIB_TX_STACK
 #define KILOLIB_TX_STACK 64 /* for kilo_message_tx and kilo_message_tx_success */
 #endif
@@ -35,7 +32,6 @@ message_tx_success_t kilo_message_tx_success = no_tx_success;
 
 static void (*user_setup)(void);
 static void (*user_loop)(void);
-static sys_pid program_pid = SYS_PID_NONE; /* the thread running setup() and loop() */
 
 /* kilo_ticks advance TICKS_PER_SEC times a second, from the 1 ms tick:
  * every millisecond adds TICKS_PER_SEC thousandths of a tick. */
@@ -53,45 +49,24 @@ void kilo_init(void) {
     kilobot_devices_init();
     uint8_t osccal = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_OSCCAL);
     if (osccal != 0xFF) OSCCAL = osccal; /* an erased EEPROM keeps the factory value */
-    kilo_turn_left = kilobot_calib.turn_left; /* read by kilobot_devices_init */
-    kilo_turn_right = kilobot_calib.turn_right;
-    kilo_straight_left = kilobot_calib.straight_left;
-    kilo_straight_right = kilobot_calib.straight_right;
-    kilo_uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
+    kilolib_identity_load();
     /* The uid keeps robots apart even where sensor noise is alike (a simulator). */
     rand_seed((uint8_t)(rand_hard() ^ kilo_uid ^ (kilo_uid >> 8)));
 }
 
-static void program(void *arg) {
+void kilolib_identity_load(void) {
+    kilobot_calibration_load();
+    kilo_turn_left = kilobot_calib.turn_left;
+    kilo_turn_right = kilobot_calib.turn_right;
+    kilo_straight_left = kilobot_calib.straight_left;
+    kilo_straight_right = kilobot_calib.straight_right;
+    kilo_uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
+}
+
+void kilolib_program(void *arg) {
     (void)arg;
     user_setup();
     for (;;) user_loop();
-}
-
-static void program_start(void) {
-    if (Sys_Get_ProcessState(program_pid, 0) == SYS_OK) return; /* already running */
-    program_pid = SYS_PID_NONE;
-    Sys_Start_Process_Ex(program, 0, KILOLIB_LOOP_STACK, 0, &program_pid);
-}
-
-/* Stopped by the overhead controller: the program ends, the robot goes
- * still and dark until the next RUN starts it again from setup(). */
-static void program_stop(void) {
-    if (program_pid != SYS_PID_NONE) Sys_Kill_Process(program_pid);
-    program_pid = SYS_PID_NONE;
-    kilobot_motors_apply(0, 0);
-    kilobot_led_apply(0);
-}
-
-/* The overhead controller's messages. Boot loading, charging, voltage
- * display and calibration are not handled (they are ignored). */
-static void system_message(uint8_t type) {
-    switch (type) {
-    case RUN: program_start(); break;
-    case SLEEP:
-    case RESET: program_stop(); break;
-    default: break;
-    }
 }
 
 /* Messages from other robots reach kilo_message_rx; the overhead
@@ -103,7 +78,7 @@ static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d
     message_t msg;
     memcpy(msg.rawdata, rx->frame, sizeof msg.rawdata);
     if (msg.type >= SPECIAL) {
-        system_message(msg.type);
+        kilolib_system_message(&msg);
         return true;
     }
     distance_measurement_t dist = {rx->low_gain, rx->high_gain};
@@ -117,12 +92,13 @@ static uint16_t ms_of_ticks(uint16_t ticks) {
 
 /* Every kilo_tx_period (give or take a random 0-15 ms, so robots that
  * started together drift apart), kilo_message_tx's message (its crc set by
- * the program, as with the classic library) goes out; a busy channel is
- * tried again after a random few milliseconds. */
+ * the program, as with the classic library) goes out while the program
+ * runs; a busy channel is tried again after a random few milliseconds. */
 static void transmitter(void *arg) {
     (void)arg;
     for (;;) {
         Sys_Sleep(ms_of_ticks(kilo_tx_period) + (rand_soft() & 15u));
+        if (kilolib_activity() != RUN) continue;
         message_t *msg = kilo_message_tx();
         if (msg == 0) continue;
         while (kilobot_ir_transmit(msg->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
@@ -138,7 +114,7 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     tick_fraction = 0;
     kilobot_tick_hook = count_kilo_ticks;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
-    program_start();
+    kilolib_activity_start(RUN, kilolib_program);
     Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();

@@ -4,7 +4,6 @@
 
 #include <stdint.h>
 
-void kilobot_calibration_load(void);
 /* From now on, a motor at full power for more than limit_ms drops to
  * fallback (checked every 1 ms by kilobot_motors_tick). */
 void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback);

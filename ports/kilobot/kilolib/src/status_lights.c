@@ -1,0 +1,38 @@
+/* What the LED shows while the program is not running, as with the classic
+ * library: WAKEUP (and after RESET or SAVE) a short green flash every
+ * 200 ms, ready for RUN; CHARGE a short red flash while the charger
+ * charges, dark otherwise; VOLTAGE the battery level, steadily. */
+#include <avr/io.h>
+
+#include "kilolib_internal.h"
+
+#define FLASH_MS 1
+#define PERIOD_MS 200
+
+/* The battery level from its ADC6 reading: green full, blue good, yellow
+ * low, red nearly empty (the classic library's thresholds). */
+static uint8_t battery_colour(void) {
+    int16_t v;
+    while ((v = get_voltage()) < 0) delay(1); /* the converter was busy */
+    if (v > 682) return RGB(0, 3, 0);
+    if (v > 648) return RGB(0, 0, 3);
+    if (v > 614) return RGB(3, 3, 0);
+    return RGB(3, 0, 0);
+}
+
+/* The charger pulls PD0 low while it charges the battery. */
+static uint8_t charging(void) { return !(PIND & _BV(PD0)); }
+
+void kilolib_status_lights(void *arg) {
+    (void)arg;
+    const uint8_t shown = kilolib_activity();
+    for (;;) {
+        uint8_t colour = shown == VOLTAGE  ? battery_colour()
+                         : shown == CHARGE ? (charging() ? RGB(1, 0, 0) : 0)
+                                           : RGB(0, 3, 0);
+        set_color(colour);
+        delay(FLASH_MS);
+        if (shown != VOLTAGE) set_color(0);
+        delay(PERIOD_MS);
+    }
+}
