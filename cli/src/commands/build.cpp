@@ -24,18 +24,28 @@ bool toolchain_present(const std::string &port) {
     return false;
 }
 
-// Flash (text + data) and RAM (data + bss) of an AVR image.
+// Flash (.text + .data) and RAM (.data + .bss + .noinit) of an AVR image,
+// by section: avr-size's totals would count the .mmcu record, which the
+// simulator reads and the robot never gets.
 bool image_size(const fs::path &image, unsigned &flash, unsigned &ram) {
     std::string out;
-    if (capture_program({"avr-size", image.string()}, out) != 0) return false;
+    if (capture_program({"avr-size", "-A", image.string()}, out) != 0) return false;
     std::istringstream lines(out);
-    std::string header;
-    std::getline(lines, header);
+    std::string line;
     unsigned text = 0, data = 0, bss = 0;
-    if (!(lines >> text >> data >> bss)) return false;
+    bool found = false;
+    while (std::getline(lines, line)) {
+        std::istringstream fields(line);
+        std::string section;
+        unsigned size = 0;
+        if (!(fields >> section >> size)) continue;
+        if (section == ".text") text = size, found = true;
+        if (section == ".data") data = size;
+        if (section == ".bss" || section == ".noinit") bss += size;
+    }
     flash = text + data;
     ram = data + bss;
-    return true;
+    return found;
 }
 
 std::string bar(unsigned used, unsigned total) {
