@@ -26,6 +26,9 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motor_processors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/debug_uart.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/adc.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/sensors.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/sensor_processors.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/kilolib.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/overhead_controller.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/calibration.c

@@ -88,6 +88,50 @@ uint8_t kilobot_spinup_limited(sys_device *dev, const void *in, uint8_t size, vo
 extern sys_device kilobot_led;
 extern sys_device kilobot_motor_pair;
 
+/* Analog sensors: HAL input devices, registered by kilobot_sensors_init().
+ * Each event's data is one int16_t: the reading after the device's
+ * pre-processor (none by default: the ADC count 0..1023, what kilolib's
+ * get_ambientlight, get_voltage and get_temperature return). */
+#define KILOBOT_EVENT_LIGHT ((sys_event_id)(SYS_EVENT_PORT_FIRST + 4))       /* ADC7 */
+#define KILOBOT_EVENT_VOLTAGE ((sys_event_id)(SYS_EVENT_PORT_FIRST + 5))     /* battery, ADC6 */
+#define KILOBOT_EVENT_TEMPERATURE ((sys_event_id)(SYS_EVENT_PORT_FIRST + 6)) /* on chip */
+
+extern sys_device kilobot_light;
+extern sys_device kilobot_voltage;
+extern sys_device kilobot_temperature;
+
+/* Register the three sensors (and their events, 2 bytes each). Separate
+ * from kilobot_devices_init so applications without them pay nothing. */
+sys_status kilobot_sensors_init(void);
+
+/* Read sensor now (about 110 us, interrupts masked), run its processor and
+ * send its event; *value (may be NULL) receives the processed reading.
+ * SYS_E_INVALID if sensor is not one of the three; SYS_E_NOT_FOUND if the
+ * processor gave no value (counted in sensor->rejected); otherwise the
+ * status of sending the event. */
+sys_status kilobot_sense(sys_device *sensor, int16_t *value);
+
+/* Read sensor every period ms from the 1 ms tick (the first period ms from
+ * now), as kilobot_sense does; 0 stops. */
+sys_status kilobot_sense_every(sys_device *sensor, uint16_t period);
+
+/* Pre-processor: piecewise-linear interpolation through a table of (raw
+ * ADC count, value) points, raw strictly increasing; readings below the
+ * first point or above the last take its value. Install with
+ *   static const kilobot_table_point lux_points[] = {{0, 0}, {800, 400}, {1023, 2000}};
+ *   static const kilobot_sensor_table lux = {lux_points, 3};
+ *   Sys_Set_Processor(&kilobot_light, kilobot_linear_table, (void *)&lux); */
+typedef struct kilobot_table_point {
+    int16_t raw;
+    int16_t value;
+} kilobot_table_point;
+typedef struct kilobot_sensor_table {
+    const kilobot_table_point *points;
+    uint8_t count; /* at least 1 */
+} kilobot_sensor_table;
+uint8_t kilobot_linear_table(sys_device *dev, const void *in, uint8_t size, void *out,
+                             uint8_t capacity);
+
 /* Register the LED and the motors (and their events). */
 sys_status kilobot_devices_init(void);
 
@@ -106,6 +150,18 @@ extern void (*volatile kilobot_tick_hook)(void);
 /* The lower layers, for code that bypasses events (interrupts, kilolib). */
 void kilobot_led_apply(uint8_t rgb);
 void kilobot_motors_apply(uint8_t left, uint8_t right);
+
+/* ADC inputs: the distance sensors' two gains, the battery, the light
+ * sensor and the MCU's temperature sensor (against the internal 1.1 V
+ * reference; the others against AVcc). */
+#define KILOBOT_ADC_IR_HIGH_GAIN 0u
+#define KILOBOT_ADC_IR_LOW_GAIN 1u
+#define KILOBOT_ADC_VOLTAGE 6u
+#define KILOBOT_ADC_LIGHT 7u
+#define KILOBOT_ADC_TEMPERATURE 8u
+/* One conversion of input, 0..1023 (about 110 us with interrupts masked,
+ * so the IR receiver cannot take the ADC over midway). */
+int16_t kilobot_adc_read(uint8_t input);
 
 #ifdef __cplusplus
 }

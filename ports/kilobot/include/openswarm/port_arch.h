@@ -18,7 +18,8 @@ typedef uint8_t port_irq_state_t; /* SREG */
 #define PORT_STACK_EXTRA 64u
 #define PORT_STACK_ALIGN 1u
 
-/* Event ids the port reserves: LED, motors, IR received, IR to send. */
-#define PORT_EVENT_COUNT 4
+/* Event ids the port reserves: LED, motors, IR received, IR to send,
+ * light, voltage, temperature. */
+#define PORT_EVENT_COUNT 7
 
 #endif

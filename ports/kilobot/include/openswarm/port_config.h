@@ -1,7 +1,8 @@
 /* Kilobot port: pool sizes that fit 2 KB of RAM with the robot's devices
- * (LED, motors, IR: 16-byte values) and kilolib's two threads (192 + 64
- * bytes of stack), leaving about 900 bytes to the main stack. An
- * application overrides any of them (OS_CONFIG_FILE). */
+ * (LED, motors, IR: 16-byte values; light, voltage, temperature when
+ * kilobot_sensors_init registers them: 2-byte values) and kilolib's two
+ * threads (192 + 64 bytes of stack), leaving about 900 bytes to the main
+ * stack. An application overrides any of them (OS_CONFIG_FILE). */
 #ifndef OPENSWARM_PORT_CONFIG_H
 #define OPENSWARM_PORT_CONFIG_H
 
@@ -30,7 +31,7 @@
 #define OS_CFG_EVENT_QUEUE_BYTES 48
 #endif
 #ifndef OS_CFG_MAX_DEVICES
-#define OS_CFG_MAX_DEVICES 3
+#define OS_CFG_MAX_DEVICES 6
 #endif
 #ifndef OS_CFG_HAL_MAX_VALUE
 #define OS_CFG_HAL_MAX_VALUE 16

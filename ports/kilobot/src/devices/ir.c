@@ -43,17 +43,6 @@ void kilobot_ir_get_stats(kilobot_ir_stats *out) {
     SREG = sreg;
 }
 
-static void adc_start(uint8_t channel) {
-    ADMUX = _BV(REFS0) | channel;
-    ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1);
-}
-
-static int16_t adc_take(void) {
-    while (ADCSRA & _BV(ADSC)) {
-    }
-    return (int16_t)ADC;
-}
-
 void kilobot_ir_start(void) {
     DDRB |= TX_PIN;
     PORTB &= (uint8_t)~TX_PIN;
@@ -97,7 +86,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     uint16_t slot_time = start;
     uint8_t slot = 0;
     memset(rx, 0, sizeof *rx);
-    adc_start(0);
+    kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
         int32_t edge = next_edge(start);
         if (edge < 0) return false; /* the frame stopped short */
@@ -110,15 +99,15 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
             return false;
         }
         if (slot == HEADER_SLOTS - 1u) {
-            rx->high_gain = adc_take();
-            adc_start(1);
+            rx->high_gain = kilobot_adc_take();
+            kilobot_adc_start(KILOBOT_ADC_IR_LOW_GAIN);
             continue;
         }
         uint8_t data_slot = (uint8_t)(slot - HEADER_SLOTS);
         uint8_t bit = data_slot % 10u;
         if (bit >= 1u && bit <= 8u) rx->frame[data_slot / 10u] |= (uint8_t)(1u << (bit - 1u));
         if (data_slot == SLOTS - HEADER_SLOTS - 1u) {
-            rx->low_gain = adc_take();
+            rx->low_gain = kilobot_adc_take();
             return true;
         }
     }

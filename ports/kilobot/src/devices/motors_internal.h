@@ -13,4 +13,14 @@ void kilobot_motors_tick(void);
 /* ir.c: start listening (analog comparator to Timer1 input capture). */
 void kilobot_ir_start(void);
 
+/* adc.c: start a conversion of input (KILOBOT_ADC_*), and wait for its
+ * result. For the IR receiver, which starts one at a pulse and takes it at
+ * the next, interrupts masked; everything else uses kilobot_adc_read. */
+void kilobot_adc_start(uint8_t input);
+int16_t kilobot_adc_take(void);
+
+/* sensors.c: sampling due every 1 ms (NULL: none); called by the tick
+ * interrupt, so applications that sample nothing pay one test. */
+extern void (*volatile kilobot_sensors_tick_hook)(void);
+
 #endif
