@@ -172,6 +172,30 @@ void load_threads(const fs::path &file, const json &list, AppConfig &c) {
              std::to_string(max_threads->second));
 }
 
+// A list of [raw, value] pairs: how many the processor takes, each within
+// its ranges, raw strictly increasing (the interpolation needs an order).
+std::vector<std::pair<long, long>> points_at(const fs::path &file, const std::string &path, const json &v,
+                                             const PointsParam &p) {
+    std::string range = std::to_string(p.min_count) + ".." + std::to_string(p.max_count);
+    if (!v.is_array())
+        fail(file, path, "expected a list of " + range + " [raw, value] points, found " + found(v));
+    if (v.size() < p.min_count || v.size() > p.max_count)
+        fail(file, path, "expected " + range + " [raw, value] points, found a list of " + std::to_string(v.size()));
+    std::vector<std::pair<long, long>> points;
+    for (size_t i = 0; i < v.size(); i++) {
+        std::string at = path + "[" + std::to_string(i) + "]";
+        if (!v[i].is_array() || v[i].size() != 2)
+            fail(file, at, "expected a [raw, value] pair of whole numbers, found " + found(v[i]));
+        long raw = number_at(file, at + "[0]", v[i][0], p.raw_min, p.raw_max);
+        long value = number_at(file, at + "[1]", v[i][1], p.value_min, p.value_max);
+        if (!points.empty() && raw <= points.back().first)
+            fail(file, at + "[0]", "expected a raw count above " + std::to_string(points.back().first) +
+                                       " (raw counts must increase from point to point), found " + found(v[i][0]));
+        points.emplace_back(raw, value);
+    }
+    return points;
+}
+
 std::vector<std::string> names_of(const std::vector<DeviceInfo> &all) {
     std::vector<std::string> n;
     for (const auto &d : all) n.push_back(d.name);
@@ -205,9 +229,12 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
         }
         std::vector<std::string> allowed = {"processor"};
         for (const auto &param : p->params) allowed.push_back(param.name);
+        if (p->points) allowed.push_back(p->points->name);
         check_keys(file, path, d, allowed);
         for (const auto &param : p->params)
             dc.params[param.name] = number_at(file, path + "." + param.name, require(file, d, param.name, path), param.min, param.max);
+        if (p->points)
+            dc.points = points_at(file, path + "." + p->points->name, require(file, d, p->points->name, path), *p->points);
         c.devices.push_back(dc);
     }
 }

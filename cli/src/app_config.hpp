@@ -32,6 +32,7 @@ struct DeviceConfig {
     std::string device;    // "motors"
     std::string processor; // "spinup-limited"
     std::map<std::string, long> params;
+    std::vector<std::pair<long, long>> points; // [raw, value], for a processor that takes a table
 };
 
 struct AppConfig {

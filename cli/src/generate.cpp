@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "ports.hpp"
+#include "suggest.hpp"
 
 namespace fs = std::filesystem;
 
@@ -82,6 +83,26 @@ const ProcessorInfo &processor_info(const AppConfig &c, const DeviceConfig &d, c
     throw std::logic_error("validated device " + d.device);
 }
 
+// The const parameters of a device's processor (and its table of points,
+// if it takes one), e.g. "static const kilobot_spinup_limit motors_params = {...};".
+std::string processor_params(const DeviceConfig &d, const ProcessorInfo &p) {
+    std::ostringstream s;
+    std::vector<std::string> fields;
+    for (const auto &param : p.params)
+        fields.push_back("." + param.c_field + " = " + std::to_string(d.params.at(param.name)));
+    if (p.points) {
+        std::vector<std::string> points;
+        for (const auto &[raw, value] : d.points)
+            points.push_back("{" + std::to_string(raw) + ", " + std::to_string(value) + "}");
+        s << "static const " << p.points->c_point_type << " " << d.device << "_points[] = {" << join(points)
+          << "};\n";
+        fields.push_back("." + p.points->c_points_field + " = " + d.device + "_points");
+        fields.push_back("." + p.points->c_count_field + " = " + std::to_string(d.points.size()));
+    }
+    s << "static const " << p.c_params_type << " " << d.device << "_params = {" << join(fields) << "};\n\n";
+    return s.str();
+}
+
 std::string app_source(const AppConfig &c) {
     std::ostringstream s;
     s << banner << "#include \"openswarm_app.h\"\n";
@@ -90,11 +111,7 @@ std::string app_source(const AppConfig &c) {
     for (const auto &d : c.devices) {
         const DeviceInfo *dev = nullptr;
         const ProcessorInfo &p = processor_info(c, d, &dev);
-        if (p.c_params_type.empty()) continue;
-        s << "static const " << p.c_params_type << " " << d.device << "_params = {";
-        for (size_t i = 0; i < p.params.size(); i++)
-            s << (i ? ", " : "") << "." << p.params[i].c_field << " = " << d.params.at(p.params[i].name);
-        s << "};\n\n";
+        if (!p.c_params_type.empty()) s << processor_params(d, p);
     }
     for (const auto &t : c.threads)
         s << "void " << t.entry << "(void);\nstatic void start_" << t.entry << "(void *arg) {\n    (void)arg;\n    "

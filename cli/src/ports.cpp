@@ -6,10 +6,26 @@ namespace openswarm {
 
 const std::vector<PortInfo> &ports() {
     static const std::vector<PortInfo> all = {
-        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 6, 6 + 4 * 16, 4, 12, 96, 16},
+        // Device events: LED, motors, IR in and out (16 bytes each), light,
+        // voltage, temperature (an int16_t each); kilobot.h, port_arch.h.
+        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 9, 6 + 4 * 16 + 3 * 2,
+         4, 12, 96, 16},
     };
     return all;
 }
+
+namespace {
+
+// The analog sensors' pre-processors: the ADC count, or a table mapping it.
+std::vector<ProcessorInfo> kilobot_sensor_processors() {
+    return {{"raw", "", "", {}, "the ADC count 0..1023 as it is"},
+            {"table", "kilobot_linear_table", "kilobot_sensor_table", {},
+             "counts mapped through \"points\": [[raw, value], ...], linear between them",
+             PointsParam{"points", 2, 16, 0, 1023, -32768, 32767, "kilobot_table_point", "points",
+                         "count"}}};
+}
+
+}  // namespace
 
 const std::vector<DeviceInfo> &devices_of(const std::string &port) {
     static const std::vector<DeviceInfo> kilobot = {
@@ -21,6 +37,9 @@ const std::vector<DeviceInfo> &devices_of(const std::string &port) {
            "as calibrated, and full power drops to fallback after limit_ms"}}},
         {"led", "kilobot_led", {{"copy", "", "", {}, "the colour byte as it is"}}},
         {"ir", "kilobot_ir", {{"crc", "", "", {}, "frames whose CRC checks reach KILOBOT_EVENT_IR_RX"}}},
+        {"light", "kilobot_light", kilobot_sensor_processors()},
+        {"voltage", "kilobot_voltage", kilobot_sensor_processors()},
+        {"temperature", "kilobot_temperature", kilobot_sensor_processors()},
     };
     static const std::vector<DeviceInfo> none;
     return port == "kilobot" ? kilobot : none;

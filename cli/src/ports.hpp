@@ -1,6 +1,7 @@
 // The robots OpenSwarm builds for.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,12 +25,22 @@ struct ProcessorParam {
     std::string name, c_field;
     long min, max;
 };
+// A list of [raw, value] points, such as a sensor's linearisation table;
+// the generated code puts them in a const array of c_point_type and points
+// the parameters' c_points_field (and c_count_field) at it.
+struct PointsParam {
+    std::string name;
+    unsigned min_count, max_count;
+    long raw_min, raw_max, value_min, value_max;
+    std::string c_point_type, c_points_field, c_count_field;
+};
 struct ProcessorInfo {
     std::string name;
     std::string c_function;          // the sys_processor to install
     std::string c_params_type;       // "" if it takes no parameters
     std::vector<ProcessorParam> params;
     std::string description;
+    std::optional<PointsParam> points = {};
 };
 struct DeviceInfo {
     std::string name;     // "motors"

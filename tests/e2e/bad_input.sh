@@ -71,6 +71,23 @@ expect 2 "\"threads\": 2 threads and the system thread need kernel.max_threads >
 printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "not an identifier"}]}' > keep/openswarm.json
 expect 2 "\"threads\[0\].entry\": \"not an identifier\" is not a C identifier" "$openswarm" build -C keep
 
+# A sensor's table: too few points, raw counts out of order, not numbers,
+# not a list; refused naming the key, and nothing is generated.
+# refused_table POINTS REGEX
+refused_table() {
+    printf '{"name": "keep", "port": "kilobot", "devices": {"light": {"processor": "table", "points": %s}}}' "$1" \
+        > keep/openswarm.json
+    local before
+    before=$(snapshot)
+    expect 2 "$2" "$openswarm" build -C keep
+    [ "$before" = "$(snapshot)" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: refusing $1 changed the folder"; }
+}
+refused_table '[[0, 0]]' '"devices.light.points": expected 2..16 \[raw, value\] points, found a list of 1'
+refused_table '[[0, 0], [600, 5], [500, 9]]' \
+    '"devices.light.points\[2\]\[0\]": expected a raw count above 600 \(raw counts must increase from point to point\), found number 500'
+refused_table '[[0, 0], [1023, "max"]]' '"devices.light.points\[1\]\[1\]": expected a whole number -32768..32767, found string "max"'
+refused_table '{"0": 0}' '"devices.light.points": expected a list of 2..16 \[raw, value\] points, found object'
+
 # A test whose expectation the app does not meet fails, naming the line.
 "$openswarm" new tested >/dev/null
 sed -i 's/^0.252,led,0,0,0$/0.252,led,3,0,0/' tested/tests/blinks.trace

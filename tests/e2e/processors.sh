@@ -34,9 +34,54 @@ bad() { # bad JSON_DEVICES REGEX
     if err=$("$openswarm" config check -C guarded 2>&1); then echo "FAILED: accepted $1"; exit 1; fi
     printf '%s' "$err" | grep -Eq "$2" || { echo "FAILED: $1 -> $err"; exit 1; }
 }
-bad '{"motor": {"processor": "calibrated"}}' '"devices.motor": no device "motor" on kilobot; devices: motors, led, ir \(did you mean "motors"\?\)'
+bad '{"motor": {"processor": "calibrated"}}' '"devices.motor": no device "motor" on kilobot; devices: motors, led, ir, light, voltage, temperature \(did you mean "motors"\?\)'
 bad '{"motors": {"processor": "spinup"}}' '"devices.motors.processor": unknown processor "spinup" for motors; processors: calibrated, spinup-limited'
 bad '{"motors": {"processor": "spinup-limited", "limit_ms": 50}}' '"devices.motors.fallback": missing'
 bad '{"motors": {"processor": "spinup-limited", "limit_ms": 0, "fallback": 1}}' '"devices.motors.limit_ms": expected a whole number 1..60000, found number 0'
 bad '{"motors": {"processor": "calibrated", "limit_ms": 5}}' '"devices.motors.limit_ms": unknown key'
-echo "6 passed, 0 failed"
+
+# A sensor's table in openswarm.json: the app drives both motors with the
+# light it senses, mapped to 0..200 by the table; each trace gives another
+# light input (1650 mV = 511 counts -> 118, 300 mV = 93 counts -> 23).
+"$openswarm" new sensing --template blank >/dev/null
+cat > sensing/openswarm.json <<'JSON'
+{
+  "name": "sensing",
+  "port": "kilobot",
+  "devices": { "light": { "processor": "table", "points": [[0, 0], [400, 100], [1023, 200]] } }
+}
+JSON
+cat > sensing/main.c <<'C'
+#include "openswarm/kernel.h"
+#include "openswarm/kilobot.h"
+#include "openswarm_app.h"
+
+static void app_thread(void) {
+    Sys_Sleep(10);
+    int16_t level = -1;
+    kilobot_sense(&kilobot_light, &level);
+    kilobot_motors both = {(uint8_t)level, (uint8_t)level};
+    Sys_Send_Event(KILOBOT_EVENT_MOTORS, &both, sizeof both);
+    for (;;) Sys_Sleep(1000);
+}
+
+int main(void) {
+    Sys_Init_Kernel();
+    kilobot_devices_init();
+    kilobot_sensors_init();
+    openswarm_app_start();
+    Sys_Start_Process(app_thread);
+    Sys_Start_Kernel();
+    Sys_Run_SystemThread();
+    return 0;
+}
+C
+rm sensing/tests/*.trace
+printf '# run: --time 0.1 --light 1650\n0.010,motors,118,118,0\n' > sensing/tests/bright.trace
+printf '# run: --time 0.1 --light 300\n0.010,motors,23,23,0\n' > sensing/tests/dim.trace
+"$openswarm" config show -C sensing | grep -q "device light: processor table, points 0->0 400->100 1023->200"
+"$openswarm" test -C sensing | tee sensing.log
+grep -q "^2 passed, 0 failed$" sensing.log
+grep -q "Sys_Set_Processor(&kilobot_light, kilobot_linear_table, (void \*)&light_params)" \
+    sensing/build/kilobot/openswarm/openswarm_app.c
+echo "7 passed, 0 failed"

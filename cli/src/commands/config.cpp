@@ -37,6 +37,8 @@ void add_config_command(CLI::App &app, const Paths &) {
                     for (const auto &d : c.devices) {
                         std::printf("device %s: processor %s", d.device.c_str(), d.processor.c_str());
                         for (const auto &[k, v] : d.params) std::printf(", %s %ld", k.c_str(), v);
+                        if (!d.points.empty()) std::printf(", points");
+                        for (const auto &[raw, value] : d.points) std::printf(" %ld->%ld", raw, value);
                         std::printf("\n");
                     }
                     for (const auto &t : c.threads)
