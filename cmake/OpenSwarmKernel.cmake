@@ -14,12 +14,14 @@ list(TRANSFORM OPENSWARM_KERNEL_SOURCES PREPEND ${OPENSWARM_ROOT}/kernel/src/)
 
 set(OPENSWARM_PORT_host_SOURCES
     ${OPENSWARM_ROOT}/ports/host/src/host_cpu.c
-    ${OPENSWARM_ROOT}/ports/host/src/host_context.c)
+    ${OPENSWARM_ROOT}/ports/host/src/host_context.c
+    ${OPENSWARM_ROOT}/ports/host/src/host_fault.c)
 
 set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/port.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/switch.S
     ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/fault_report.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/devices.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/led.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motors.c

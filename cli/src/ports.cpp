@@ -7,9 +7,10 @@ namespace openswarm {
 const std::vector<PortInfo> &ports() {
     static const std::vector<PortInfo> all = {
         // Device events: LED, motors, IR in and out (16 bytes each), light,
-        // voltage, temperature (an int16_t each); kilobot.h, port_arch.h.
-        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 9, 6 + 4 * 16 + 3 * 2,
-         4, 12, 96, 16},
+        // voltage, temperature (an int16_t each), kilolib's transmit turn (1
+        // byte); kilobot.h, port_arch.h, kilolib_internal.h.
+        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 10, 6 + 4 * 16 + 3 * 2 + 1,
+         4, 14, 96, 16},
     };
     return all;
 }

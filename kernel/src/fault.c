@@ -19,6 +19,7 @@ void Sys_Set_FaultHook(sys_fault_hook hook) {
 
 /* Interrupts are masked here. */
 void os_fault(sys_fault fault, sys_pid pid) {
+    port_report_fault((uint8_t)fault, pid);
     if (os.fault_hook != NULL) os.fault_hook(fault, pid);
     sys_fault_info info = {(uint8_t)fault, pid};
     if (os_event_registered(SYS_EVENT_FAULT) &&

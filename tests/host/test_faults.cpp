@@ -25,6 +25,7 @@ __attribute__((no_sanitize_address, noinline)) static void overflow_stack(size_t
 }
 
 TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
+    testing::internal::CaptureStderr(); // the host port reports faults there
     hook_calls = 0;
     event_fault = 0;
     std::atomic<bool> overflowed{false};
@@ -71,6 +72,8 @@ TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
     EXPECT_EQ(victim, event_pid.load());
     EXPECT_FALSE(alive(victim));
     EXPECT_EQ(1u, stats().stack_overflows);
+    EXPECT_EQ("openswarm: kernel fault: stack overflow in thread " + std::to_string(victim) + "\n",
+              testing::internal::GetCapturedStderr());
     long before = bystander;
     advance(2 * OS_CFG_TIME_SLICE_MS);
     EXPECT_TRUE(eventually([&] { return bystander > before; })) << "the others go on";

@@ -69,6 +69,12 @@ void port_irq_disable(void);
  * interrupts masked again. */
 void port_idle(void);
 
+/* A fault the kernel detected (a sys_fault, and the thread's pid), before
+ * the application's hook and SYS_EVENT_FAULT: the port tells whoever
+ * watches (a simulator's console, a terminal), so no fault goes unseen.
+ * Interrupts are masked; keep it short. */
+void port_report_fault(uint8_t fault, sys_pid pid);
+
 /* ---- provided by the kernel, called by the port ---- */
 
 void os_isr_enter(void);

@@ -19,7 +19,7 @@ typedef uint8_t port_irq_state_t; /* SREG */
 #define PORT_STACK_ALIGN 1u
 
 /* Event ids the port reserves: LED, motors, IR received, IR to send,
- * light, voltage, temperature. */
-#define PORT_EVENT_COUNT 7
+ * light, voltage, temperature, and kilolib's transmit callbacks. */
+#define PORT_EVENT_COUNT 8
 
 #endif

@@ -10,8 +10,10 @@
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
 
+/* The transmitter thread only sleeps and transmits: the program's
+ * callbacks run on the system stack (see transmitter). */
 #ifndef KILOLIB_TX_STACK
-#define KILOLIB_TX_STACK 64 /* for kilo_message_tx and kilo_message_tx_success */
+#define KILOLIB_TX_STACK 48
 #endif
 
 volatile uint32_t kilo_ticks;
@@ -90,6 +92,27 @@ static uint16_t ms_of_ticks(uint16_t ticks) {
     return (uint16_t)(((uint32_t)ticks * 1000u + TICKS_PER_SEC - 1u) / TICKS_PER_SEC);
 }
 
+/* The program's transmit callbacks run as an event handler, like the
+ * classic library's from its timer interrupt: on the main stack, not on
+ * the transmitter's small one, so they may do anything (print, compute a
+ * CRC). A thread's send runs the handler before it returns. */
+enum { TX_DUE, TX_SENT };
+static message_t *outgoing;
+
+static bool run_tx_callback(sys_pid pid, sys_event_id event, const sys_event_data *turn) {
+    (void)pid;
+    (void)event;
+    if (*(const uint8_t *)turn->value == TX_DUE)
+        outgoing = kilo_message_tx();
+    else
+        kilo_message_tx_success();
+    return true;
+}
+
+static bool tx_callback(uint8_t turn) {
+    return Sys_Send_Event(KILOLIB_EVENT_TX, &turn, 1) == SYS_OK;
+}
+
 /* Every kilo_tx_period (give or take a random 0-15 ms, so robots that
  * started together drift apart), kilo_message_tx's message (its crc set by
  * the program, as with the classic library) goes out while the program
@@ -99,10 +122,10 @@ static void transmitter(void *arg) {
     for (;;) {
         Sys_Sleep(ms_of_ticks(kilo_tx_period) + (rand_soft() & 15u));
         if (kilolib_activity() != RUN) continue;
-        message_t *msg = kilo_message_tx();
-        if (msg == 0) continue;
-        while (kilobot_ir_transmit(msg->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
-        kilo_message_tx_success();
+        outgoing = 0;
+        if (!tx_callback(TX_DUE) || outgoing == 0) continue;
+        while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
+        tx_callback(TX_SENT);
     }
 }
 
@@ -114,6 +137,8 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     tick_fraction = 0;
     kilobot_tick_hook = count_kilo_ticks;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
+    Sys_Register_Event_Sized(KILOLIB_EVENT_TX, 1);
+    Sys_Subscribe_to_Event(KILOLIB_EVENT_TX, SYS_PID_SYSTEM, run_tx_callback, 0);
     kilolib_activity_start(RUN, kilolib_program);
     Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();
@@ -132,19 +157,9 @@ void spinup_motors(void) {
 
 void set_color(uint8_t rgb) { Sys_Send_Event(KILOBOT_EVENT_LED, &rgb, 1); }
 
-/* A blocking conversion on one channel (AVcc reference, /64 clock). */
-static int16_t adc_read(uint8_t mux) {
-    if (ADCSRA & _BV(ADSC)) return -1;
-    ADMUX = mux;
-    ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1);
-    while (ADCSRA & _BV(ADSC)) {
-    }
-    return (int16_t)ADC;
-}
-
-int16_t get_ambientlight(void) { return adc_read(_BV(REFS0) | 7); }
-int16_t get_voltage(void) { return adc_read(_BV(REFS0) | 6); }
-int16_t get_temperature(void) { return adc_read(_BV(REFS1) | _BV(REFS0) | 8); } /* 1.1 V ref */
+int16_t get_ambientlight(void) { return kilobot_adc_read(KILOBOT_ADC_LIGHT); }
+int16_t get_voltage(void) { return kilobot_adc_read(KILOBOT_ADC_VOLTAGE); }
+int16_t get_temperature(void) { return kilobot_adc_read(KILOBOT_ADC_TEMPERATURE); }
 
 void delay(uint16_t ms) { Sys_Sleep(ms); }
 

@@ -7,7 +7,9 @@
 #include "kilolib.h"
 #include "openswarm/kernel.h"
 
-/* kilolib.c */
+/* kilolib.c. Data: one byte, which transmit callback to run (the
+ * transmitter thread sends it, the handler runs it on the system stack). */
+#define KILOLIB_EVENT_TX ((sys_event_id)(SYS_EVENT_PORT_FIRST + 7))
 void kilolib_program(void *arg); /* the program: setup(), then loop() for ever */
 /* kilo_uid and the motor calibration (kilo_turn_left, ... and the motors'
  * kilobot_calib) as the EEPROM holds them. */
