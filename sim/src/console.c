@@ -1,12 +1,25 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* A robot's console (GPIOR1) and debug serial port (UART0), line by line,
- * prefixed with the robot when there are several. */
+ * prefixed with the robot when there are several. The console also carries
+ * kernel fault records (kilobot_sim.h), reported on stderr even when the
+ * console is quiet: a fault is never silent. */
 #include <avr_uart.h>
 #include <sim_io.h>
 
 #include "sim.h"
 
+#define FAULT_RECORD 0x01 /* kilobot_sim.h: SIM_FAULT_RECORD */
+
+static const char *fault_name(uint8_t fault) {
+    switch (fault) {
+    case 1: return "stack overflow"; /* SYS_FAULT_STACK_OVERFLOW */
+    case 2: return "critical section left open"; /* SYS_FAULT_CRITICAL_LEAK */
+    default: return "unknown fault";
+    }
+}
+
 static void put(console *c, uint8_t v) {
+    if (c->quiet) return;
     if (v == '\n' || c->len == sizeof c->line - 1) {
         c->line[c->len] = '\0';
         printf("%s%s\n", c->prefix, c->line);
@@ -18,13 +31,18 @@ static void put(console *c, uint8_t v) {
 }
 
 static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
+    console *c = param;
     avr->data[addr] = v;
-    put(param, v);
-}
-
-static void console_drop(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
-    (void)param;
-    avr->data[addr] = v;
+    if (c->record_left > 0) {
+        c->record[2 - c->record_left--] = v;
+        if (c->record_left == 0)
+            fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u\n", c->prefix,
+                    fault_name(c->record[0]), c->record[1]);
+    } else if (v == FAULT_RECORD) {
+        c->record_left = 2;
+    } else {
+        put(c, v);
+    }
 }
 
 static void serial_output(struct avr_irq_t *irq, uint32_t value, void *param) {
@@ -35,7 +53,8 @@ static void serial_output(struct avr_irq_t *irq, uint32_t value, void *param) {
 void console_attach(robot *r, int quiet, const char *prefix) {
     snprintf(r->console.prefix, sizeof r->console.prefix, "%s", prefix);
     snprintf(r->serial.prefix, sizeof r->serial.prefix, "%s", prefix);
-    avr_register_io_write(r->avr, GPIOR1_ADDR, quiet ? console_drop : console_write, &r->console);
+    r->console.quiet = quiet;
+    avr_register_io_write(r->avr, GPIOR1_ADDR, console_write, &r->console);
     if (!quiet)
         avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT),
                                 serial_output, &r->serial);

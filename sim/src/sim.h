@@ -3,7 +3,8 @@
  * openswarm-sim: runs robots' firmware ELFs, cycle-exactly, in simavr.
  *
  * Conventions shared with the firmware (ports/kilobot/include/openswarm/kilobot_sim.h):
- *   GPIOR1  console: each byte written is a character, '\n' ends a line
+ *   GPIOR1  console: each byte written is a character, '\n' ends a line;
+ *           0x01 starts a kernel fault record: the fault, then the thread
  *   UART0   the robot's debug serial port, printed like the console
  *   GPIOR0  exit status, read when the firmware stops (SLEEP with
  *           interrupts disabled)
@@ -84,6 +85,9 @@ typedef struct console {
     char prefix[16];
     char line[256];
     size_t len;
+    int quiet;            /* lines dropped; kernel faults still reported */
+    uint8_t record[2];    /* a kernel fault record being received */
+    int record_left;      /* its bytes still to come */
 } console;
 
 /* What the robot shows: LED colour and motor duty, reported once settled. */

@@ -1,6 +1,6 @@
 /* What a Kilobot firmware tells the simulator (sim/openswarm-sim): a
- * console and an exit status, through two general-purpose I/O registers
- * that the real robot ignores. */
+ * console, kernel faults and an exit status, through two general-purpose
+ * I/O registers that the real robot ignores. */
 #ifndef OPENSWARM_KILOBOT_SIM_H
 #define OPENSWARM_KILOBOT_SIM_H
 
@@ -25,6 +25,15 @@ static inline void sim_put_uint(uint32_t v) {
         v /= 10u;
     } while (v != 0);
     while (n != 0) sim_putc(digits[--n]);
+}
+
+/* A kernel fault (a sys_fault and the thread's pid): the simulator prints
+ * "kernel fault: stack overflow in thread 19" on its standard error. */
+#define SIM_FAULT_RECORD 0x01
+static inline void sim_fault(uint8_t fault, uint8_t pid) {
+    GPIOR1 = SIM_FAULT_RECORD;
+    GPIOR1 = fault;
+    GPIOR1 = pid;
 }
 
 /* Stop the simulation with an exit status (the real robot just halts). */
