@@ -96,6 +96,7 @@ sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
         st = SYS_E_POOL_FULL;
     } else {
         slot->size = NOTHING_KEPT;
+        os_listeners_changed();
     }
     port_irq_restore(s);
     return st;
@@ -134,6 +135,7 @@ static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid
         subscription *sub = &subs[i];
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
+    os_listeners_changed();
     release_marked();
 }
 
@@ -146,6 +148,7 @@ sys_status Sys_Unregister_Event(sys_event_id event) {
         return SYS_E_NOT_REGISTERED;
     }
     events[event].size = UNREGISTERED; /* the data block stays for reuse */
+    os_listeners_changed();
     remove_subscriptions(event, false, 0, true);
     os_wake_all_waiting_for(event, SYS_E_NOT_REGISTERED);
     if (os_in_thread()) os_schedule();
@@ -206,6 +209,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
         else
             subs[subs_tail].next = (uint8_t)i;
         subs_tail = (uint8_t)i;
+        os_listeners_changed();
     }
     port_irq_restore(s);
     return st;
@@ -216,6 +220,7 @@ sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event
     subscription *sub = find_subscription(event, pid, handler);
     if (sub != NULL) {
         sub->handler = NULL;
+        os_listeners_changed();
         release_marked();
     }
     port_irq_restore(s);
@@ -268,6 +273,7 @@ void os_run_handlers(const sys_event_data *data) {
                 os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
             }
             if (!keep && sub->handler == handler) {
+                os_listeners_changed();
                 sub->handler = NULL;
                 sweep_needed = true;
             }

@@ -74,6 +74,8 @@ typedef struct os_kernel {
     bool yield_requested;
     bool reap_pending;
     bool stop_requested;
+    bool clock_listeners_known; /* clock_has_listeners is up to date */
+    bool clock_has_listeners;   /* a handler or waiter for SYS_EVENT_1MS_TIMER */
     sys_stats stats;
     sys_fault_hook fault_hook;
 } os_kernel;
@@ -87,6 +89,10 @@ static OS_HOT bool os_system_work_pending(void) {
     return (os.queued_bytes | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
 }
 
+/* Handlers or waiters may have come or gone: the next tick asks again
+ * whether the 1 ms clock event has any (instead of every millisecond). */
+static OS_HOT void os_listeners_changed(void) { os.clock_listeners_known = false; }
+
 /* process.c */
 sys_tcb *os_thread_of(sys_pid pid); /* NULL if pid is not a live thread */
 void os_terminate(sys_tcb *t);      /* make t a zombie and detach it from everything */
@@ -98,6 +104,7 @@ void os_make_ready(sys_tcb *t);
 void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
 void os_schedule_after_interrupt(void); /* the same, as the outermost interrupt ends */
+void os_yield(void);                 /* Sys_Yield's decision */
 sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
 void os_switch_to(sys_tcb *next);
 

@@ -132,9 +132,7 @@ sys_status Sys_Yield(void) {
     if (!os_in_thread()) return SYS_E_CONTEXT;
     if (os.lock_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
-    os.yield_requested = true;
-    os_schedule();
-    os.yield_requested = false;
+    os_yield();
     port_irq_restore(s);
     return SYS_OK;
 }

@@ -37,7 +37,7 @@ void os_ready_remove(sys_tcb *t) {
     }
 }
 
-static inline sys_tcb *ready_pop(void) {
+static OS_HOT sys_tcb *ready_pop(void) {
     sys_tcb *t = os.ready;
     if (t != NULL) {
         os.ready = t->next;
@@ -113,6 +113,28 @@ void os_schedule(void) {
     if (os.lock_depth == 0 && !os_stack_guard_intact(cur))
         os_stop_if_overflowed(cur); /* before it runs on or blocks */
     decide(cur);
+}
+
+/* Sys_Yield: a running thread outside any critical section, interrupts
+ * masked. The common case - nothing for the system thread to do, someone
+ * ready - rotates directly; anything else takes the general decision. */
+void os_yield(void) {
+    sys_tcb *cur = os.current;
+    if (os.ready == NULL || os_system_work_pending() || !os_stack_guard_intact(cur)) {
+        os.yield_requested = true;
+        os_schedule();
+        os.yield_requested = false;
+        return;
+    }
+    cur->state = SYS_PROCESS_READY;
+    cur->next = NULL;
+    os.policy->insert(&os.ready, cur);
+    sys_tcb *next = ready_pop();
+    next->state = SYS_PROCESS_RUNNING;
+    if (next == cur) return; /* it still comes first (a higher priority) */
+    os.switches++;
+    os.current = next;
+    port_switch(&cur->ctx, &next->ctx);
 }
 
 /* An interrupt's end costs no guard check: the tick makes one. */

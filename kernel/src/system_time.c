@@ -8,7 +8,12 @@ void os_tick(void) {
     }
     if (os.lock_depth == 0 && !os_stack_guard_intact(os.current)) os_stop_if_overflowed(os.current);
     os_check_timeouts();
-    if (os_event_registered(SYS_EVENT_1MS_TIMER) && os_event_has_listeners(SYS_EVENT_1MS_TIMER)) {
+    if (!os.clock_listeners_known) {
+        os.clock_has_listeners = os_event_registered(SYS_EVENT_1MS_TIMER) &&
+                                 os_event_has_listeners(SYS_EVENT_1MS_TIMER);
+        os.clock_listeners_known = true;
+    }
+    if (os.clock_has_listeners) {
         uint32_t now = os.now_ms;
         if (!os_event_queue_push(SYS_EVENT_1MS_TIMER, &now, (uint8_t)sizeof now))
             os.stats.event_queue_full++;

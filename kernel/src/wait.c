@@ -6,6 +6,7 @@
 
 static sys_status block_current(os_wait *w) {
     if (w->event != OS_NO_EVENT) os.event_waiters++;
+    os_listeners_changed();
     os.current->wait = w;
     os.current->state = SYS_PROCESS_BLOCKED;
     os_schedule(); /* returns once woken */
@@ -70,6 +71,7 @@ sys_status Sys_Sleep(uint32_t ms) {
 /* The thread stops waiting (woken, or killed): it no longer counts. */
 static inline void leave_wait(sys_tcb *t) {
     if (t->wait->event != OS_NO_EVENT) os.event_waiters--;
+    os_listeners_changed();
     t->wait = NULL;
 }
 
@@ -111,10 +113,8 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
 
 /* From the tick: wake the threads whose deadline has come. */
 void os_check_timeouts(void) {
-    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
-        sys_tcb *t = &os.threads[i];
-        os_wait *w = t->wait;
-        if (t->state == SYS_PROCESS_BLOCKED && w != NULL && w->timed && --w->remaining_ms == 0)
-            wake(t, SYS_E_TIMEOUT);
+    for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
+        os_wait *w = t->wait; /* set exactly while t is blocked */
+        if (w != NULL && w->timed && --w->remaining_ms == 0) wake(t, SYS_E_TIMEOUT);
     }
 }

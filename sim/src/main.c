@@ -13,6 +13,14 @@
 #define LOCKSTEP_CYCLES 64
 
 static robot robots[MAX_ROBOTS];
+static int profiling;
+
+#define SLEEP_OPCODE 0x9588
+
+/* simavr 1.6 runs a SLEEP and the sleep it starts in one avr_run. */
+static int is_sleep(const avr_t *avr, avr_flashaddr_t pc) {
+    return (avr->flash[pc] | avr->flash[pc + 1] << 8) == SLEEP_OPCODE;
+}
 
 static int finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
 
@@ -55,7 +63,11 @@ static int run_window(int n, avr_cycle_count_t end) {
         if (n > 1 && !finished(r) && r->avr->cycle < end)
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
         while (!finished(r) && r->avr->cycle < end) {
+            avr_flashaddr_t pc = r->avr->pc;
+            avr_cycle_count_t before = r->avr->cycle;
+            int was_asleep = r->state == cpu_Sleeping || is_sleep(r->avr, pc);
             r->state = avr_run(r->avr);
+            if (profiling) profile_charge(pc, was_asleep, r->avr->cycle - before);
             if (at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
         }
         all_finished &= finished(r);
@@ -104,6 +116,8 @@ int main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
     if (firmware_check(o.elf) != 0) return EXIT_USAGE;
+    profiling = o.profile;
+    if (profiling && profile_load(o.elf) != 0) return EXIT_USAGE;
     FILE *csv = NULL;
     if (o.trace_csv != NULL) {
         csv = fopen(o.trace_csv, "w");
@@ -128,5 +142,6 @@ int main(int argc, char **argv) {
         debug_detach(&robots[i]);
     }
     if (csv != NULL) fclose(csv);
+    if (profiling) profile_print(o.robots);
     return report(o.robots, &o);
 }

@@ -52,6 +52,7 @@ static void usage(FILE *out) {
             "      --vcd FILE       record LED pins and motor PWM for GTKWave (one robot)\n"
             "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
             "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
+            "      --profile        print where the CPU cycles went, by function (all robots)\n"
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
@@ -116,6 +117,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"time", required_argument, 0, 't'},       {"robots", required_argument, 0, 'n'},
         {"expect-stop", no_argument, 0, 's'},      {"quiet", no_argument, 0, 'q'},
         {"marks", no_argument, 0, 'm'},            {"watch-irq", required_argument, 0, 'i'},
+        {"profile", no_argument, 0, 'F'},
         {"trace", no_argument, 0, 'T'},            {"trace-csv", required_argument, 0, 'C'},
         {"uid", required_argument, 0, 'U'},        {"calibration", required_argument, 0, 'K'},
         {"light", required_argument, 0, 'L'},      {"voltage", required_argument, 0, 'V'},
@@ -146,6 +148,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
+        case 'F': o->profile = 1; break;
         case 'i':
             if ((v = number("--watch-irq", optarg, 1, 255, "14")) < 0) return -1;
             if (o->n_watched == MAX_WATCHED_IRQS) {

@@ -54,6 +54,7 @@ typedef struct options {
     int quiet;
     int expect_stop;
     int marks;
+    int profile;        /* cycles by function, printed at the end */
     int watched[MAX_WATCHED_IRQS];
     int n_watched;
     int trace;
@@ -124,6 +125,11 @@ typedef struct robot {
 /* firmware.c: check and load an ELF into a new simulated MCU */
 int firmware_check(const char *path);
 avr_t *firmware_load(const char *path);
+
+/* profile.c: --profile */
+int profile_load(const char *elf_path);
+void profile_charge(uint32_t pc, int was_asleep, uint64_t cycles);
+void profile_print(int robots);
 
 /* console.c */
 void console_attach(robot *r, int quiet, const char *prefix);
