@@ -43,7 +43,7 @@ def build():
     # A typical messaging program: the kilolib test suite's ping.
     run(["cmake", "-S", os.path.join(ROOT, "tests", "avr"), "-B", FW_TESTS, "-G", "Ninja",
          "-DCMAKE_TOOLCHAIN_FILE=" + os.path.join(ROOT, "ports/kilobot/cmake/avr-gcc.cmake")])
-    run(["cmake", "--build", FW_TESTS, "--target", "kilolib_ping"])
+    run(["cmake", "--build", FW_TESTS, "--target", "kilolib_ping", "kilolib_blink"])
 
 
 def events(elf, *extra):
@@ -122,6 +122,18 @@ def flash_by_file(map_path):
         if size:
             sizes[name] = sizes.get(name, 0) + size
     return sizes
+
+
+def profile(elf, seconds):
+    """{function: cycles} from openswarm-sim --profile, '(asleep)' included."""
+    result = subprocess.run([SIM, "--profile", "--quiet", "--time", str(seconds), elf],
+                            check=True, text=True, capture_output=True)
+    cycles = {}
+    for line in result.stderr.splitlines():
+        fields = line.split()
+        if len(fields) == 3 and fields[0].isdigit():
+            cycles[fields[2]] = int(fields[0])
+    return cycles
 
 
 def speed(elf, seconds, *extra):
@@ -210,6 +222,17 @@ def main():
     for f in sorted(kernel_files + port_files, key=lambda f: -by_file[f]):
         out.append(f"| {'port: ' if f in port_files else ''}`{f}` | {by_file[f]} |")
     out.append(f"| kernel total / port total | {kernel_bytes} / {port_bytes} |\n")
+    blink = profile(os.path.join(FW_TESTS, "kilolib_blink.elf"), 2)
+    total = sum(blink.values())
+    tick = blink.get("os_tick", 0) + blink.get("__vector_14", 0)
+    out.append("## The kernel at rest\n")
+    out.append("`tests/avr/kilolib_blink.c` (a classic kilolib program that blinks) for 2 simulated\n"
+               "seconds under `openswarm-sim --profile`:\n")
+    out.append("| where the cycles go | share |")
+    out.append("|---|---:|")
+    out.append(f"| asleep (the idle thread's SLEEP) | {100 * blink.get('(asleep)', 0) / total:.1f}% |")
+    out.append(f"| the 1 ms tick (`__vector_14`, `os_tick`): {tick // 2000} cycles per tick | {100 * tick / total:.1f}% |")
+    out.append(f"| everything else | {100 * (total - tick - blink.get('(asleep)', 0)) / total:.1f}% |\n")
     out.append("## Against the reference numbers (`../shared/design.md`)\n")
     out.append("| what | OpenSwarm (this page) | reference |")
     out.append("|---|---|---|")
