@@ -6,15 +6,22 @@
 
 namespace openswarm {
 
-static int run(const std::vector<std::string> &argv, std::string *output) {
+namespace {
+
+// Where the child's standard output (and error) go.
+enum class Streams { inherit, stdout_to_stderr, capture_stdout, capture_both };
+
+int run(const std::vector<std::string> &argv, Streams streams, std::string *output) {
     int pipefd[2] = {-1, -1};
     if (output != nullptr && pipe(pipefd) != 0) return 127;
     std::fflush(stdout);
     pid_t pid = fork();
     if (pid < 0) return 127;
     if (pid == 0) {
+        if (streams == Streams::stdout_to_stderr) dup2(STDERR_FILENO, STDOUT_FILENO);
         if (output != nullptr) {
             dup2(pipefd[1], STDOUT_FILENO);
+            if (streams == Streams::capture_both) dup2(pipefd[1], STDERR_FILENO);
             close(pipefd[0]);
             close(pipefd[1]);
         }
@@ -37,10 +44,22 @@ static int run(const std::vector<std::string> &argv, std::string *output) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-int run_program(const std::vector<std::string> &argv) { return run(argv, nullptr); }
+}  // namespace
+
+int run_program(const std::vector<std::string> &argv) {
+    return run(argv, Streams::inherit, nullptr);
+}
+
+int run_program_to_stderr(const std::vector<std::string> &argv) {
+    return run(argv, Streams::stdout_to_stderr, nullptr);
+}
 
 int capture_program(const std::vector<std::string> &argv, std::string &output) {
-    return run(argv, &output);
+    return run(argv, Streams::capture_stdout, &output);
+}
+
+int capture_program_and_errors(const std::vector<std::string> &argv, std::string &output) {
+    return run(argv, Streams::capture_both, &output);
 }
 
 }  // namespace openswarm

@@ -10,7 +10,15 @@ namespace openswarm {
 // status (or 127 if it could not be started).
 int run_program(const std::vector<std::string> &argv);
 
+// The same, its standard output going to our standard error: progress
+// that must stay out of a result printed on standard output (--json).
+int run_program_to_stderr(const std::vector<std::string> &argv);
+
 // Run it and capture its standard output.
 int capture_program(const std::vector<std::string> &argv, std::string &output);
+
+// Run it and capture its standard output and error together: a step whose
+// failure the tool explains itself, rather than showing the tool's noise.
+int capture_program_and_errors(const std::vector<std::string> &argv, std::string &output);
 
 }  // namespace openswarm

@@ -4,6 +4,7 @@
 #   scaffold_build_run.sh OPENSWARM WORKDIR TEMPLATE PORT SECONDS EXPECTED_REGEX [RUN OPTIONS...]
 set -euo pipefail
 openswarm=$1 work=$2 template=$3 port=$4 seconds=$5 expected=$6
+here=$(cd "$(dirname "$0")" && pwd)
 shift 6
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 "$openswarm" new app --template "$template" --port "$port"
@@ -12,10 +13,13 @@ grep -q '"name": "app"' app/openswarm.json
 cd app
 "$openswarm" build | tee build.log
 grep -q "^Built ./build/$port/app.elf for $port" build.log
-"$openswarm" build --json | tail -1 | grep -q '"flash_total": 32768'
+grep -Eq "^  kernel and port +[0-9.]+% ~ *[1-9][0-9]* +[0-9.]+% ~ *[1-9][0-9]*$" build.log
+# --json: standard output is the JSON alone, progress goes to standard error.
+"$openswarm" build --json > build.json
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); assert j["flash_total"] == 32768 and j["share"]["approximate"]' build.json
 "$openswarm" size | tee size.log
-grep -Eq "^Equation \(1\) for this app: RAM = kernel [0-9]+ \+ stacks [0-9]+ \+ event data [0-9]+" size.log
 grep -Eq "^  kernel and port +[1-9][0-9]+ +[1-9][0-9]+$" size.log
+python3 "$here/check_footprint.py" "$here/../.." . size.log build.json
 "$openswarm" run --time "$seconds" "$@" 2>&1 | tee run.log
 grep -Eq "$expected" run.log
 "$openswarm" test | tee test.log

@@ -1,9 +1,13 @@
 // openswarm build: configure and build the app's firmware with CMake.
 #include "build.hpp"
 
+#include <cmath>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "../app_config.hpp"
+#include "../attribution.hpp"
 #include "../generate.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
@@ -64,16 +68,85 @@ struct BuildOptions {
     bool json = false;
 };
 
+// The kernel's and the app's shares of the image, from a second build
+// without link-time optimisation (the image's own map cannot say: LTO
+// merges the files). Empty, with why, if they cannot be measured; the
+// image is built all the same.
+std::vector<Share> measure_shares(const Paths &paths, const fs::path &dir, const BuildResult &r,
+                                  Progress progress, std::string &why) {
+    std::fprintf(
+        progress == Progress::on_stdout ? stdout : stderr,
+        "Measuring the kernel's and the app's shares: building once more, without link-time "
+        "optimisation, in %s\n",
+        attribution_dir(dir, r.port).string().c_str());
+    auto a = attribute_app(paths, dir, r.port, why);
+    return a ? shares_of(*a) : std::vector<Share>{};
+}
+
+// A share's bytes in the image: its percentage of the attribution build
+// applied to the image's total (LTO shrinks the parts unevenly: approximate).
+long approximate(double percent, unsigned image_bytes) {
+    return std::lround(percent * image_bytes / 100.0);
+}
+
+double one_decimal(double x) { return std::round(x * 10.0) / 10.0; }
+
+void print_summary(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
+    const PortInfo &info = port_info(r.port);
+    std::printf("Flash %s\nRAM   %s\n", bar(r.flash, info.flash_bytes).c_str(),
+                bar(r.ram, info.ram_bytes).c_str());
+    if (shares.empty()) {
+        std::printf("Shares of kernel and app: unavailable, %s\n", why.c_str());
+    } else {
+        std::printf("Shares, approximate (measured without link-time optimisation, bytes scaled to "
+                    "this image):\n");
+        std::printf("  %-38s %15s %15s\n", "", "flash", "RAM");
+        for (const Share &s : shares)
+            std::printf("  %-38s %5.1f%% ~%6ld  %5.1f%% ~%6ld\n", s.name.c_str(), s.flash_percent,
+                        approximate(s.flash_percent, r.flash), s.ram_percent,
+                        approximate(s.ram_percent, r.ram));
+    }
+    std::printf("Built %s for %s\n", r.image.string().c_str(), r.port.c_str());
+}
+
+void print_json(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
+    const PortInfo &info = port_info(r.port);
+    nlohmann::ordered_json j = {
+        {"image", r.image.string()},       {"port", r.port}, {"flash", r.flash},
+        {"flash_total", info.flash_bytes}, {"ram", r.ram},   {"ram_total", info.ram_bytes}};
+    if (shares.empty()) {
+        j["share"] = nullptr;
+        j["share_unavailable"] = why;
+    } else {
+        nlohmann::ordered_json share = {{"approximate", true},
+                                        {"measured_on", "a build without link-time optimisation"}};
+        for (const Share &s : shares)
+            share[s.key] = {{"flash_percent", one_decimal(s.flash_percent)},
+                            {"ram_percent", one_decimal(s.ram_percent)},
+                            {"flash_bytes_approx", approximate(s.flash_percent, r.flash)},
+                            {"ram_bytes_approx", approximate(s.ram_percent, r.ram)}};
+        j["share"] = share;
+    }
+    std::printf("%s\n", j.dump().c_str());
+}
+
 }  // namespace
 
 std::vector<std::string> configure_command(const Paths &paths, const fs::path &dir,
                                            const fs::path &build_dir, const std::string &port) {
-    std::vector<std::string> configure = {
-        "cmake", "-S", dir.string(), "-B", build_dir.string(), "--log-level=WARNING",
-        "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(), "-DOPENSWARM_PORT=" + port,
-        "-DOPENSWARM_GENERATED_DIR=" + fs::absolute(generated_dir(dir, port)).string()};
+    std::vector<std::string> configure = {"cmake",
+                                          "-S",
+                                          dir.string(),
+                                          "-B",
+                                          build_dir.string(),
+                                          "--log-level=WARNING",
+                                          "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(),
+                                          "-DOPENSWARM_PORT=" + port,
+                                          "-DOPENSWARM_GENERATED_DIR=" +
+                                              fs::absolute(generated_dir(dir, port)).string()};
     if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
-    if (port == "kilobot") configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(port).string());
+    if (port == "kilobot")
+        configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(port).string());
     return configure;
 }
 
@@ -81,7 +154,10 @@ fs::path generated_dir(const fs::path &dir, const std::string &port) {
     return dir / "build" / port / "openswarm";
 }
 
-std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir, const std::string &port_option) {
+std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
+                                     const std::string &port_option, Progress progress) {
+    FILE *out = progress == Progress::on_stdout ? stdout : stderr;
+    auto run = progress == Progress::on_stdout ? run_program : run_program_to_stderr;
     AppConfig config;
     try {
         config = load_app_config(dir);
@@ -113,15 +189,15 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir, co
         return std::nullopt;
     }
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
-    std::printf("Configuring %s for %s\n", config.name.c_str(), port.c_str());
-    if (run_program(configure) != 0) {
+    std::fprintf(out, "Configuring %s for %s\n", config.name.c_str(), port.c_str());
+    if (run(configure) != 0) {
         report("configuring failed (CMake's messages are above); check " +
                (dir / "CMakeLists.txt").string());
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    std::printf("Building %s\n", config.name.c_str());
-    if (run_program({"cmake", "--build", build_dir.string()}) != 0) {
+    std::fprintf(out, "Building %s\n", config.name.c_str());
+    if (run({"cmake", "--build", build_dir.string()}) != 0) {
         report("the build failed (the compiler's messages are above)");
         exit_code = EXIT_FAILED;
         return std::nullopt;
@@ -142,21 +218,17 @@ void add_build_command(CLI::App &app, const Paths &paths) {
     CLI::App *cmd = app.add_subcommand("build", "Build the app's firmware image for its robot");
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
-    cmd->add_flag("--json", o->json, "print the result as JSON");
+    cmd->add_flag("--json", o->json, "print the result as JSON (progress goes to standard error)");
     cmd->callback([o, &paths] {
-        auto r = build_app(paths, o->dir, o->port);
+        Progress progress = o->json ? Progress::on_stderr : Progress::on_stdout;
+        auto r = build_app(paths, o->dir, o->port, progress);
         if (!r) return;
-        const PortInfo &info = port_info(r->port);
-        if (o->json) {
-            std::printf("{\"image\": \"%s\", \"port\": \"%s\", \"flash\": %u, \"flash_total\": %u, "
-                        "\"ram\": %u, \"ram_total\": %u}\n",
-                        r->image.string().c_str(), r->port.c_str(), r->flash, info.flash_bytes, r->ram,
-                        info.ram_bytes);
-        } else {
-            std::printf("Flash %s\nRAM   %s\n", bar(r->flash, info.flash_bytes).c_str(),
-                        bar(r->ram, info.ram_bytes).c_str());
-            std::printf("Built %s for %s\n", r->image.string().c_str(), r->port.c_str());
-        }
+        std::string why;
+        auto shares = measure_shares(paths, o->dir, *r, progress, why);
+        if (o->json)
+            print_json(*r, shares, why);
+        else
+            print_summary(*r, shares, why);
         exit_code = EXIT_OK;
     });
 }

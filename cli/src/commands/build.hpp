@@ -24,10 +24,15 @@ std::vector<std::string> configure_command(const Paths &paths, const std::filesy
                                            const std::filesystem::path &build_dir,
                                            const std::string &port);
 
+// Where a command's progress (and CMake's) goes: standard error when
+// standard output carries a result (--json).
+enum class Progress { on_stdout, on_stderr };
+
 // Configure and build the app in dir for port ("" = the app's own);
 // prints progress, and errors ending with what to do. nullopt on failure,
 // with exit_code set.
 std::optional<BuildResult> build_app(const Paths &paths, const std::filesystem::path &dir,
-                                     const std::string &port);
+                                     const std::string &port,
+                                     Progress progress = Progress::on_stdout);
 
 }  // namespace openswarm

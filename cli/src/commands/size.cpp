@@ -1,16 +1,12 @@
-// openswarm size: where the app's flash and RAM go - the kernel and port,
-// the thread stacks, the events' data, the event queue, the app - and the
+// openswarm size: where the app's flash and RAM go - by owner (the kernel
+// and port, the thread stacks, the events' data, the event queue, the app,
+// the C runtime), each thread's stack and each event's data, and the
 // OpenSwarm paper's equation (1) evaluated for this app.
-//
-// The image is built with link-time optimisation, which merges functions
-// across files; the attribution comes from a second build without it, whose
-// link map names the file of every function and variable.
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "../app_config.hpp"
-#include "../process.hpp"
+#include "../attribution.hpp"
+#include "../footprint.hpp"
 #include "build.hpp"
 #include "commands.hpp"
 
@@ -20,96 +16,88 @@ namespace openswarm {
 
 namespace {
 
-using Tally = std::map<std::string, unsigned>;
-
-// Who owns an input section of the link map.
-std::string owner_of(const std::string &file, const std::string &section) {
-    if (file.find("_openswarm.a(") != std::string::npos) {
-        if (section == ".bss.pool") return "thread stacks (pool)";
-        if (section == ".bss.arena") return "event data (d_i)";
-        if (section == ".bss.ring") return "event queue";
-        return "kernel and port";
-    }
-    if (file.find("CMakeFiles/") != std::string::npos) return "app";
-    return "C runtime and library";
+void print_owners(const BuildResult &built, const Attribution &a) {
+    std::printf("\nImage %s: flash %u bytes, RAM %u bytes (plus the main stack).\n",
+                built.image.string().c_str(), built.flash, built.ram);
+    std::printf("Without link-time optimisation it would take %u and %u; by owner:\n",
+                a.flash_total(), a.ram_total());
+    std::printf("  %-24s %7s %7s\n", "", "flash", "RAM");
+    std::map<std::string, bool> owners;
+    for (const auto &[who, bytes] : a.flash) owners[who] = true;
+    for (const auto &[who, bytes] : a.ram) owners[who] = true;
+    for (const auto &[who, unused] : owners)
+        std::printf("  %-24s %7u %7u\n", who.c_str(), a.flash_of(who), a.ram_of(who));
 }
 
-// Sum the input sections of the map's .text, .data and .bss by owner.
-bool read_map(const fs::path &map, Tally &flash, Tally &ram) {
-    std::ifstream in(map);
-    if (!in) return false;
-    std::string line, output, pending;
-    bool in_memory_map = false;
-    while (std::getline(in, line)) {
-        if (line.rfind("Linker script and memory map", 0) == 0) in_memory_map = true;
-        if (!in_memory_map || line.empty()) continue;
-        if (line[0] == '.') { // an output section
-            output = line.substr(0, line.find_first_of(" \t"));
-            continue;
-        }
-        std::istringstream fields(line);
-        std::string first, address, size, file;
-        fields >> first;
-        bool named = first.rfind(".", 0) == 0 || first == "COMMON"; // COMMON: tentative globals
-        if (named && !(fields >> address)) { // a long name, the rest below
-            pending = first;
-            continue;
-        }
-        std::string section = first;
-        if (first.rfind("0x", 0) == 0) { // continuation of a long name
-            section = pending;
-            address = first;
-        }
-        pending.clear();
-        if (!(fields >> size >> file) || size.rfind("0x", 0) != 0) continue;
-        if (section.rfind(".", 0) != 0 && section != "COMMON") continue;
-        unsigned bytes = (unsigned)std::stoul(size, nullptr, 16);
-        if (bytes == 0) continue;
-        std::string owner = owner_of(file, section);
-        if (output == ".text") flash[owner] += bytes;
-        if (output == ".data") {
-            flash[owner] += bytes; // initial values live in flash too
-            ram[owner] += bytes;
-        }
-        if (output == ".bss") ram[owner] += bytes;
+void print_line(const std::string &what, long bytes) {
+    std::printf("  %-48s %7ld\n", what.c_str(), bytes);
+}
+
+void print_stacks(const Footprint &f) {
+    std::printf(
+        "\nThread stacks, as the pool carves them (requested + the port's %u + a %u-byte guard,\n"
+        "in %u-byte blocks):\n",
+        f.stack_extra, f.stack_guard, f.stack_block);
+    for (const auto &t : f.threads)
+        std::printf("  %-38s %6u -> %7u\n", t.name.c_str(), t.requested, t.carved);
+    print_line("not listed: spare, or threads the code starts",
+               (long)f.pool - (long)f.listed_stacks());
+    print_line("the stack pool", f.pool);
+}
+
+void print_events(const Footprint &f) {
+    std::printf("Events' data (d_i):\n");
+    for (const auto &e : f.events) print_line(e.what, e.bytes);
+    print_line("the kernel's and port's " + std::to_string(f.port_events) + " own events",
+               f.port_event_bytes);
+    print_line("not listed: spare",
+               (long)f.event_data - (long)f.listed_data() - (long)f.port_event_bytes);
+    print_line("the event data pool", f.event_data);
+}
+
+void print_equation(const Footprint &f) {
+    const Equation &e = f.equation;
+    std::printf("\nEquation (1): RAM = C + %u n + %u m + sum d_i + sum stacks = %u + %u*%u + %u*%u "
+                "+ %u + %u = %u bytes\n",
+                e.per_thread, e.per_event, e.fixed, e.per_thread, e.n, e.per_event, e.m, e.data,
+                e.stacks, e.total());
+    std::printf(
+        "  (the paper's form; C, %u and %u measured on the minimal kernel, docs/benchmarks.md;\n"
+        "  n: the threads listed above, m: openswarm.json's events)\n",
+        e.per_thread, e.per_event);
+    long gap = (long)f.reserved() - (long)e.total();
+    std::printf("The build reserves %u bytes for the kernel (kernel and port %u + stacks %u + "
+                "event data %u\n"
+                "+ queue %u), %ld %s than equation (1):\n",
+                f.reserved(), f.kernel, f.pool, f.event_data, f.queue, gap < 0 ? -gap : gap,
+                gap < 0 ? "fewer" : "more");
+    for (const auto &b : f.beyond) {
+        std::string what = b.what;
+        for (size_t at = what.find('\n'); at != std::string::npos; at = what.find('\n', at + 1))
+            what.insert(at + 1, 11, ' '); // under the first line's text
+        std::printf("  %7ld  %s\n", b.bytes, what.c_str());
     }
-    return true;
+    for (const auto &w : f.warnings) std::printf("Warning: %s\n", w.c_str());
 }
 
 int run_size(const std::string &dir, const Paths &paths) {
     auto built = build_app(paths, dir, "");
     if (!built) return exit_code;
-    fs::path attribution = fs::path(dir) / "build" / (built->port + "-size");
-    fs::path map = fs::absolute(attribution / "link.map");
     std::printf("Building once more without link-time optimisation, to attribute every byte\n");
-    std::vector<std::string> configure = configure_command(paths, dir, attribution, built->port);
-    configure.insert(configure.end(), {"-DOPENSWARM_LTO=OFF", "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + map.string()});
-    std::string quiet;
-    if (capture_program(configure, quiet) != 0 || capture_program({"cmake", "--build", attribution.string()}, quiet) != 0) {
-        report("the attribution build failed:\n" + quiet);
+    std::string why;
+    auto attribution = attribute_app(paths, dir, built->port, why);
+    if (!attribution) {
+        report("cannot attribute the image's bytes: " + why);
         return EXIT_FAILED;
     }
-    Tally flash, ram;
-    if (!read_map(map, flash, ram)) {
-        report("cannot read the link map " + map.string());
-        return EXIT_FAILED;
-    }
-    unsigned flash_total = 0, ram_total = 0;
-    for (const auto &[what, bytes] : flash) flash_total += bytes;
-    for (const auto &[what, bytes] : ram) ram_total += bytes;
-    std::printf("\nImage %s: flash %u bytes, RAM %u bytes (plus the main stack).\n",
-                built->image.string().c_str(), built->flash, built->ram);
-    std::printf("Without link-time optimisation it would take %u and %u; by owner:\n", flash_total, ram_total);
-    std::printf("  %-24s %7s %7s\n", "", "flash", "RAM");
-    std::map<std::string, bool> owners;
-    for (const auto &[what, bytes] : flash) owners[what] = true;
-    for (const auto &[what, bytes] : ram) owners[what] = true;
-    for (const auto &[what, unused] : owners)
-        std::printf("  %-24s %7u %7u\n", what.c_str(), flash[what], ram[what]);
-    std::printf("Equation (1) for this app: RAM = kernel %u + stacks %u + event data %u + queue %u"
-                " + app %u bytes\n(the paper's form, C + 12 n + 4 m + sum d_i + stacks: docs/benchmarks.md)\n",
-                ram["kernel and port"], ram["thread stacks (pool)"], ram["event data (d_i)"],
-                ram["event queue"], ram["app"]);
+    print_owners(*built, *attribution);
+    AppConfig config = load_app_config(dir); // build_app has validated it
+    config.port = built->port;
+    Footprint f =
+        footprint_of(config, *attribution, generated_dir(dir, built->port) / "openswarm_config.h");
+    print_stacks(f);
+    print_events(f);
+    print_equation(f);
     return EXIT_OK;
 }
 

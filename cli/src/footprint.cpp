@@ -1,0 +1,164 @@
+#include "footprint.hpp"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "ports.hpp"
+
+namespace fs = std::filesystem;
+
+namespace openswarm {
+
+namespace {
+
+// The guard pattern at the bottom of every stack (OS_STACK_GUARD_BYTES,
+// kernel/src/kernel_internal.h): the same on every port.
+constexpr unsigned stack_guard = 4;
+
+// A thread a port's library starts itself, known by the object file that
+// starts it being linked. (The port's events are in ports.hpp.)
+struct LibraryThread {
+    const char *object, *name;
+    unsigned stack; // bytes requested
+};
+
+// What the RAM accounting needs to know of a port beyond ports.hpp.
+struct PortCosts {
+    const char *port;
+    unsigned stack_extra; // PORT_STACK_EXTRA, added to every stack (port_arch.h)
+    // Equation (1)'s measured terms (bench/avr_bench.py, docs/benchmarks.md):
+    // the minimal kernel (the system thread, 6 event slots, 1 subscription,
+    // a 16-byte queue), a thread's control block, an event slot.
+    unsigned fixed, per_thread, per_event;
+    std::vector<LibraryThread> threads;
+};
+
+const PortCosts &costs_of(const std::string &port) {
+    static const std::vector<PortCosts> all = {
+        {"kilobot", 64, /* C */ 155, /* per thread */ 12, /* per event */ 4,
+         // KILOLIB_LOOP_STACK (overhead_controller.c), KILOLIB_TX_STACK (kilolib.c)
+         {{"overhead_controller.c.obj", "kilolib: the program (setup, loop)", 192},
+          {"kilolib.c.obj", "kilolib: message transmitter", 48}}},
+    };
+    for (const auto &c : all)
+        if (c.port == port) return c;
+    throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp");
+}
+
+// The OS_CFG_* values the build used: the generated header's, or the port's.
+std::map<std::string, unsigned> generated_values(const fs::path &header) {
+    std::map<std::string, unsigned> values;
+    std::ifstream in(header);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        std::string define, macro;
+        unsigned value = 0;
+        if (fields >> define >> macro >> value && define == "#define") values[macro] = value;
+    }
+    return values;
+}
+
+unsigned value_or(const std::map<std::string, unsigned> &values, const std::string &macro,
+                  unsigned port_default) {
+    auto it = values.find(macro);
+    return it == values.end() ? port_default : it->second;
+}
+
+unsigned round_up(unsigned n, unsigned block) { return (n + block - 1) / block * block; }
+
+// The gap between what the build reserves and equation (1), item by item;
+// the last item is the rest, so the items always add up to the gap.
+void explain_gap(Footprint &f) {
+    const Equation &e = f.equation;
+    long gap = (long)f.reserved() - (long)e.total();
+    unsigned slots = f.max_threads - 1; // the system thread has the first
+    if (e.n <= slots)
+        f.beyond.push_back({std::to_string(slots - e.n) +
+                                (slots - e.n == 1 ? " spare thread slot" : " spare thread slots") +
+                                " (max_threads " + std::to_string(f.max_threads) +
+                                ": the system thread, " + std::to_string(e.n) + " listed, " +
+                                std::to_string(slots - e.n) + " spare)",
+                            (long)((slots - e.n) * e.per_thread)});
+    else
+        f.warnings.push_back(
+            std::to_string(e.n) + " threads are listed but the kernel has slots for " +
+            std::to_string(slots) + ": raise \"kernel\": {\"max_threads\"} in openswarm.json");
+    f.beyond.push_back({"stack pool no listed thread takes (spare, or threads the code starts)",
+                        (long)f.pool - (long)e.stacks});
+    f.beyond.push_back({"event data of the kernel's and port's own events, and spare",
+                        (long)f.event_data - (long)e.data});
+    long explained = 0;
+    for (const auto &b : f.beyond) explained += b.bytes;
+    f.beyond.push_back(
+        {"the rest: the kernel and port beyond C's minimal configuration (more event\n"
+         "slots and subscriptions, a longer queue, the devices' table and state)",
+         gap - explained});
+}
+
+void check_pools(Footprint &f) {
+    if (f.pool < f.listed_stacks())
+        f.warnings.push_back(
+            "the stack pool (" + std::to_string(f.pool) + " bytes) is " +
+            std::to_string(f.listed_stacks() - f.pool) +
+            " bytes short of the listed threads' stacks: one will not start; raise "
+            "\"kernel\": {\"stack_pool\"} in openswarm.json");
+    unsigned data = f.listed_data() + f.port_event_bytes;
+    if (f.event_data < data)
+        f.warnings.push_back("the event data pool (" + std::to_string(f.event_data) +
+                             " bytes) is " + std::to_string(data - f.event_data) +
+                             " bytes short of the events' data: an event will not register; raise "
+                             "\"kernel\": {\"event_data\"} in openswarm.json");
+}
+
+}  // namespace
+
+unsigned Footprint::listed_stacks() const {
+    unsigned total = 0;
+    for (const auto &t : threads) total += t.carved;
+    return total;
+}
+
+unsigned Footprint::listed_data() const {
+    long total = 0;
+    for (const auto &e : events) total += e.bytes;
+    return (unsigned)total;
+}
+
+Footprint footprint_of(const AppConfig &config, const Attribution &a,
+                       const fs::path &generated_config) {
+    const PortInfo &port = port_info(config.port);
+    const PortCosts &costs = costs_of(config.port);
+    auto values = generated_values(generated_config);
+    Footprint f{};
+    f.stack_extra = costs.stack_extra;
+    f.stack_guard = stack_guard;
+    f.stack_block = value_or(values, "OS_CFG_STACK_BLOCK_BYTES", port.stack_block);
+    f.max_threads = value_or(values, "OS_CFG_MAX_THREADS", port.default_max_threads);
+    unsigned default_stack = value_or(values, "OS_CFG_DEFAULT_STACK_BYTES", port.default_stack);
+    // os_stack_alloc (kernel/src/stack_pool.c): whole blocks for the bytes
+    // asked, the port's extra and the guard; 0 asks for the default.
+    auto carve = [&](const std::string &name, unsigned asked) {
+        unsigned requested = asked ? asked : default_stack;
+        f.threads.push_back(
+            {name, requested, round_up(requested + f.stack_extra + f.stack_guard, f.stack_block)});
+    };
+    for (const auto &t : config.threads) carve(t.entry, t.stack);
+    for (const auto &e : config.events) f.events.push_back({e.name, (long)e.size});
+    for (const auto &t : costs.threads)
+        if (a.kernel_objects.count(t.object)) carve(t.name, t.stack);
+    f.port_events = port.device_events;
+    f.port_event_bytes = port.device_event_bytes;
+    f.pool = a.ram_of(owner::stacks);
+    f.event_data = a.ram_of(owner::event_data);
+    f.queue = a.ram_of(owner::event_queue);
+    f.kernel = a.ram_of(owner::kernel);
+    f.equation = Equation{costs.fixed, costs.per_thread, costs.per_event, (unsigned)f.threads.size(),
+                          (unsigned)f.events.size(), f.listed_data(), f.listed_stacks()};
+    explain_gap(f);
+    check_pools(f);
+    return f;
+}
+
+}  // namespace openswarm
