@@ -63,6 +63,8 @@ typedef struct os_kernel {
     sys_tcb *preempted; /* thread to resume once the system thread's work is done */
     const sys_scheduler *policy;
     uint32_t now_ms;
+    uint32_t timeout_elapsed; /* ticks since the timed waits were brought up to date */
+    uint32_t timeout_next;    /* ticks after that when the nearest expires; 0: none */
     uint32_t switches;
     uint16_t slice_ms;
     uint16_t slice_left;

@@ -4,9 +4,16 @@
  * same event and each is woken with its own copy of the data. */
 #include "kernel_internal.h"
 
+static void settle_timeouts(void);
+
 static sys_status block_current(os_wait *w) {
     if (w->event != OS_NO_EVENT) os.event_waiters++;
     os_listeners_changed();
+    if (w->timed) {
+        settle_timeouts(); /* the others' remaining_ms count from now, like w's */
+        if (os.timeout_next == 0 || w->remaining_ms < os.timeout_next)
+            os.timeout_next = w->remaining_ms;
+    }
     os.current->wait = w;
     os.current->state = SYS_PROCESS_BLOCKED;
     os_schedule(); /* returns once woken */
@@ -111,10 +118,27 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
     }
 }
 
-/* From the tick: wake the threads whose deadline has come. */
-void os_check_timeouts(void) {
+/* Timeouts. Each timed wait keeps its own remaining_ms, but the tick does
+ * not count them all down every millisecond: it counts the ticks since they
+ * were last brought up to date (timeout_elapsed) and visits them only when
+ * the nearest is due (timeout_next), or when a new timed wait needs them
+ * current. Any 32-bit timeout works; none wakes late or early. */
+static void settle_timeouts(void) {
+    uint32_t elapsed = os.timeout_elapsed, next = 0;
+    os.timeout_elapsed = 0;
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait; /* set exactly while t is blocked */
-        if (w != NULL && w->timed && --w->remaining_ms == 0) wake(t, SYS_E_TIMEOUT);
+        if (w == NULL || !w->timed) continue;
+        w->remaining_ms -= elapsed; /* never below 0: elapsed stays under timeout_next */
+        if (w->remaining_ms == 0)
+            wake(t, SYS_E_TIMEOUT);
+        else if (next == 0 || w->remaining_ms < next)
+            next = w->remaining_ms;
     }
+    os.timeout_next = next;
+}
+
+/* From the tick. */
+void os_check_timeouts(void) {
+    if (os.timeout_next != 0 && ++os.timeout_elapsed == os.timeout_next) settle_timeouts();
 }

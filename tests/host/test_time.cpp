@@ -91,6 +91,39 @@ TEST_F(Time, SleepersWakeInTheOrderOfTheirDeadlines) {
     EXPECT_EQ("b@3 a@5", joined());
 }
 
+// The tick visits the timed waits only when the nearest is due; a wait that
+// starts, or ends early, in between must leave every other deadline exact.
+TEST_F(Time, DeadlinesStayExactAsWaitsComeAndGo) {
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        spawn([] {
+            Sys_Sleep(10);
+            note("a@" + std::to_string(Sys_Get_SystemTime()));
+        });
+        spawn([] {
+            Sys_Sleep(3); // starts the next wait while a counts down
+            Sys_Sleep(4);
+            note("b@" + std::to_string(Sys_Get_SystemTime()));
+        });
+        spawn([] {
+            sys_status st = Sys_Wait_for_Event_Timeout(EV_A, 2, nullptr, 0, nullptr);
+            note("c" + std::string(st == SYS_E_TIMEOUT ? "-timeout" : "-event") + "@" +
+                 std::to_string(Sys_Get_SystemTime()));
+            st = Sys_Wait_for_Event_Timeout(EV_A, 50, nullptr, 0, nullptr); // ended early below
+            note("c" + std::string(st == SYS_E_TIMEOUT ? "-timeout" : "-event") + "@" +
+                 std::to_string(Sys_Get_SystemTime()));
+            Sys_Sleep(6);
+            note("c@" + std::to_string(Sys_Get_SystemTime()));
+        });
+    });
+    settle();
+    ticks(5);
+    irq([] { Sys_Send_Event(EV_A, nullptr, 0); }); // at 5: ends c's 50 ms wait
+    settle();
+    ticks(10);
+    EXPECT_EQ("c-timeout@2 c-event@5 b@7 a@10 c@11", joined());
+}
+
 TEST_F(Time, SleepZeroReturnsAtOnceAndSleepOutsideAThreadIsRefused) {
     sys_status in_setup = SYS_OK, in_irq = SYS_OK, zero = SYS_E_INVALID;
     boot([&] {
