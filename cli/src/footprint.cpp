@@ -36,7 +36,7 @@ struct PortCosts {
 
 const PortCosts &costs_of(const std::string &port) {
     static const std::vector<PortCosts> all = {
-        {"kilobot", 64, /* C */ 155, /* per thread */ 12, /* per event */ 4,
+        {"kilobot", 64, /* C */ 163, /* per thread */ 12, /* per event */ 4,
          // KILOLIB_LOOP_STACK (overhead_controller.c), KILOLIB_TX_STACK (kilolib.c)
          {{"overhead_controller.c.obj", "kilolib: the program (setup, loop)", 192},
           {"kilolib.c.obj", "kilolib: message transmitter", 48}}},
