@@ -16,13 +16,6 @@ namespace {
 // kernel/src/kernel_internal.h): the same on every port.
 constexpr unsigned stack_guard = 4;
 
-// A thread a port's library starts itself, known by the object file that
-// starts it being linked. (The port's events are in ports.hpp.)
-struct LibraryThread {
-    const char *object, *name;
-    unsigned stack; // bytes requested
-};
-
 // What the RAM accounting needs to know of a port beyond ports.hpp.
 struct PortCosts {
     const char *port;
@@ -31,15 +24,11 @@ struct PortCosts {
     // the minimal kernel (the system thread, 6 event slots, 1 subscription,
     // a 16-byte queue), a thread's control block, an event slot.
     unsigned fixed, per_thread, per_event;
-    std::vector<LibraryThread> threads;
 };
 
 const PortCosts &costs_of(const std::string &port) {
     static const std::vector<PortCosts> all = {
-        {"kilobot", 64, /* C */ 163, /* per thread */ 12, /* per event */ 4,
-         // KILOLIB_LOOP_STACK (overhead_controller.c), KILOLIB_TX_STACK (kilolib.c)
-         {{"overhead_controller.c.obj", "kilolib: the program (setup, loop)", 192},
-          {"kilolib.c.obj", "kilolib: message transmitter", 48}}},
+        {"kilobot", 64, /* C */ 163, /* per thread */ 12, /* per event */ 4},
     };
     for (const auto &c : all)
         if (c.port == port) return c;
@@ -146,8 +135,11 @@ Footprint footprint_of(const AppConfig &config, const Attribution &a,
     };
     for (const auto &t : config.threads) carve(t.entry, t.stack);
     for (const auto &e : config.events) f.events.push_back({e.name, (long)e.size});
-    for (const auto &t : costs.threads)
-        if (a.kernel_objects.count(t.object)) carve(t.name, t.stack);
+    // The libraries' threads are in the image when the object file that
+    // starts them is linked: the link map knows better than the sources.
+    for (const auto &library : port.libraries)
+        for (const auto &t : library.threads)
+            if (a.kernel_objects.count(t.object)) carve(t.name, t.stack);
     f.port_events = port.device_events;
     f.port_event_bytes = port.device_event_bytes;
     f.pool = a.ram_of(owner::stacks);

@@ -6,11 +6,15 @@
 #include <filesystem>
 
 #include "app_config.hpp"
+#include "ports.hpp"
 
 namespace openswarm {
 
 // Write out_dir/openswarm_config.h, openswarm_app.h and openswarm_app.c
-// (only the files whose content changed, so builds stay incremental).
-void generate_app_files(const AppConfig &config, const std::filesystem::path &out_dir);
+// (only the files whose content changed, so builds stay incremental), with
+// room in the pools for the threads the libraries start as well. A
+// max_threads the file gives that leaves them no slot is a ConfigError.
+void generate_app_files(const AppConfig &config, const Libraries &libraries,
+                        const std::filesystem::path &out_dir);
 
 }  // namespace openswarm

@@ -4,18 +4,19 @@
 
 namespace openswarm {
 
-const std::vector<PortInfo> &ports() {
-    static const std::vector<PortInfo> all = {
-        // Device events: LED, motors, IR in and out (16 bytes each), light,
-        // voltage, temperature (an int16_t each), kilolib's transmit turn (1
-        // byte); kilobot.h, port_arch.h, kilolib_internal.h.
-        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 10, 6 + 4 * 16 + 3 * 2 + 1,
-         4, 14, 96, 16},
-    };
-    return all;
-}
-
 namespace {
+
+// kilo_start starts the program's thread and the message transmitter
+// (KILOLIB_LOOP_STACK in overhead_controller.c, KILOLIB_TX_STACK in
+// kilolib.c). The overhead controller's other activities (status lights,
+// calibration motion) take the program's place, not a place of their own:
+// kilolib_activity_start kills the running activity before it starts the
+// next, on the same stack size.
+PortLibrary kilolib() {
+    return {"kilolib", "kilolib.h",
+            {{"kilolib: the program (setup, loop)", 192, "overhead_controller.c.obj"},
+             {"kilolib: message transmitter", 48, "kilolib.c.obj"}}};
+}
 
 // The analog sensors' pre-processors: the ADC count, or a table mapping it.
 std::vector<ProcessorInfo> kilobot_sensor_processors() {
@@ -27,6 +28,17 @@ std::vector<ProcessorInfo> kilobot_sensor_processors() {
 }
 
 }  // namespace
+
+const std::vector<PortInfo> &ports() {
+    static const std::vector<PortInfo> all = {
+        // Device events: LED, motors, IR in and out (16 bytes each), light,
+        // voltage, temperature (an int16_t each), kilolib's transmit turn (1
+        // byte); kilobot.h, port_arch.h, kilolib_internal.h.
+        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 10, 6 + 4 * 16 + 3 * 2 + 1,
+         4, 14, 96, 16, {kilolib()}},
+    };
+    return all;
+}
 
 const std::vector<DeviceInfo> &devices_of(const std::string &port) {
     static const std::vector<DeviceInfo> kilobot = {

@@ -7,6 +7,23 @@
 
 namespace openswarm {
 
+// A thread one of the port's libraries starts by itself: the pools must
+// make room for it besides the threads openswarm.json declares.
+struct LibraryThread {
+    std::string name;   // as `openswarm size` lists it
+    unsigned stack;     // bytes requested (the library's own #define)
+    std::string object; // the object file that starts it, as a link map names it
+};
+
+// A library of the port whose use the tool finds in the app's sources
+// (app_sources.hpp): an app that includes header uses it.
+struct PortLibrary {
+    std::string name, header;
+    std::vector<LibraryThread> threads;
+};
+// Those of a port's libraries that one app uses.
+using Libraries = std::vector<const PortLibrary *>;
+
 struct PortInfo {
     std::string name;
     std::string description;
@@ -17,6 +34,7 @@ struct PortInfo {
     unsigned device_events;      // event ids before the app's (kernel's 2 + port's)
     unsigned device_event_bytes; // their data
     unsigned default_max_threads, default_max_events, default_stack, stack_block;
+    std::vector<PortLibrary> libraries;
 };
 
 // A processor a device can use, as openswarm.json names it, and what the

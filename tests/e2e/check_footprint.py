@@ -5,7 +5,8 @@ what the app, the port and the kernel say, independently of the tool:
 - each openswarm.json thread's stack as the kernel carves it (requested or the
   default, + PORT_STACK_EXTRA + the 4-byte guard, rounded up to whole
   OS_CFG_STACK_BLOCK_BYTES), and kilolib's threads when the app uses kilolib;
-- the stack pool and the event data pool against the kernel's sizing rules;
+- the stack pool and the event data pool against the kernel's sizing rules,
+  and that the pool and the thread slots hold every listed thread at once;
 - each event's data (its type's size);
 - equation (1)'s arithmetic, its n, m, d_i and stacks, its measured terms
   against docs/benchmarks.md, and that the gap to the reserved RAM is fully
@@ -94,6 +95,12 @@ def main():
         fail(f"the stack pool should be {pool} bytes")
     if line_value(log, "not listed: spare, or threads the code starts") != pool - stacks:
         fail(f"the unlisted stack pool should be {pool - stacks} bytes")
+    # Every listed thread starts: a slot and a stack each, at once.
+    if stacks > pool:
+        fail(f"the listed threads' stacks take {stacks} bytes, more than the {pool}-byte stack pool")
+    if len(threads) + 1 > cfg["OS_CFG_MAX_THREADS"]:
+        fail(f"{len(threads)} listed threads and the system thread need OS_CFG_MAX_THREADS >= "
+             f"{len(threads) + 1}, found {cfg['OS_CFG_MAX_THREADS']}")
     arena = cfg["OS_CFG_EVENT_DATA_BYTES"]
     if line_value(log, "the event data pool") != arena or owners["event data (d_i)"][1] != arena:
         fail(f"the event data pool should be {arena} bytes")

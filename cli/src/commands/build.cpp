@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../app_config.hpp"
+#include "../app_sources.hpp"
 #include "../attribution.hpp"
 #include "../generate.hpp"
 #include "../ports.hpp"
@@ -182,7 +183,11 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     fs::path generated = generated_dir(dir, port);
     config.port = port;
     try {
-        generate_app_files(config, generated);
+        generate_app_files(config, libraries_used(dir, port_info(port)), generated);
+    } catch (const ConfigError &e) {
+        report(e.what());
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
     } catch (const std::exception &e) {
         report(std::string(e.what()) + "; check that " + build_dir.string() + " is writable");
         exit_code = EXIT_FAILED;
