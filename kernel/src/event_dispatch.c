@@ -33,8 +33,12 @@ void os_dispatch_one(void) {
     os_run_handlers(&occurrence);
 }
 
+/* Until the queue is empty, or a handler has ended a thread: reaping comes
+ * first, as in the system thread's loop, so what a later handler starts can
+ * have the ended thread's slot and stack. (The rest is dispatched by the
+ * system thread, before the interrupted thread runs on.) */
 static void dispatch_all(void) {
-    while (!os_event_queue_empty()) os_dispatch_one();
+    while (!os_event_queue_empty() && !os.reap_pending) os_dispatch_one();
 }
 
 /* From a running thread, or an interrupt that ends: the handlers run at

@@ -47,6 +47,49 @@ TEST_F(Pools, StackPoolRunsOutAndFreedStacksAreReused) {
     EXPECT_STATUS(SYS_OK, again) << "the reaped thread's stack is free again";
 }
 
+// A handler that ends a thread, then another that starts one, from a single
+// interrupt while a thread runs: the ended thread is reaped before the second
+// handler, so its slot is there to reuse (kilolib swaps its activity threads
+// so when the overhead controller asks, with every slot in use).
+static sys_pid victim;
+static sys_status restart;
+TEST_F(Pools, AThreadEndedByAHandlerIsReapedBeforeTheNextHandlerRuns) {
+    restart = SYS_E_INVALID;
+    boot([&] {
+        spawn([] {
+            for (;;) {
+            }
+        });
+        sys_pid pid;
+        victim = SYS_PID_NONE;
+        while (Sys_Start_Process_Ex(sleeper, nullptr, 32, 0, &pid) == SYS_OK)
+            if (victim == SYS_PID_NONE) victim = pid;
+        Sys_Register_Event(EV_A);
+        Sys_Register_Event(EV_B);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM,
+                               [](sys_pid, sys_event_id, const sys_event_data *) {
+                                   Sys_Kill_Process(victim);
+                                   return true;
+                               },
+                               nullptr);
+        Sys_Subscribe_to_Event(EV_B, SYS_PID_SYSTEM,
+                               [](sys_pid, sys_event_id, const sys_event_data *) {
+                                   sys_pid again;
+                                   restart = Sys_Start_Process_Ex(sleeper, nullptr, 32, 0, &again);
+                                   return true;
+                               },
+                               nullptr);
+    });
+    irq([] {}); // the set-up has run; the spinner runs now
+    irq([] {
+        Sys_Send_Event(EV_A, nullptr, 0);
+        Sys_Send_Event(EV_B, nullptr, 0);
+    });
+    ASSERT_TRUE(eventually([&] { return restart != SYS_E_INVALID; }));
+    EXPECT_STATUS(SYS_OK, restart);
+    power_off();
+}
+
 TEST_F(Pools, EventDataArenaRunsOutAndUnregisteredBlocksAreReused) {
     sys_status first = SYS_E_INVALID, second = SYS_OK, reuse = SYS_E_INVALID;
     boot([&] {

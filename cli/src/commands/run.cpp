@@ -19,6 +19,9 @@ struct RunOptions {
     bool robots_given = false;
     int gdb = 0;
     std::string vcd;
+    std::vector<std::string> ohc; // overhead-controller messages, MSG@SECONDS
+    bool profile = false;
+    std::vector<std::string> simulator_options; // after --, passed as they are
 };
 
 int run_app(const RunOptions &o, const Paths &paths) {
@@ -41,6 +44,9 @@ int run_app(const RunOptions &o, const Paths &paths) {
     if (o.ir_range != 0) argv.insert(argv.end(), {"--ir-range", std::to_string(o.ir_range)});
     if (o.gdb != 0) argv.insert(argv.end(), {"--gdb", std::to_string(o.gdb)});
     if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
+    for (const auto &message : o.ohc) argv.insert(argv.end(), {"--ohc", message});
+    if (o.profile) argv.push_back("--profile");
+    argv.insert(argv.end(), o.simulator_options.begin(), o.simulator_options.end());
     argv.push_back(built->image.string());
     std::printf("Running %s in the simulator for %s s\n", built->image.filename().string().c_str(),
                 seconds.c_str());
@@ -70,6 +76,15 @@ void add_run_command(CLI::App &app, const Paths &paths) {
         ->check(CLI::Range(10, 1000));
     cmd->add_option("--gdb", o->gdb, "wait for avr-gdb on this TCP port")->check(CLI::Range(1, 65535));
     cmd->add_option("--vcd", o->vcd, "record pins and motors into this GTKWave file");
+    cmd->add_option("--ohc", o->ohc,
+                    "the overhead controller sends MSG at SECONDS (run, sleep, reset, boot, "
+                    "calib-left:70, ...; repeatable)")
+        ->type_name("MSG@SECONDS");
+    cmd->add_flag("--profile", o->profile, "print where the CPU cycles went, by function");
+    cmd->add_option("simulator-options", o->simulator_options,
+                    "after --: more openswarm-sim options, passed as they are (openswarm-sim --help), "
+                    "e.g. -- --light 500 --uid 7")
+        ->type_name("");
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
     cmd->callback([o, robots, &paths] {

@@ -92,26 +92,26 @@ static uint16_t ms_of_ticks(uint16_t ticks) {
     return (uint16_t)(((uint32_t)ticks * 1000u + TICKS_PER_SEC - 1u) / TICKS_PER_SEC);
 }
 
-/* The program's transmit callbacks run as an event handler, like the
- * classic library's from its timer interrupt: on the main stack, not on
- * the transmitter's small one, so they may do anything (print, compute a
- * CRC). A thread's send runs the handler before it returns. */
-enum { TX_DUE, TX_SENT };
+/* kilolib's own work runs as an event handler, on the system (main)
+ * stack: the program's transmit callbacks, as the classic library's run
+ * from its timer interrupt, so they may do anything (print, compute a CRC)
+ * that the transmitter's small stack could not hold; and an activity's
+ * thread, which must wait until the thread it replaces is reaped. */
 static message_t *outgoing;
 
-static bool run_tx_callback(sys_pid pid, sys_event_id event, const sys_event_data *turn) {
+static bool run_call(sys_pid pid, sys_event_id event, const sys_event_data *call) {
     (void)pid;
     (void)event;
-    if (*(const uint8_t *)turn->value == TX_DUE)
-        outgoing = kilo_message_tx();
-    else
-        kilo_message_tx_success();
+    switch (*(const uint8_t *)call->value) {
+    case KILOLIB_TX_DUE: outgoing = kilo_message_tx(); break;
+    case KILOLIB_TX_SENT: kilo_message_tx_success(); break;
+    case KILOLIB_START_ACTIVITY: kilolib_activity_thread_start(); break;
+    default: break;
+    }
     return true;
 }
 
-static bool tx_callback(uint8_t turn) {
-    return Sys_Send_Event(KILOLIB_EVENT_TX, &turn, 1) == SYS_OK;
-}
+bool kilolib_call(uint8_t what) { return Sys_Send_Event(KILOLIB_EVENT_CALL, &what, 1) == SYS_OK; }
 
 /* Every kilo_tx_period (give or take a random 0-15 ms, so robots that
  * started together drift apart), kilo_message_tx's message (its crc set by
@@ -123,9 +123,9 @@ static void transmitter(void *arg) {
         Sys_Sleep(ms_of_ticks(kilo_tx_period) + (rand_soft() & 15u));
         if (kilolib_activity() != RUN) continue;
         outgoing = 0;
-        if (!tx_callback(TX_DUE) || outgoing == 0) continue;
+        if (!kilolib_call(KILOLIB_TX_DUE) || outgoing == 0) continue;
         while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
-        tx_callback(TX_SENT);
+        kilolib_call(KILOLIB_TX_SENT);
     }
 }
 
@@ -137,8 +137,8 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     tick_fraction = 0;
     kilobot_tick_hook = count_kilo_ticks;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
-    Sys_Register_Event_Sized(KILOLIB_EVENT_TX, 1);
-    Sys_Subscribe_to_Event(KILOLIB_EVENT_TX, SYS_PID_SYSTEM, run_tx_callback, 0);
+    Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
+    Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);
     kilolib_activity_start(RUN, kilolib_program);
     Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();

@@ -7,9 +7,17 @@
 #include "kilolib.h"
 #include "openswarm/kernel.h"
 
-/* kilolib.c. Data: one byte, which transmit callback to run (the
- * transmitter thread sends it, the handler runs it on the system stack). */
-#define KILOLIB_EVENT_TX ((sys_event_id)(SYS_EVENT_PORT_FIRST + 7))
+/* kilolib.c. kilolib's own work to run as a handler, on the system stack
+ * and after any thread ended before it is reaped; the data is one byte,
+ * which work (kilolib_call). */
+#define KILOLIB_EVENT_CALL ((sys_event_id)(SYS_EVENT_PORT_FIRST + 7))
+enum kilolib_call {
+    KILOLIB_TX_DUE,        /* kilo_message_tx() */
+    KILOLIB_TX_SENT,       /* kilo_message_tx_success() */
+    KILOLIB_START_ACTIVITY /* the thread of the activity kilolib_activity_start asked for */
+};
+/* Queue one (from a thread it runs before the call returns). */
+bool kilolib_call(uint8_t what);
 void kilolib_program(void *arg); /* the program: setup(), then loop() for ever */
 /* kilo_uid and the motor calibration (kilo_turn_left, ... and the motors'
  * kilobot_calib) as the EEPROM holds them. */
@@ -21,8 +29,10 @@ void kilolib_identity_load(void);
 void kilolib_system_message(const message_t *msg);
 uint8_t kilolib_activity(void);
 /* The current activity ends (its thread killed, motors off, LED dark) and
- * fn, if any, starts in a thread of its own. */
+ * fn, if any, starts in a thread of its own once the old thread is reaped
+ * (kilolib_activity_thread_start, through KILOLIB_START_ACTIVITY). */
 void kilolib_activity_start(uint8_t activity, sys_process_fn fn);
+void kilolib_activity_thread_start(void);
 
 /* calibration.c: CALIB and READUID */
 void kilolib_calibration_message(const message_t *msg);

@@ -20,8 +20,12 @@ static sys_pid activity_pid = SYS_PID_NONE;
 
 uint8_t kilolib_activity(void) { return activity; }
 
-/* Every activity gets the program's stack size: the program's thread is
- * the one replaced, so its stack is there to be reused. */
+static sys_process_fn activity_fn; /* the thread the current activity runs, if any */
+
+/* The current activity ends (its thread killed, motors off, LED dark) and
+ * the new one's thread, if any, starts once the old thread is reaped:
+ * every activity gets the program's stack size, so the old thread's slot
+ * and stack are the ones it reuses (they are not free before). */
 void kilolib_activity_start(uint8_t what, sys_process_fn fn) {
     if (activity_pid != SYS_PID_NONE) {
         Sys_Kill_Process(activity_pid); /* SYS_E_INVALID if it had ended: nothing to kill */
@@ -31,7 +35,13 @@ void kilolib_activity_start(uint8_t what, sys_process_fn fn) {
         set_color(0);
     }
     activity = what;
-    if (fn != 0) Sys_Start_Process_Ex(fn, 0, KILOLIB_LOOP_STACK, 0, &activity_pid);
+    activity_fn = fn;
+    if (fn != 0) kilolib_call(KILOLIB_START_ACTIVITY);
+}
+
+void kilolib_activity_thread_start(void) {
+    if (activity_fn != 0 && activity_pid == SYS_PID_NONE)
+        Sys_Start_Process_Ex(activity_fn, 0, KILOLIB_LOOP_STACK, 0, &activity_pid);
 }
 
 /* The same request again (the overhead controller repeats its messages)
