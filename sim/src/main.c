@@ -22,6 +22,15 @@ static int is_sleep(const avr_t *avr, avr_flashaddr_t pc) {
     return (avr->flash[pc] | avr->flash[pc + 1] << 8) == SLEEP_OPCODE;
 }
 
+/* One instruction (or one sleep), its cycles charged to its function. */
+static void step_profiled(robot *r) {
+    avr_flashaddr_t pc = r->avr->pc;
+    avr_cycle_count_t before = r->avr->cycle;
+    int was_asleep = r->state == cpu_Sleeping || is_sleep(r->avr, pc);
+    r->state = avr_run(r->avr);
+    profile_charge(pc, was_asleep, r->avr->cycle - before);
+}
+
 static int finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
 
 /* A robot that jumped to its bootloader (a BOOT message asks for it). The
@@ -63,11 +72,10 @@ static int run_window(int n, avr_cycle_count_t end) {
         if (n > 1 && !finished(r) && r->avr->cycle < end)
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
         while (!finished(r) && r->avr->cycle < end) {
-            avr_flashaddr_t pc = r->avr->pc;
-            avr_cycle_count_t before = r->avr->cycle;
-            int was_asleep = r->state == cpu_Sleeping || is_sleep(r->avr, pc);
-            r->state = avr_run(r->avr);
-            if (profiling) profile_charge(pc, was_asleep, r->avr->cycle - before);
+            if (profiling)
+                step_profiled(r);
+            else
+                r->state = avr_run(r->avr);
             if (at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
         }
         all_finished &= finished(r);
