@@ -2,7 +2,7 @@
  * Timer0, sleeping idle, and the initial frame of a new thread. */
 #include "openswarm/port.h"
 #include "openswarm/kilobot.h"
-#include "devices/motors_internal.h"
+#include "devices/devices_internal.h"
 
 #include <avr/interrupt.h>
 #include <avr/io.h>

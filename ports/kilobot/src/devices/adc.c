@@ -11,7 +11,7 @@
 #include <avr/interrupt.h>
 #include <avr/io.h>
 
-#include "motors_internal.h"
+#include "devices_internal.h"
 
 /* The temperature sensor is only measured against the internal 1.1 V
  * reference; every other input against AVcc. */

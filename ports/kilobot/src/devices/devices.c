@@ -1,7 +1,7 @@
 /* Registering the Kilobot's devices with the HAL. */
 #include "openswarm/kilobot.h"
 
-#include "motors_internal.h"
+#include "devices_internal.h"
 
 sys_status kilobot_devices_init(void) {
     kilobot_calibration_load();

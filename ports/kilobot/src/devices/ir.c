@@ -20,7 +20,7 @@
 #include <string.h>
 #include <util/crc16.h>
 
-#include "motors_internal.h"
+#include "devices_internal.h"
 
 #define BIT 269u
 #define HEADER_SLOTS 10u

@@ -3,7 +3,7 @@
 
 #include <avr/eeprom.h>
 
-#include "motors_internal.h"
+#include "devices_internal.h"
 
 kilobot_calibration kilobot_calib;
 

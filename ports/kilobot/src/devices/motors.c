@@ -6,7 +6,7 @@
 
 #include <avr/io.h>
 
-#include "motors_internal.h"
+#include "devices_internal.h"
 
 /* Full-power limit armed by kilobot_spinup_limited: 0 = none. */
 static uint16_t full_power_limit_ms;

@@ -6,7 +6,7 @@
 #include "openswarm/kilobot.h"
 #include "openswarm/port.h"
 
-#include "motors_internal.h"
+#include "devices_internal.h"
 
 #define SENSORS 3u
 

@@ -1,11 +1,12 @@
-/* Shared by the motor driver and its processors. */
-#ifndef OPENSWARM_KILOBOT_MOTORS_INTERNAL_H
-#define OPENSWARM_KILOBOT_MOTORS_INTERNAL_H
+/* Shared by the Kilobot's device drivers and the port's tick: the calls
+ * between them that applications do not make. */
+#ifndef OPENSWARM_KILOBOT_DEVICES_INTERNAL_H
+#define OPENSWARM_KILOBOT_DEVICES_INTERNAL_H
 
 #include <stdint.h>
 
-/* From now on, a motor at full power for more than limit_ms drops to
- * fallback (checked every 1 ms by kilobot_motors_tick). */
+/* motors.c. From now on, a motor at full power for more than limit_ms
+ * drops to fallback (checked every 1 ms by kilobot_motors_tick). */
 void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback);
 /* Called every 1 ms from the tick interrupt. */
 void kilobot_motors_tick(void);
