@@ -28,6 +28,7 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motor_processors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/debug_uart.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir_distance.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/adc.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/sensors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/sensor_processors.c

@@ -31,10 +31,11 @@ std::vector<ProcessorInfo> kilobot_sensor_processors() {
 
 const std::vector<PortInfo> &ports() {
     static const std::vector<PortInfo> all = {
-        // Device events: LED, motors, IR in and out (16 bytes each), light,
-        // voltage, temperature (an int16_t each), kilolib's transmit turn (1
-        // byte); kilobot.h, port_arch.h, kilolib_internal.h.
-        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 10, 6 + 4 * 16 + 3 * 2 + 1,
+        // Device events: LED, motors, IR in and out (OS_CFG_HAL_MAX_VALUE, 17
+        // bytes each), light, voltage, temperature (an int16_t each),
+        // kilolib's calls (1 byte); kilobot.h, port_arch.h, port_config.h,
+        // kilolib_internal.h.
+        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 10, 6 + 4 * 17 + 3 * 2 + 1,
          4, 14, 96, 16, {kilolib()}},
     };
     return all;
@@ -49,7 +50,10 @@ const std::vector<DeviceInfo> &devices_of(const std::string &port) {
            {{"limit_ms", "limit_ms", 1, 60000}, {"fallback", "fallback", 0, 254}},
            "as calibrated, and full power drops to fallback after limit_ms"}}},
         {"led", "kilobot_led", {{"copy", "", "", {}, "the colour byte as it is"}}},
-        {"ir", "kilobot_ir", {{"crc", "", "", {}, "frames whose CRC checks reach KILOBOT_EVENT_IR_RX"}}},
+        {"ir", "kilobot_ir",
+         {{"crc", "", "", {}, "frames whose CRC checks reach KILOBOT_EVENT_IR_RX"},
+          {"distance", "kilobot_ir_with_distance", "", {},
+           "as crc, and the sender's distance in mm (distance_mm) from the robot's EEPROM tables"}}},
         {"light", "kilobot_light", kilobot_sensor_processors()},
         {"voltage", "kilobot_voltage", kilobot_sensor_processors()},
         {"temperature", "kilobot_temperature", kilobot_sensor_processors()},

@@ -1,6 +1,6 @@
 /* Two robots on the simulator's IR channel: robot uid 1 sends a frame every
  * 100 ms through the IR device's Tx processor; every robot prints what its
- * Rx processor accepts (checked by ctest). */
+ * Rx processor (the distance pre-processor) accepts (checked by ctest). */
 #include <avr/eeprom.h>
 #include <string.h>
 
@@ -24,6 +24,8 @@ static bool heard(sys_pid pid, sys_event_id e, const sys_event_data *d) {
     sim_put_uint((uint16_t)rx->high_gain);
     sim_putc('/');
     sim_put_uint((uint16_t)rx->low_gain);
+    sim_puts_P(PSTR(" mm "));
+    sim_put_uint(rx->distance_mm);
     sim_putc('\n');
     return true;
 }
@@ -55,6 +57,7 @@ int main(void) {
     uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
     Sys_Init_Kernel();
     if (kilobot_devices_init() != SYS_OK) sim_exit(2);
+    Sys_Set_Processor(&kilobot_ir, kilobot_ir_with_distance, NULL);
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, heard, NULL);
     Sys_Start_Process_Ex(talk, NULL, 96, 0, NULL);
     Sys_Start_Kernel();

@@ -28,6 +28,13 @@ TRACE
 grep -q "^1 passed, 0 failed$" test.log
 grep -q "Sys_Set_Processor(&kilobot_motor_pair, kilobot_spinup_limited" guarded/build/kilobot/openswarm/openswarm_app.c
 
+# The IR device's distance pre-processor: chosen in openswarm.json, installed
+# by the generated code (tests/avr/ir_exchange.c shows what it computes).
+printf '{"name": "guarded", "port": "kilobot", "devices": {"ir": {"processor": "distance"}}}' > guarded/openswarm.json
+"$openswarm" config show -C guarded | grep -q "device ir: processor distance"
+"$openswarm" build -C guarded >/dev/null
+grep -q "Sys_Set_Processor(&kilobot_ir, kilobot_ir_with_distance" guarded/build/kilobot/openswarm/openswarm_app.c
+
 bad() { # bad JSON_DEVICES REGEX
     printf '{"name": "guarded", "port": "kilobot", "devices": %s}' "$1" > guarded/openswarm.json
     local err

@@ -33,11 +33,24 @@ typedef struct kilobot_motors {
 
 typedef struct kilobot_ir_rx {
     uint8_t frame[KILOBOT_IR_FRAME_BYTES];
-    int16_t low_gain;  /* ADC1 at the header's stop pulse */
-    int16_t high_gain; /* ADC0 at the start pulse */
+    int16_t low_gain;    /* ADC1 at the header's stop pulse */
+    int16_t high_gain;   /* ADC0 at the start pulse */
+    uint8_t distance_mm; /* the sender's distance; 0 unless kilobot_ir_with_distance ran */
 } kilobot_ir_rx;
 
 extern sys_device kilobot_ir;
+
+/* The IR device's Rx processors: kilobot_ir_check_crc (the default) passes
+ * the frames whose CRC checks; kilobot_ir_with_distance also turns the two
+ * gain readings into the sender's distance in millimetres, through this
+ * robot's calibration tables in EEPROM. Install with
+ *   Sys_Set_Processor(&kilobot_ir, kilobot_ir_with_distance, NULL); */
+uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void *out,
+                             uint8_t capacity);
+uint8_t kilobot_ir_with_distance(sys_device *dev, const void *in, uint8_t size, void *out,
+                                 uint8_t capacity);
+/* The same estimate from two gain readings (kilolib's estimate_distance). */
+uint8_t kilobot_ir_distance_mm(int16_t low_gain, int16_t high_gain);
 
 /* IR statistics: frames sent, received, rejected (CRC), collisions seen,
  * transmissions deferred because the channel was busy. */

@@ -34,7 +34,7 @@
 #define OS_CFG_MAX_DEVICES 6
 #endif
 #ifndef OS_CFG_HAL_MAX_VALUE
-#define OS_CFG_HAL_MAX_VALUE 16
+#define OS_CFG_HAL_MAX_VALUE 17 /* an IR reception: frame, two gains, distance */
 #endif
 
 #endif

@@ -187,48 +187,7 @@ void rand_seed(uint8_t seed) { soft_state = seed != 0 ? seed : 0xA5; }
 
 uint16_t message_crc(const message_t *msg) { return kilobot_crc(msg->rawdata, 10); }
 
-/* Distance calibration: two tables of 14 big-endian readings in EEPROM,
- * low gain at 0x20 and high gain at 0x50; entry i is what the robot reads
- * from a sender 30 + 5 i mm away (readings fall with distance). */
-#define TABLE_ENTRIES 14
-#define LOW_GAIN_TABLE 0x20
-#define HIGH_GAIN_TABLE 0x50
-#define FIRST_MM 30
-#define STEP_MM 5
-
-static uint16_t table_entry(uint8_t table, uint8_t i) {
-    const uint8_t *at = (const uint8_t *)(uint16_t)(table + 2u * i);
-    return (uint16_t)(eeprom_read_byte(at) << 8 | eeprom_read_byte(at + 1));
-}
-
-/* Distance in mm, times 16, from one gain's reading: interpolated between
- * the two entries around it, clamped to the table's ends. */
-static uint16_t distance_x16(uint8_t table, int16_t reading) {
-    uint16_t r = reading < 0 ? 0 : (uint16_t)reading;
-    if (r >= table_entry(table, 0)) return FIRST_MM * 16u;
-    for (uint8_t i = 1; i < TABLE_ENTRIES; i++) {
-        uint16_t hi = table_entry(table, (uint8_t)(i - 1u)), lo = table_entry(table, i);
-        if (r >= lo) {
-            uint16_t span = hi > lo ? (uint16_t)(hi - lo) : 1u;
-            uint32_t frac = (uint32_t)(hi - r) * STEP_MM * 16u / span;
-            return (uint16_t)((FIRST_MM + STEP_MM * (i - 1u)) * 16u + frac);
-        }
-    }
-    return (FIRST_MM + STEP_MM * (TABLE_ENTRIES - 1u)) * 16u;
-}
-
-/* The high gain is precise far away but saturates close by: it is used
- * below 700, the low gain above 900, and a blend of both in between. */
+/* The port's distance pre-processor does it (ports/kilobot/src/devices/ir_distance.c). */
 uint8_t estimate_distance(const distance_measurement_t *d) {
-    uint16_t high = distance_x16(HIGH_GAIN_TABLE, d->high_gain);
-    uint16_t low = distance_x16(LOW_GAIN_TABLE, d->low_gain);
-    uint32_t x16;
-    if (d->high_gain < 700)
-        x16 = high;
-    else if (d->high_gain > 900)
-        x16 = low;
-    else
-        x16 = ((uint32_t)high * (uint32_t)(900 - d->high_gain) +
-               (uint32_t)low * (uint32_t)(d->high_gain - 700)) / 200u;
-    return (uint8_t)((x16 + 8u) / 16u);
+    return kilobot_ir_distance_mm(d->low_gain, d->high_gain);
 }

@@ -172,7 +172,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
 /* ---- the HAL comm device ---- */
 
 /* Rx: a frame whose CRC checks becomes a KILOBOT_EVENT_IR_RX. */
-static uint8_t check_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
+uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
     (void)dev;
     const kilobot_ir_rx *r = in;
     if (size != sizeof *r || cap < sizeof *r) return 0;
@@ -204,4 +204,4 @@ static void ir_write(sys_device *dev, const void *raw, uint8_t size) {
 }
 
 sys_device kilobot_ir = {"ir", SYS_DEVICE_COMM, KILOBOT_EVENT_IR_RX, KILOBOT_EVENT_IR_TX,
-                         check_crc, add_crc, ir_write, NULL, 0};
+                         kilobot_ir_check_crc, add_crc, ir_write, NULL, 0};
