@@ -1,5 +1,6 @@
-// Stack overflow detection: the guard is checked at every switch and a
-// broken one is reported through the fault hook and SYS_EVENT_FAULT.
+// Stack overflow detection: the guard is checked at every scheduling decision
+// a thread makes and at every tick; a broken one is reported by the port,
+// through the fault hook and through SYS_EVENT_FAULT.
 #include "kernel_fixture.hpp"
 
 #include <cstring>
