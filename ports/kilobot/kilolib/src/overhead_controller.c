@@ -36,7 +36,9 @@ void kilolib_activity_start(uint8_t what, sys_process_fn fn) {
     }
     activity = what;
     activity_fn = fn;
-    if (fn != 0) kilolib_call(KILOLIB_START_ACTIVITY);
+    /* A full event queue (counted in event_queue_full): start it now, which
+     * works unless the old thread still holds the only slot. */
+    if (fn != 0 && !kilolib_call(KILOLIB_START_ACTIVITY)) kilolib_activity_thread_start();
 }
 
 void kilolib_activity_thread_start(void) {
