@@ -148,7 +148,6 @@ sys_status Sys_Unregister_Event(sys_event_id event) {
         return SYS_E_NOT_REGISTERED;
     }
     events[event].size = UNREGISTERED; /* the data block stays for reuse */
-    os_listeners_changed();
     remove_subscriptions(event, false, 0, true);
     os_wake_all_waiting_for(event, SYS_E_NOT_REGISTERED);
     if (os_in_thread()) os_schedule();

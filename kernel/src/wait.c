@@ -7,8 +7,10 @@
 static void settle_timeouts(void);
 
 static sys_status block_current(os_wait *w) {
-    if (w->event != OS_NO_EVENT) os.event_waiters++;
-    os_listeners_changed();
+    if (w->event != OS_NO_EVENT) { /* a sleep listens to nothing */
+        os.event_waiters++;
+        os_listeners_changed();
+    }
     if (w->timed) {
         settle_timeouts(); /* the others' remaining_ms count from now, like w's */
         if (os.timeout_next == 0 || w->remaining_ms < os.timeout_next)
@@ -77,8 +79,10 @@ sys_status Sys_Sleep(uint32_t ms) {
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */
 static inline void leave_wait(sys_tcb *t) {
-    if (t->wait->event != OS_NO_EVENT) os.event_waiters--;
-    os_listeners_changed();
+    if (t->wait->event != OS_NO_EVENT) {
+        os.event_waiters--;
+        os_listeners_changed();
+    }
     t->wait = NULL;
 }
 
