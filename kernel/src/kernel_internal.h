@@ -14,6 +14,15 @@
 #define OS_HOT inline
 #endif
 
+/* Cold code kept out of line even where link-time optimisation would copy
+ * it into its callers: code many callers share (a call is smaller), and
+ * rare work whose registers a hot caller would otherwise save every time. */
+#if defined(__GNUC__)
+#define OS_COLD __attribute__((noinline))
+#else
+#define OS_COLD
+#endif
+
 /* State of an unused thread slot (never visible through the API). */
 #define OS_SLOT_FREE 0xFFu
 #define OS_SYSTEM (&os.threads[0])
@@ -37,7 +46,7 @@ typedef uint8_t os_block_count; /* robots: one byte per thread less */
 typedef struct os_wait {
     uint8_t *buffer;
     sys_event_condition condition;
-    uint32_t remaining_ms; /* counts down when timed: any 32-bit timeout works */
+    uint32_t deadline; /* when timed: the os.now_ms at which the wait ends */
     sys_event_id event;
     uint8_t capacity;
     uint8_t size;
@@ -63,8 +72,7 @@ typedef struct os_kernel {
     sys_tcb *preempted; /* thread to resume once the system thread's work is done */
     const sys_scheduler *policy;
     uint32_t now_ms;
-    uint32_t timeout_elapsed; /* ticks since the timed waits were brought up to date */
-    uint32_t timeout_next;    /* ticks after that when the nearest expires; 0: none */
+    uint32_t timeout_next; /* the nearest deadline, or a time already past if none (wait.c) */
     uint32_t switches;
     uint16_t slice_ms;
     uint16_t slice_left;

@@ -3,11 +3,11 @@
 
 void os_tick(void) {
     os.now_ms++;
+    os_check_timeouts();
     if (os.current != OS_SYSTEM || os.preempted != NULL) {
         if (os.slice_left != 0 && --os.slice_left == 0) os.slice_expired = true;
     }
     os_check_stack(os.current);
-    os_check_timeouts();
     if (!os.clock_listeners_known) {
         os.clock_has_listeners =
             os_event_registered(SYS_EVENT_1MS_TIMER) && os_event_has_listeners(SYS_EVENT_1MS_TIMER);

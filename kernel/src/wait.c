@@ -4,18 +4,23 @@
  * same event and each is woken with its own copy of the data. */
 #include "kernel_internal.h"
 
-static void settle_timeouts(void);
+/* Is a deadline a ms away sooner than one b ms away? 0 ms away stands for
+ * none (2^32 ms): see settle_timeouts. */
+static inline bool sooner(uint32_t a, uint32_t b) { return a - 1u < b - 1u; }
 
-static sys_status block_current(os_wait *w) {
+/* The timed wait w starts: it ends timeout_ms from now. Out of line, so an
+ * untimed wait saves no registers for its 32-bit arithmetic. */
+static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
+    w->deadline = os.now_ms + timeout_ms;
+    if (sooner(timeout_ms, os.timeout_next - os.now_ms)) os.timeout_next = w->deadline;
+}
+
+static sys_status block_current(os_wait *w, uint32_t timeout_ms) {
     if (w->event != OS_NO_EVENT) { /* a sleep listens to nothing */
         os.event_waiters++;
         os_listeners_changed();
     }
-    if (w->timed) {
-        settle_timeouts(); /* the others' remaining_ms count from now, like w's */
-        if (os.timeout_next == 0 || w->remaining_ms < os.timeout_next)
-            os.timeout_next = w->remaining_ms;
-    }
+    if (w->timed) start_timeout(w, timeout_ms);
     os.current->wait = w;
     os.current->state = SYS_PROCESS_BLOCKED;
     os_schedule(); /* returns once woken */
@@ -34,7 +39,6 @@ static sys_status wait_for(sys_event_id event, sys_event_condition condition, bo
     w.size = 0;
     w.status = SYS_OK;
     w.timed = timed;
-    w.remaining_ms = timeout_ms;
     port_irq_state_t s = port_irq_save();
     sys_status st;
     if (event != OS_NO_EVENT && !os_event_registered(event))
@@ -42,7 +46,7 @@ static sys_status wait_for(sys_event_id event, sys_event_condition condition, bo
     else if (timed && timeout_ms == 0)
         st = SYS_E_TIMEOUT;
     else
-        st = block_current(&w);
+        st = block_current(&w, timeout_ms);
     port_irq_restore(s);
     if (size != NULL) *size = w.size;
     return st;
@@ -122,27 +126,27 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
     }
 }
 
-/* Timeouts. Each timed wait keeps its own remaining_ms, but the tick does
- * not count them all down every millisecond: it counts the ticks since they
- * were last brought up to date (timeout_elapsed) and visits them only when
- * the nearest is due (timeout_next), or when a new timed wait needs them
- * current. Any 32-bit timeout works; none wakes late or early. */
-static void settle_timeouts(void) {
-    uint32_t elapsed = os.timeout_elapsed, next = 0;
-    os.timeout_elapsed = 0;
+/* Timeouts. Each timed wait keeps its deadline and os.timeout_next the
+ * nearest one, so the tick compares one number and visits the waits only
+ * when that deadline comes. Distances to deadlines are taken modulo 2^32
+ * from now, so any 32-bit timeout works; os.timeout_next == now_ms means
+ * none is pending (the tick meets that value again only after 2^32 ms, and
+ * then finds nothing due). */
+static OS_COLD void settle_timeouts(void) {
+    uint32_t now = os.now_ms, nearest = 0; /* ms from now; 0: none */
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait; /* set exactly while t is blocked */
         if (w == NULL || !w->timed) continue;
-        w->remaining_ms -= elapsed; /* never below 0: elapsed stays under timeout_next */
-        if (w->remaining_ms == 0)
+        uint32_t left = w->deadline - now;
+        if (left == 0)
             wake(t, SYS_E_TIMEOUT);
-        else if (next == 0 || w->remaining_ms < next)
-            next = w->remaining_ms;
+        else if (sooner(left, nearest))
+            nearest = left;
     }
-    os.timeout_next = next;
+    os.timeout_next = now + nearest;
 }
 
-/* From the tick. */
+/* From the tick, once os.now_ms has advanced. */
 void os_check_timeouts(void) {
-    if (os.timeout_next != 0 && ++os.timeout_elapsed == os.timeout_next) settle_timeouts();
+    if (os.now_ms == os.timeout_next) settle_timeouts();
 }

@@ -225,8 +225,9 @@ TEST_F(Time, TimerEventIsNotQueuedWhileNobodyListens) {
 }
 
 TEST_F(Time, TimeoutsAboveTwoToThe31MsDoNotEndAtTheNextTick) {
-    // Timeouts count down, so the whole 32-bit range works (a deadline
-    // compared with wrapping arithmetic would expire at once past 2^31 ms).
+    // Distances to deadlines are taken modulo 2^32 from now, so the whole
+    // 32-bit range works (deadlines compared as signed differences would
+    // expire at once past 2^31 ms).
     std::atomic<bool> slept{false}, waited{false};
     sys_status sleep_status = SYS_E_INVALID, wait_status = SYS_E_INVALID;
     boot([&] {
@@ -246,4 +247,24 @@ TEST_F(Time, TimeoutsAboveTwoToThe31MsDoNotEndAtTheNextTick) {
         << "Sys_Sleep(UINT32_MAX) returned SYS_OK after 3 ms";
     EXPECT_FALSE(waited && wait_status == SYS_E_TIMEOUT)
         << "a UINT32_MAX ms timeout ran out after 3 ms";
+}
+
+TEST_F(Time, ANearDeadlineIsMetBesideTheFarthestOne) {
+    // A UINT32_MAX ms sleep is the farthest deadline there can be; nearer
+    // ones started after it still end on time, one after the other.
+    boot([&] {
+        spawn([] {
+            Sys_Sleep(UINT32_MAX);
+            note("a@" + std::to_string(Sys_Get_SystemTime()));
+        });
+        spawn([] {
+            Sys_Sleep(3);
+            note("b@" + std::to_string(Sys_Get_SystemTime()));
+            Sys_Sleep(2);
+            note("b@" + std::to_string(Sys_Get_SystemTime()));
+        });
+    });
+    settle();
+    ticks(8);
+    EXPECT_EQ("b@3 b@5", joined());
 }
