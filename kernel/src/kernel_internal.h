@@ -134,12 +134,12 @@ static OS_HOT bool os_stack_guard_intact(const sys_tcb *t) {
     return g == NULL || (g[0] == guard[0] && g[1] == guard[1] && g[2] == guard[2] && g[3] == guard[3]);
 }
 
-void os_stop_if_overflowed(sys_tcb *t);
+void os_stack_overflowed(sys_tcb *t); /* its guard is broken: stop it */
 /* The check a thread's own decisions and the tick make (not inside a
  * critical section); the guard is compared here, inline, so an intact one
  * costs no call. */
 static OS_HOT void os_check_stack(sys_tcb *t) {
-    if (os.lock_depth == 0 && !os_stack_guard_intact(t)) os_stop_if_overflowed(t);
+    if (os.lock_depth == 0 && !os_stack_guard_intact(t)) os_stack_overflowed(t);
 }
 
 /* event_table.c */

@@ -50,11 +50,10 @@ uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size) {
     return stack;
 }
 
-/* A thread whose stack guard is broken has overflowed: it is stopped
- * before it runs on. Checked at every scheduling decision a thread makes
- * (yield, send, block, exit) and at every tick. */
-void os_stop_if_overflowed(sys_tcb *t) {
-    if (t->state == SYS_PROCESS_ZOMBIE || os_stack_guard_intact(t)) return;
+/* t's stack guard was found broken (os_check_stack): it has overflowed,
+ * and is stopped before it runs on, unless it is ending anyway. */
+void os_stack_overflowed(sys_tcb *t) {
+    if (t->state == SYS_PROCESS_ZOMBIE) return;
     os.stats.stack_overflows++;
     os_fault(SYS_FAULT_STACK_OVERFLOW, t->pid);
     os_terminate(t);
