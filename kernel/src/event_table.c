@@ -60,13 +60,13 @@ sys_status os_event_admit(sys_event_id event, uint8_t size) {
     return size > events[event].capacity ? SYS_E_TOO_BIG : SYS_OK;
 }
 
-/* Find capacity bytes: a block left by an unregistered event, or new arena. */
+/* Find capacity bytes for slot (unregistered): its own block, a block left
+ * by another unregistered event, or new arena. A block of non-zero capacity
+ * always has its data, and none is needed for capacity 0. */
 static bool take_data_block(event_slot *slot, uint8_t capacity) {
-    if (slot->capacity >= capacity && (slot->data != NULL || capacity == 0)) return true;
-    for (unsigned i = 0; i < OS_CFG_MAX_EVENTS; i++) {
-        event_slot *other = &events[i];
-        if (other != slot && other->size == UNREGISTERED && other->capacity >= capacity &&
-            other->data != NULL) {
+    if (slot->capacity >= capacity) return true;
+    for (event_slot *other = events; other != &events[OS_CFG_MAX_EVENTS]; other++) {
+        if (other->size == UNREGISTERED && other->capacity >= capacity) {
             uint8_t *data = slot->data;
             uint8_t cap = slot->capacity;
             slot->data = other->data; /* swap, so the smaller block stays available */
