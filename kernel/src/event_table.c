@@ -92,7 +92,7 @@ sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
     if (slot->size != UNREGISTERED) {
         st = SYS_E_EXISTS;
     } else if (!take_data_block(slot, capacity)) {
-        os.stats.event_data_full++;
+        os_count(&os.stats.event_data_full);
         st = SYS_E_POOL_FULL;
     } else {
         slot->size = NOTHING_KEPT;
@@ -194,7 +194,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     } else if (find_subscription(event, pid, handler) != NULL) {
         st = SYS_E_EXISTS;
     } else if ((i = free_subscription_index()) < 0) {
-        os.stats.subscription_pool_full++;
+        os_count(&os.stats.subscription_pool_full);
         st = SYS_E_POOL_FULL;
     } else {
         subscription *sub = &subs[i];

@@ -5,6 +5,8 @@
 
 void os_stats_reset(void) { memset(&os.stats, 0, sizeof os.stats); }
 
+OS_COLD void os_count(uint16_t *counter) { (*counter)++; }
+
 void Sys_Get_Stats(sys_stats *stats) {
     port_irq_state_t s = port_irq_save();
     *stats = os.stats;

@@ -76,7 +76,7 @@ static sys_status register_device(sys_device *dev) {
         return SYS_E_EXISTS;
     int slot = device_index(NULL);
     if (slot < 0) {
-        os.stats.device_table_full++;
+        os_count(&os.stats.device_table_full);
         return SYS_E_POOL_FULL;
     }
     sys_status st = ensure_registered(dev->event);

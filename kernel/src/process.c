@@ -25,7 +25,7 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     port_irq_state_t s = port_irq_save();
     sys_tcb *t = free_slot();
     if (t == NULL) {
-        os.stats.process_pool_full++;
+        os_count(&os.stats.process_pool_full);
         port_irq_restore(s);
         return SYS_E_POOL_FULL;
     }
@@ -33,7 +33,7 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     os_block_count blocks;
     uint8_t *stack = os_stack_alloc(stack_bytes, &blocks, &size);
     if (stack == NULL) {
-        os.stats.stack_pool_full++;
+        os_count(&os.stats.stack_pool_full);
         port_irq_restore(s);
         return SYS_E_POOL_FULL;
     }
@@ -80,7 +80,7 @@ sys_pid Sys_Start_Process(void (*fn)(void)) {
 void os_terminate(sys_tcb *t) {
     if (t == os.current && os.lock_depth != 0) {
         os.lock_depth = 0;
-        os.stats.critical_leaks++;
+        os_count(&os.stats.critical_leaks);
         os_fault(SYS_FAULT_CRITICAL_LEAK, t->pid);
     }
     os_subscriptions_remove_thread(t->pid);

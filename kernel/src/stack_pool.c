@@ -54,7 +54,7 @@ uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size) {
  * and is stopped before it runs on, unless it is ending anyway. */
 void os_stack_overflowed(sys_tcb *t) {
     if (t->state == SYS_PROCESS_ZOMBIE) return;
-    os.stats.stack_overflows++;
+    os_count(&os.stats.stack_overflows);
     os_fault(SYS_FAULT_STACK_OVERFLOW, t->pid);
     os_terminate(t);
 }
