@@ -4,15 +4,14 @@
  * same event and each is woken with its own copy of the data. */
 #include "kernel_internal.h"
 
-/* Is a deadline a ms away sooner than one b ms away? 0 ms away stands for
- * none (2^32 ms): see settle_timeouts. */
-static inline bool sooner(uint32_t a, uint32_t b) { return a - 1u < b - 1u; }
+static void settle_timeouts(void);
 
-/* The timed wait w starts: it ends timeout_ms from now. Out of line, so an
- * untimed wait saves no registers for its 32-bit arithmetic. */
+/* The running thread's timed wait w starts: it ends timeout_ms from now.
+ * Out of line, so an untimed wait saves no registers for its 32-bit
+ * arithmetic. */
 static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
     w->deadline = os.now_ms + timeout_ms;
-    if (sooner(timeout_ms, os.timeout_next - os.now_ms)) os.timeout_next = w->deadline;
+    settle_timeouts(); /* w's may be the nearest deadline now (none is due) */
 }
 
 static sys_status block_current(os_wait *w, uint32_t timeout_ms) {
@@ -20,8 +19,8 @@ static sys_status block_current(os_wait *w, uint32_t timeout_ms) {
         os.event_waiters++;
         os_listeners_changed();
     }
-    if (w->timed) start_timeout(w, timeout_ms);
     os.current->wait = w;
+    if (w->timed) start_timeout(w, timeout_ms);
     os.current->state = SYS_PROCESS_BLOCKED;
     os_schedule(); /* returns once woken */
     return w->status;
@@ -128,10 +127,10 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
 
 /* Timeouts. Each timed wait keeps its deadline and os.timeout_next the
  * nearest one, so the tick compares one number and visits the waits only
- * when that deadline comes. Distances to deadlines are taken modulo 2^32
- * from now, so any 32-bit timeout works; os.timeout_next == now_ms means
- * none is pending (the tick meets that value again only after 2^32 ms, and
- * then finds nothing due). */
+ * when that deadline comes, or when a new timed wait may come sooner.
+ * Distances to deadlines are taken modulo 2^32 from now, so any 32-bit
+ * timeout works; os.timeout_next == now_ms means none is pending (the tick
+ * meets that value again only after 2^32 ms, and then finds nothing due). */
 static OS_COLD void settle_timeouts(void) {
     uint32_t now = os.now_ms, nearest = 0; /* ms from now; 0: none */
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
@@ -140,7 +139,7 @@ static OS_COLD void settle_timeouts(void) {
         uint32_t left = w->deadline - now;
         if (left == 0)
             wake(t, SYS_E_TIMEOUT);
-        else if (sooner(left, nearest))
+        else if (left - 1u < nearest - 1u) /* sooner: none (0) wraps to the farthest */
             nearest = left;
     }
     os.timeout_next = now + nearest;
