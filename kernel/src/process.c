@@ -40,9 +40,7 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     t->stack = stack;
     t->stack_blocks = blocks;
     t->priority = priority;
-    t->wait = NULL;
-    t->next = NULL;
-    t->state = SYS_PROCESS_NEW;
+    t->state = SYS_PROCESS_NEW; /* its wait is NULL: os_terminate cleared it */
     /* pid = slot | generation << 4; the generation was bumped at reaping. */
     t->pid = (sys_pid)((t->pid & 0xF0u) | (uint8_t)(t - os.threads));
     port_context_init(&t->ctx, stack, size, fn, arg);

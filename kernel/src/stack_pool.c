@@ -10,16 +10,12 @@
  * decision a thread makes and at every tick. */
 #include "kernel_internal.h"
 
-#include <string.h>
-
 #define BLOCK ((size_t)OS_CFG_STACK_BLOCK_BYTES)
 #define BLOCKS ((size_t)OS_STACK_BLOCKS)
 
 typedef char block_is_aligned[(OS_CFG_STACK_BLOCK_BYTES % PORT_STACK_ALIGN) == 0 ? 1 : -1];
 
 static uint8_t pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
-
-static const uint8_t guard_pattern[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
 
 static size_t first_block(const sys_tcb *t) { return (size_t)(t->stack - pool) / BLOCK; }
 
@@ -35,16 +31,20 @@ static bool gap_is_free(size_t first, size_t count) {
 }
 
 uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size) {
-    size_t need = ((size_t)bytes + PORT_STACK_EXTRA + OS_STACK_GUARD_BYTES + BLOCK - 1) / BLOCK;
-    size_t best = gap_is_free(0, need) ? 0 : BLOCKS; /* BLOCKS: no room */
-    for (const sys_tcb *t = &os.threads[1]; best != 0 && t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
-        if (t->stack == NULL) continue;
-        size_t after = first_block(t) + t->stack_blocks;
-        if (after < best && gap_is_free(after, need)) best = after;
+    /* Blocks for bytes, the port's extra and the guard; bytes is divided
+     * first, so a size near 64 KiB cannot wrap round a 16-bit size_t. */
+    size_t need = bytes / BLOCK + (bytes % BLOCK + PORT_STACK_EXTRA + OS_STACK_GUARD_BYTES + BLOCK - 1) / BLOCK;
+    size_t best = BLOCKS; /* BLOCKS: no room */
+    /* The pool's start is tried for every thread without a stack (the
+     * system thread first), then the end of each live stack. */
+    for (const sys_tcb *t = os.threads; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
+        size_t at = t->stack == NULL ? 0 : first_block(t) + t->stack_blocks;
+        if (at < best && gap_is_free(at, need)) best = at;
     }
     if (best == BLOCKS) return NULL;
     uint8_t *stack = &pool[best * BLOCK];
-    memcpy(stack, guard_pattern, OS_STACK_GUARD_BYTES);
+    static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
+    for (unsigned i = 0; i < OS_STACK_GUARD_BYTES; i++) stack[i] = guard[i]; /* stores of constants */
     *blocks = (os_block_count)need;
     *size = need * BLOCK;
     return stack;

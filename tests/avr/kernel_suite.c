@@ -325,11 +325,14 @@ static void pools_control(void *arg) {
     (void)arg;
     uint8_t started = 0;
     sys_pid pid;
+    /* A stack size near the 16-bit limit is too big, not wrapped round. */
+    CHECK(Sys_Start_Process_Ex(sleeper, NULL, 65535u - 8u, 0, &pid) == SYS_E_POOL_FULL);
     while (Sys_Start_Process_Ex(sleeper, NULL, 16, 0, &pid) == SYS_OK) started++;
     CHECK_EQ(OS_CFG_MAX_THREADS - 2, started); /* minus the system and control threads */
     sys_stats s;
     Sys_Get_Stats(&s);
     CHECK(s.process_pool_full == 1);
+    CHECK(s.stack_pool_full == 1);
 
     uint8_t accepted = 0;
     Sys_Start_CriticalSection();
