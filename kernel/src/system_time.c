@@ -13,11 +13,11 @@ void os_tick(void) {
             os_event_registered(SYS_EVENT_1MS_TIMER) && os_event_has_listeners(SYS_EVENT_1MS_TIMER);
         os.clock_listeners_known = true;
     }
-    if (os.clock_has_listeners) {
-        uint32_t now = os.now_ms;
-        if (!os_event_queue_push(SYS_EVENT_1MS_TIMER, &now, (uint8_t)sizeof now))
-            os.stats.event_queue_full++;
-    }
+    /* The tick runs with interrupts masked: now_ms cannot change while it
+     * is copied, so it needs no copy on the interrupt's stack. */
+    if (os.clock_has_listeners &&
+        !os_event_queue_push(SYS_EVENT_1MS_TIMER, &os.now_ms, (uint8_t)sizeof os.now_ms))
+        os_count(&os.stats.event_queue_full);
 }
 
 uint32_t Sys_Get_SystemTime(void) {
