@@ -163,6 +163,9 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     }
     uint16_t t0 = TCNT1;
     send_slots(frame);
+    /* The receiver caught our own flashes: left latched, the last one
+     * would start a phantom frame whose window swallows the next real one. */
+    TIFR1 = _BV(ICF1);
     stats.sent++;
     catch_up_ticks(t0);
     SREG = sreg;
