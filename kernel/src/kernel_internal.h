@@ -84,8 +84,7 @@ typedef struct os_kernel {
     bool yield_requested;
     bool reap_pending;
     bool stop_requested;
-    bool clock_listeners_known; /* clock_has_listeners is up to date */
-    bool clock_has_listeners;   /* a handler or waiter for SYS_EVENT_1MS_TIMER */
+    uint8_t clock_listeners; /* has SYS_EVENT_1MS_TIMER a handler or waiter: OS_CLOCK_* */
     sys_stats stats;
     sys_fault_hook fault_hook;
 } os_kernel;
@@ -101,7 +100,10 @@ static OS_HOT bool os_system_work_pending(void) {
 
 /* Handlers or waiters may have come or gone: the next tick asks again
  * whether the 1 ms clock event has any (instead of every millisecond). */
-static OS_HOT void os_listeners_changed(void) { os.clock_listeners_known = false; }
+#define OS_CLOCK_UNKNOWN 0u /* what a reset leaves: ask at the next tick */
+#define OS_CLOCK_UNHEARD 1u
+#define OS_CLOCK_HEARD 2u
+static OS_HOT void os_listeners_changed(void) { os.clock_listeners = OS_CLOCK_UNKNOWN; }
 
 /* process.c */
 sys_tcb *os_thread_of(sys_pid pid); /* NULL if pid is not a live thread */

@@ -8,14 +8,14 @@ void os_tick(void) {
         if (os.slice_left != 0 && --os.slice_left == 0) os.slice_expired = true;
     }
     os_check_stack(os.current);
-    if (!os.clock_listeners_known) {
-        os.clock_has_listeners =
-            os_event_registered(SYS_EVENT_1MS_TIMER) && os_event_has_listeners(SYS_EVENT_1MS_TIMER);
-        os.clock_listeners_known = true;
-    }
+    if (os.clock_listeners == OS_CLOCK_UNKNOWN)
+        os.clock_listeners = os_event_registered(SYS_EVENT_1MS_TIMER) &&
+                                     os_event_has_listeners(SYS_EVENT_1MS_TIMER)
+                                 ? OS_CLOCK_HEARD
+                                 : OS_CLOCK_UNHEARD;
     /* The tick runs with interrupts masked: now_ms cannot change while it
      * is copied, so it needs no copy on the interrupt's stack. */
-    if (os.clock_has_listeners &&
+    if (os.clock_listeners == OS_CLOCK_HEARD &&
         !os_event_queue_push(SYS_EVENT_1MS_TIMER, &os.now_ms, (uint8_t)sizeof os.now_ms))
         os_count(&os.stats.event_queue_full);
 }
