@@ -155,7 +155,8 @@ def main():
     ]
     send = pairs(evs, 60, 61)[0] / 100
 
-    fp = {v: sizes(os.path.join(FW, f"footprint_{v}.elf")) for v in ("base", "plus_thread", "plus_event")}
+    fp = {v: sizes(os.path.join(FW, f"footprint_{v}.elf"))
+          for v in ("base", "plus_thread", "plus_event", "minimal")}
     # With link-time optimisation symbols merge across files, so the kernel's
     # share is measured as a difference from an image without it.
     bare = sizes(os.path.join(FW, "bare.elf"))
@@ -165,6 +166,7 @@ def main():
         pool = int([l for l in f if "STACK_POOL_BYTES" in l][0].split()[2])
     frame = 64  # PORT_STACK_EXTRA, reserved in the pool for each user thread slot
     rom = (fp["base"][0] + fp["base"][1]) - (bare[0] + bare[1])
+    rom_minimal = (fp["minimal"][0] + fp["minimal"][1]) - (bare[0] + bare[1])
     ram = (fp["base"][1] + fp["base"][2]) - (bare[1] + bare[2]) - pool - frame
     idle_rtf = speed(os.path.join(FW, "footprint_base.elf"), 60)
     ping = os.path.join(FW_TESTS, "kilolib_ping.elf")
@@ -196,6 +198,8 @@ def main():
     out.append(f"| whole image: RAM (data + bss) | {fp['base'][1] + fp['base'][2]} | |")
     out.append(f"| empty image (`bench/avr/bare.c`: C runtime and vectors) | {bare[0] + bare[1]} | |")
     out.append(f"| kernel + port code (image minus the empty one; includes the app's few calls) | {rom} | <= 3072 |")
+    out.append(f"| the same without the optional features (`bench/avr/footprint_minimal.h`: "
+               f"`OS_CFG_STACK_CHECK 0`, `OS_CFG_CLOCK_EVENT 0`) | {rom_minimal} | <= 3072 |")
     out.append(f"| kernel + port RAM with one thread slot (stack pool and frame excluded) | {ram} | <= 200 |")
     out.append(f"| per extra thread slot: its control block (the pool also grows by its {frame}-byte frame) | {per_thread - frame} | <= 12 |")
     out.append(f"| per extra event slot (data excluded) | {per_event} | <= 4 |\n")
@@ -237,7 +241,7 @@ def main():
     out.append("|---|---|---|")
     out.append(f"| voluntary switch | port_switch {rows[0][1][1]}, Sys_Yield {rows[1][1][1]} cycles | FreeRTOS yield about 259; ChibiOS/RT about 180; RIOT about 355 |")
     out.append(f"| interrupt to a thread | {rows[4][1][1]} cycles (to a handler: {rows[3][1][1]}) | FreeRTOS about 603 |")
-    out.append(f"| kernel code | {rom} B (kernel + port, minimal app) | FreeRTOS 2.3 KB (2 tasks); RIOT 2.2 KB; QP-nano about 2.4 KB |")
+    out.append(f"| kernel code | {rom} B (kernel + port, minimal app; {rom_minimal} B without the optional features) | FreeRTOS 2.3 KB (2 tasks); RIOT 2.2 KB; QP-nano about 2.4 KB |")
     out.append(f"| RAM per thread | {tcb} B + stack | FreeRTOS 34 B per TCB; ChibiOS 31 B per thread; paper 146 B (with a 128 B stack) |\n")
     out.append("## Simulator speed\n")
     out.append("| firmware | real-time factor |")

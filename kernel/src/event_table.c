@@ -85,6 +85,9 @@ static bool take_data_block(event_slot *slot, uint8_t capacity) {
 
 sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
     if (event >= OS_CFG_MAX_EVENTS || capacity > SYS_EVENT_DATA_MAX) return SYS_E_INVALID;
+#if !OS_CFG_CLOCK_EVENT
+    if (event == SYS_EVENT_1MS_TIMER) return SYS_E_INVALID; /* compiled out (config.h) */
+#endif
     if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
@@ -228,6 +231,7 @@ sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event
 
 void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true, pid, false); }
 
+#if OS_CFG_CLOCK_EVENT
 bool os_event_has_listeners(sys_event_id event) {
     for (uint8_t i = subs_head; i != NONE; i = subs[i].next)
         if (subs[i].handler != NULL && subs[i].event == event) return true;
@@ -238,6 +242,7 @@ bool os_event_has_listeners(sys_event_id event) {
     }
     return false;
 }
+#endif
 
 /* os_event_registered's test, spelled out: on the dispatch path its call
  * costs 10 cycles an occurrence. */

@@ -18,7 +18,9 @@ void Sys_Init_Kernel(void) {
     os_event_queue_reset();
     os_hal_reset();
     port_init();
+#if OS_CFG_CLOCK_EVENT
     Sys_Register_Event_Sized(SYS_EVENT_1MS_TIMER, (uint8_t)sizeof(uint32_t));
+#endif
     Sys_Register_Event_Sized(SYS_EVENT_FAULT, (uint8_t)sizeof(sys_fault_info));
 }
 

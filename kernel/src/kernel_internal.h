@@ -84,7 +84,9 @@ typedef struct os_kernel {
     bool yield_requested;
     bool reap_pending;
     bool stop_requested;
+#if OS_CFG_CLOCK_EVENT
     uint8_t clock_listeners; /* has SYS_EVENT_1MS_TIMER a handler or waiter: OS_CLOCK_* */
+#endif
     sys_stats stats;
     sys_fault_hook fault_hook;
 } os_kernel;
@@ -100,10 +102,14 @@ static OS_HOT bool os_system_work_pending(void) {
 
 /* Handlers or waiters may have come or gone: the next tick asks again
  * whether the 1 ms clock event has any (instead of every millisecond). */
+#if OS_CFG_CLOCK_EVENT
 #define OS_CLOCK_UNKNOWN 0u /* what a reset leaves: ask at the next tick */
 #define OS_CLOCK_UNHEARD 1u
 #define OS_CLOCK_HEARD 2u
 static OS_HOT void os_listeners_changed(void) { os.clock_listeners = OS_CLOCK_UNKNOWN; }
+#else
+static OS_HOT void os_listeners_changed(void) {}
+#endif
 
 /* process.c */
 sys_tcb *os_thread_of(sys_pid pid); /* NULL if pid is not a live thread */
@@ -124,6 +130,7 @@ void os_switch_to(sys_tcb *next);
 /* A stack of at least bytes (plus the port's extra and the guard), or NULL.
  * It stays the thread's until the thread's stack pointer is cleared. */
 uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size);
+#if OS_CFG_STACK_CHECK
 /* The pattern in the lowest bytes of every thread stack; checked at every
  * scheduling decision a thread makes and at every tick, so overwriting it
  * (an overflow) is caught. Compared byte by byte
@@ -143,13 +150,24 @@ void os_stack_overflowed(sys_tcb *t); /* its guard is broken: stop it */
 static OS_HOT void os_check_stack(sys_tcb *t) {
     if (os.lock_depth == 0 && !os_stack_guard_intact(t)) os_stack_overflowed(t);
 }
+#else
+/* No guard (OS_CFG_STACK_CHECK 0): every stack passes. */
+#define OS_STACK_GUARD_BYTES 0u
+static OS_HOT bool os_stack_guard_intact(const sys_tcb *t) {
+    (void)t;
+    return true;
+}
+static OS_HOT void os_check_stack(sys_tcb *t) { (void)t; }
+#endif
 
 /* event_table.c */
 void os_event_table_reset(void);
 bool os_event_registered(sys_event_id event);
 /* May an occurrence of size bytes be sent: SYS_OK, or why not. */
 sys_status os_event_admit(sys_event_id event, uint8_t size);
+#if OS_CFG_CLOCK_EVENT
 bool os_event_has_listeners(sys_event_id event);
+#endif
 void os_subscriptions_remove_thread(sys_pid pid);
 /* Make an occurrence of size bytes the event's kept data, describe it in
  * *out and return where its bytes go; NULL if it no longer fits (the event

@@ -5,9 +5,9 @@
  * stack until it is reaped. So the pool needs no bitmap. A new stack takes
  * the lowest gap large enough (first fit); such a gap starts at the pool's
  * start or right after a live stack, so those are the only places tried.
- * Each stack's lowest bytes hold a guard pattern: a thread that overflows
- * its stack overwrites it, and the kernel checks it at every scheduling
- * decision a thread makes and at every tick. */
+ * With OS_CFG_STACK_CHECK each stack's lowest bytes hold a guard pattern:
+ * a thread that overflows its stack overwrites it, and the kernel checks it
+ * at every scheduling decision a thread makes and at every tick. */
 #include "kernel_internal.h"
 
 #define BLOCK ((size_t)OS_CFG_STACK_BLOCK_BYTES)
@@ -43,13 +43,16 @@ uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size) {
     }
     if (best == BLOCKS) return NULL;
     uint8_t *stack = &pool[best * BLOCK];
+#if OS_CFG_STACK_CHECK
     static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
     for (unsigned i = 0; i < OS_STACK_GUARD_BYTES; i++) stack[i] = guard[i]; /* stores of constants */
+#endif
     *blocks = (os_block_count)need;
     *size = need * BLOCK;
     return stack;
 }
 
+#if OS_CFG_STACK_CHECK
 /* t's stack guard was found broken (os_check_stack): it has overflowed,
  * and is stopped before it runs on, unless it is ending anyway. */
 void os_stack_overflowed(sys_tcb *t) {
@@ -58,3 +61,4 @@ void os_stack_overflowed(sys_tcb *t) {
     os_fault(SYS_FAULT_STACK_OVERFLOW, t->pid);
     os_terminate(t);
 }
+#endif

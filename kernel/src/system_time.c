@@ -8,6 +8,7 @@ void os_tick(void) {
         if (os.slice_left != 0 && --os.slice_left == 0) os.slice_expired = true;
     }
     os_check_stack(os.current);
+#if OS_CFG_CLOCK_EVENT
     if (os.clock_listeners == OS_CLOCK_UNKNOWN)
         os.clock_listeners = os_event_registered(SYS_EVENT_1MS_TIMER) &&
                                      os_event_has_listeners(SYS_EVENT_1MS_TIMER)
@@ -18,6 +19,7 @@ void os_tick(void) {
     if (os.clock_listeners == OS_CLOCK_HEARD &&
         !os_event_queue_push(SYS_EVENT_1MS_TIMER, &os.now_ms, (uint8_t)sizeof os.now_ms))
         os_count(&os.stats.event_queue_full);
+#endif
 }
 
 uint32_t Sys_Get_SystemTime(void) {

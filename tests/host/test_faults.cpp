@@ -25,6 +25,7 @@ __attribute__((no_sanitize_address, noinline)) static void overflow_stack(size_t
     for (size_t i = 256; i < reach; i++) p[-(ptrdiff_t)i] = 0xEE;
 }
 
+#if OS_CFG_STACK_CHECK
 TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
     testing::internal::CaptureStderr(); // the host port reports faults there
     hook_calls = 0;
@@ -82,6 +83,50 @@ TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
     EXPECT_TRUE(eventually([&] { return bystander > before; })) << "the others go on";
     power_off();
 }
+#else
+// OS_CFG_STACK_CHECK 0 (config.h): no guard and no check, so the same
+// overflow (into free pool memory) raises no fault and the thread runs on.
+TEST_F(Faults, StackOverflowGoesUnnoticedWithoutTheCheck) {
+    hook_calls = 0;
+    event_fault = 0;
+    std::atomic<bool> overflowed{false};
+    std::atomic<long> spins{0};
+    sys_pid victim = 0;
+    boot([&] {
+        Sys_Set_FaultHook([](sys_fault, sys_pid) { hook_calls++; });
+        Sys_Subscribe_to_Event(SYS_EVENT_FAULT, SYS_PID_SYSTEM,
+                               [](sys_pid, sys_event_id, const sys_event_data *) {
+                                   event_fault = 1;
+                                   return true;
+                               },
+                               nullptr);
+        sys_pid spacer = spawn([] { Sys_Sleep(1000000); }, 0, 256);
+        victim = spawn(
+            [&] {
+                overflow_stack(256);
+                overflowed = true;
+                for (;;) spins++;
+            },
+            0, 256);
+        Sys_Kill_Process(spacer);
+        spawn([] {
+            for (;;) {
+            }
+        });
+    });
+    ASSERT_TRUE(eventually([&] { return overflowed.load(); }));
+    for (int slice = 0; slice < 4; slice++) {
+        long before = spins;
+        advance(2 * OS_CFG_TIME_SLICE_MS); // switches, ticks: where a check would be
+        EXPECT_TRUE(eventually([&] { return spins > before; })) << "it runs on";
+    }
+    EXPECT_TRUE(alive(victim));
+    EXPECT_EQ(0, hook_calls.load());
+    EXPECT_EQ(0, event_fault.load());
+    EXPECT_EQ(0u, stats().stack_overflows);
+    power_off();
+}
+#endif
 
 TEST_F(Faults, AThreadWithinItsStackRaisesNoFault) {
     hook_calls = 0;

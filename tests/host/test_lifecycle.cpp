@@ -29,7 +29,7 @@ TEST_F(Lifecycle, KernelEventsAreRegisteredByInit) {
         user = Sys_IsEventRegistered(EV_A);
     });
     settle();
-    EXPECT_TRUE(timer);
+    EXPECT_EQ(OS_CFG_CLOCK_EVENT == 1, timer) << "unless configured out (config.h)";
     EXPECT_TRUE(fault);
     EXPECT_FALSE(user);
 }

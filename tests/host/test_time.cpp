@@ -17,6 +17,7 @@ void ticks(uint32_t n) {
     }
 }
 
+#if OS_CFG_CLOCK_EVENT
 // Listing 1's wait250times, counting the occurrences it is shown. (The
 // paper's `counter++ < 250` would accept the 251st.)
 int occurrences = 0;
@@ -25,6 +26,7 @@ bool wait250times(const sys_event_data *) {
     occurrences = 0;
     return true;
 }
+#endif
 
 } // namespace
 
@@ -141,6 +143,7 @@ TEST_F(Time, SleepZeroReturnsAtOnceAndSleepOutsideAThreadIsRefused) {
     EXPECT_STATUS(SYS_E_CONTEXT, in_irq);
 }
 
+#if OS_CFG_CLOCK_EVENT
 TEST_F(Time, Listing1WaitForConditionOnTheTimerWakesEvery250Ticks) {
     occurrences = 0;
     std::atomic<int> wakes{0};
@@ -223,6 +226,38 @@ TEST_F(Time, TimerEventIsNotQueuedWhileNobodyListens) {
     EXPECT_STATUS(SYS_OK, st);
     EXPECT_EQ(302u, kept);
 }
+#else
+TEST_F(Time, WithoutTheClockEventItCannotBeRegisteredSubscribedToOrAwaited) {
+    // OS_CFG_CLOCK_EVENT 0 (config.h): time goes on, but SYS_EVENT_1MS_TIMER
+    // is refused at once everywhere rather than never coming.
+    bool registered = true;
+    sys_status reg = SYS_OK, reg_sized = SYS_OK, sub = SYS_OK, wait = SYS_OK, timed = SYS_OK;
+    boot([&] {
+        registered = Sys_IsEventRegistered(SYS_EVENT_1MS_TIMER);
+        reg = Sys_Register_Event(SYS_EVENT_1MS_TIMER);
+        reg_sized = Sys_Register_Event_Sized(SYS_EVENT_1MS_TIMER, sizeof(uint32_t));
+        sub = Sys_Subscribe_to_Event(
+            SYS_EVENT_1MS_TIMER, SYS_PID_SYSTEM,
+            [](sys_pid, sys_event_id, const sys_event_data *) { return true; }, nullptr);
+        spawn([&] {
+            uint32_t t = 0;
+            wait = Sys_Wait_for_Event(SYS_EVENT_1MS_TIMER, &t, sizeof t, nullptr);
+            timed = Sys_Wait_for_Event_Timeout(SYS_EVENT_1MS_TIMER, 5, &t, sizeof t, nullptr);
+            note("returned@" + std::to_string(Sys_Get_SystemTime()));
+        });
+    });
+    settle();
+    ticks(100);
+    EXPECT_FALSE(registered);
+    EXPECT_STATUS(SYS_E_INVALID, reg);
+    EXPECT_STATUS(SYS_E_INVALID, reg_sized);
+    EXPECT_STATUS(SYS_E_NOT_REGISTERED, sub);
+    EXPECT_STATUS(SYS_E_NOT_REGISTERED, wait);
+    EXPECT_STATUS(SYS_E_NOT_REGISTERED, timed);
+    EXPECT_EQ("returned@0", joined()) << "at once, not after a timeout";
+    EXPECT_EQ(0, stats().event_queue_peak) << "the tick queues nothing";
+}
+#endif
 
 TEST_F(Time, TimeoutsAboveTwoToThe31MsDoNotEndAtTheNextTick) {
     // Distances to deadlines are taken modulo 2^32 from now, so the whole

@@ -16,6 +16,28 @@
 #endif
 #include "openswarm/port_config.h"
 
+/* Features a robot may go without, for flash (docs/benchmarks.md has how
+ * much each costs). Each is 1 (on, the default) or 0. */
+
+/* Stack overflow detection: a 4-byte guard pattern at the bottom of every
+ * thread stack, compared at every scheduling decision a thread makes and at
+ * every tick; a thread that overwrote it is stopped and reported
+ * (SYS_FAULT_STACK_OVERFLOW, sys_stats.stack_overflows). With 0 stacks have
+ * no guard and an overflow goes unnoticed, corrupting whatever lies below. */
+#ifndef OS_CFG_STACK_CHECK
+#define OS_CFG_STACK_CHECK 1
+#endif
+
+/* The clock event: SYS_EVENT_1MS_TIMER, registered by Sys_Init_Kernel and
+ * sent at every tick while a handler or waiter listens. With 0 there is no
+ * clock event: registering SYS_EVENT_1MS_TIMER fails with SYS_E_INVALID, so
+ * subscribing to it or waiting for it fails with SYS_E_NOT_REGISTERED. Time
+ * goes on as before for Sys_Sleep, timeouts, time slices and
+ * Sys_Get_SystemTime. */
+#ifndef OS_CFG_CLOCK_EVENT
+#define OS_CFG_CLOCK_EVENT 1
+#endif
+
 /* Threads, including the system thread (pid 0). At most 16. */
 #ifndef OS_CFG_MAX_THREADS
 #define OS_CFG_MAX_THREADS 8
@@ -32,11 +54,13 @@
 #endif
 
 /* Bytes shared by all thread stacks (before the port's per-stack extra and
- * the 4-byte guard). By default every thread fits at the default size. */
+ * the 4-byte guard, if OS_CFG_STACK_CHECK). By default every thread fits
+ * at the default size. */
 #ifndef OS_CFG_STACK_POOL_BYTES
 #define OS_CFG_STACK_POOL_BYTES \
     ((OS_CFG_MAX_THREADS - 1) * \
-     ((OS_CFG_DEFAULT_STACK_BYTES + 4 + OS_CFG_STACK_BLOCK_BYTES - 1) / OS_CFG_STACK_BLOCK_BYTES) * \
+     ((OS_CFG_DEFAULT_STACK_BYTES + 4 * OS_CFG_STACK_CHECK + OS_CFG_STACK_BLOCK_BYTES - 1) / \
+      OS_CFG_STACK_BLOCK_BYTES) * \
      OS_CFG_STACK_BLOCK_BYTES)
 #endif
 
@@ -80,6 +104,10 @@
 #define OS_CFG_TIME_SLICE_MS 10
 #endif
 
+#if (OS_CFG_STACK_CHECK != 0 && OS_CFG_STACK_CHECK != 1) || \
+    (OS_CFG_CLOCK_EVENT != 0 && OS_CFG_CLOCK_EVENT != 1)
+#error "OS_CFG_STACK_CHECK and OS_CFG_CLOCK_EVENT must be 0 or 1"
+#endif
 #if OS_CFG_MAX_THREADS < 2 || OS_CFG_MAX_THREADS > 16
 #error "OS_CFG_MAX_THREADS must be 2..16 (pids keep the slot in 4 bits)"
 #endif

@@ -20,7 +20,8 @@
 extern "C" {
 #endif
 
-/* Sent every 1 ms tick while anybody listens; data: uint32_t system time. */
+/* Sent every 1 ms tick while anybody listens; data: uint32_t system time.
+ * Left out by OS_CFG_CLOCK_EVENT 0 (config.h). */
 #define SYS_EVENT_1MS_TIMER ((sys_event_id)0)
 /* Sent when the kernel detects a fault; data: sys_fault_info. */
 #define SYS_EVENT_FAULT ((sys_event_id)1)

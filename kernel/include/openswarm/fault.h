@@ -11,7 +11,7 @@ extern "C" {
 #endif
 
 typedef enum sys_fault {
-    SYS_FAULT_STACK_OVERFLOW = 1, /* a thread's stack guard was overwritten */
+    SYS_FAULT_STACK_OVERFLOW = 1, /* a thread's stack guard was overwritten (OS_CFG_STACK_CHECK) */
     SYS_FAULT_CRITICAL_LEAK       /* a thread ended inside a critical section */
 } sys_fault;
 

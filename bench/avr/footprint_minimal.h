@@ -1,0 +1,5 @@
+/* footprint_base.h's kernel without the features a robot may go without
+ * (kernel/include/openswarm/config.h): no stack guard, no clock event. */
+#include "footprint_base.h"
+#define OS_CFG_STACK_CHECK 0
+#define OS_CFG_CLOCK_EVENT 0
