@@ -46,7 +46,7 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     port_context_init(&t->ctx, stack, size, fn, arg);
     os_make_ready(t);
     if (pid != NULL) *pid = t->pid;
-    if (os_in_thread()) os_schedule(); /* a higher priority may preempt us */
+    os_schedule(); /* a higher priority may preempt a thread that starts one */
     port_irq_restore(s);
     return SYS_OK;
 }
@@ -179,7 +179,7 @@ sys_status Sys_Set_Priority(sys_pid pid, uint8_t priority) {
             os_make_ready(t);
         }
     }
-    if (os_in_thread()) os_schedule();
+    os_schedule();
     port_irq_restore(s);
     return SYS_OK;
 }

@@ -118,11 +118,8 @@ void os_wake_waiters(const sys_event_data *data) {
 }
 
 void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
-    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
-        sys_tcb *t = &os.threads[i];
-        if (t->state == SYS_PROCESS_BLOCKED && t->wait != NULL && t->wait->event == event)
-            wake(t, status);
-    }
+    for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++)
+        if (t->wait != NULL && t->wait->event == event) wake(t, status); /* wait: set while blocked */
 }
 
 /* Timeouts. Each timed wait keeps its deadline and os.timeout_next the
