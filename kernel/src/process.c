@@ -99,7 +99,8 @@ void os_reap_zombies(void) {
         t->stack = NULL; /* frees it for os_stack_alloc */
         t->state = OS_SLOT_FREE;
         t->pid = (sys_pid)(t->pid + 0x10u); /* next generation */
-        if (t->pid == SYS_PID_NONE) t->pid = (sys_pid)(t->pid + 0x10u); /* 0xFF means "none" */
+        /* 0xFF means "none": only slot 15, with 16 threads, could get it */
+        if (OS_CFG_MAX_THREADS == 16 && t->pid == SYS_PID_NONE) t->pid = (sys_pid)(t->pid + 0x10u);
     }
     os.reap_pending = false;
 }
