@@ -26,8 +26,9 @@ void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*ent
     *sp-- = (uint8_t)((uint16_t)entry >> 8);
     *sp-- = (uint8_t)(uint16_t)arg; /* r4, r5: its argument */
     *sp-- = (uint8_t)((uint16_t)arg >> 8);
-    for (uint8_t i = 4; i < SWITCH_FRAME_REGISTERS; i++) *sp-- = 0; /* r6..r17, r28, r29 */
-    ctx->sp = sp;
+    /* r6..r17, r28, r29: whatever the stack holds, as a C function saves
+     * the callee-saved registers it uses before it uses them. */
+    ctx->sp = sp - (SWITCH_FRAME_REGISTERS - 4u);
 }
 
 port_irq_state_t port_irq_save(void) {
