@@ -15,8 +15,7 @@ void os_tick(void) {
     }
     if (os.clock_has_listeners) {
         uint32_t now = os.now_ms;
-        if (!os_event_queue_push(SYS_EVENT_1MS_TIMER, &now, (uint8_t)sizeof now))
-            os.stats.event_queue_full++;
+        os_event_post(SYS_EVENT_1MS_TIMER, &now, (uint8_t)sizeof now);
     }
 }
 
