@@ -16,7 +16,9 @@ void kilobot_ir_start(void);
 
 /* adc.c: start a conversion of input (KILOBOT_ADC_*), and wait for its
  * result. For the IR receiver, which starts one at a pulse and takes it at
- * the next, interrupts masked; everything else uses kilobot_adc_read. */
+ * the next, interrupts masked; everything else uses kilobot_adc_read.
+ * Starting takes the ADC from a reader holding it, whose reading is then
+ * -1 (busy), after its conversion ends (at most 104 us). */
 void kilobot_adc_start(uint8_t input);
 int16_t kilobot_adc_take(void);
 

@@ -86,6 +86,8 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     uint16_t slot_time = start;
     uint8_t slot = 0;
     memset(rx, 0, sizeof *rx);
+    /* A sensor reading the ADC now loses it (it reads -1, busy); its
+     * conversion ends first, within 104 us: long before the stop pulse. */
     kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
         int32_t edge = next_edge(start);
@@ -163,11 +165,6 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     }
     uint16_t t0 = TCNT1;
     send_slots(frame);
-    /* Our own flashes (their reflection, on a robot; simavr also captures
-     * PB0, the LED's pin, as ICP1) latched the capture flag: taken as a
-     * frame's start, they would hold us deaf in a bogus reception for a
-     * whole frame time, just as the robot that waited for us answers. */
-    TIFR1 = _BV(ICF1);
     stats.sent++;
     catch_up_ticks(t0);
     SREG = sreg;
