@@ -165,6 +165,11 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     }
     uint16_t t0 = TCNT1;
     send_slots(frame);
+    /* Our own flashes (their reflection, on a robot; simavr also captures
+     * PB0, the LED's pin, as ICP1) latched the capture flag: taken as a
+     * frame's start, they would hold us deaf in a bogus reception for a
+     * whole frame time, just as the robot that waited for us answers. */
+    TIFR1 = _BV(ICF1);
     stats.sent++;
     catch_up_ticks(t0);
     SREG = sreg;
