@@ -11,6 +11,11 @@ void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback);
 /* Called every 1 ms from the tick interrupt. */
 void kilobot_motors_tick(void);
 
+/* port.c: one millisecond of the robot's time (the kernel's tick, then the
+ * devices' and the tick hooks), in interrupt context. The IR driver calls it
+ * for each millisecond a frame kept the tick interrupt masked. */
+void kilobot_tick(void);
+
 /* ir.c: start listening (analog comparator to Timer1 input capture). */
 void kilobot_ir_start(void);
 

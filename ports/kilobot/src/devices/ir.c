@@ -61,7 +61,7 @@ static void catch_up_ticks(uint16_t since) {
     uint16_t missed = (uint16_t)(TCNT1 - since) / (uint16_t)(F_CPU / 1000u);
     if (missed == 0) return;
     os_isr_enter();
-    while (missed-- != 0) os_tick();
+    while (missed-- != 0) kilobot_tick(); /* kilolib's kilo_ticks too */
     os_isr_exit();
 }
 
