@@ -6,13 +6,8 @@
 sys_status Sys_Send_Event(sys_event_id event, const void *data, uint8_t size) {
     if (event >= OS_CFG_MAX_EVENTS || (data == NULL && size != 0)) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
-    sys_status st = os_event_admit(event, size);
-    if (st == SYS_OK && !os_event_queue_push(event, data, size)) {
-        os.stats.event_queue_full++;
-        st = SYS_E_QUEUE_FULL;
-    } else if (st == SYS_OK && os.isr_depth == 0) {
-        os_schedule(); /* a thread's: handlers now; an ISR's: at its exit */
-    }
+    sys_status st = os_event_post(event, data, size);
+    if (st == SYS_OK && os.isr_depth == 0) os_schedule(); /* a thread's: handlers now; an ISR's: at its exit */
     port_irq_restore(s);
     return st;
 }
@@ -26,19 +21,17 @@ sys_status Sys_Send_IntEvent(sys_event_id event, int16_t value) {
  * copy serves (no stack frame on the way to the first handler). */
 static sys_event_data occurrence;
 
-/* Called by the system thread with interrupts masked. */
-void os_dispatch_one(void) {
-    if (!os_event_queue_pop(&occurrence)) return;
-    os_wake_waiters(&occurrence);
-    os_run_handlers(&occurrence);
-}
-
-/* Until the queue is empty, or a handler has ended a thread: reaping comes
- * first, as in the system thread's loop, so what a later handler starts can
- * have the ended thread's slot and stack. (The rest is dispatched by the
- * system thread, before the interrupted thread runs on.) */
-static void dispatch_all(void) {
-    while (!os_event_queue_empty() && !os.reap_pending) os_dispatch_one();
+/* As the system thread, interrupts masked: until the queue is empty, or a
+ * handler has ended a thread. Reaping comes first, so what a later handler
+ * starts can have the ended thread's slot and stack. (When called on behalf
+ * of a thread, the rest is dispatched by the system thread before that
+ * thread runs on.) */
+void os_dispatch_all(void) {
+    while (!os_event_queue_empty() && !os.reap_pending) {
+        if (!os_event_queue_pop(&occurrence)) continue;
+        os_wake_waiters(&occurrence);
+        os_run_handlers(&occurrence);
+    }
 }
 
 /* From a running thread, or an interrupt that ends: the handlers run at
@@ -46,6 +39,6 @@ static void dispatch_all(void) {
 void os_dispatch_on_system_stack(void) {
     sys_tcb *interrupted = os.current;
     os.current = OS_SYSTEM;
-    port_call_on_system_stack(&OS_SYSTEM->ctx, dispatch_all);
+    port_call_on_system_stack(&OS_SYSTEM->ctx, os_dispatch_all);
     os.current = interrupted;
 }

@@ -1,16 +1,27 @@
-/* The queue of sent, not yet dispatched event occurrences: one byte ring
- * holding [event id][size][data...] records, so an occurrence costs two
- * bytes plus its data and no fixed-size slot is wasted. Sends push with
+/* The queue of sent, not yet dispatched event occurrences.
+ *
+ * The oldest one is usually held in place: when a send finds the queue
+ * empty, its data goes straight into the event's kept data and only the
+ * event id is noted (os.held_event). That is the common case - an interrupt
+ * sends, the dispatch follows at its end - and it copies the data once
+ * instead of into the ring and out again.
+ *
+ * The others wait in one byte ring of [event id][size][data...] records,
+ * so an occurrence costs two bytes plus its data and no fixed-size slot is
+ * wasted. Ring records are always younger than the held one: a send holds
+ * its occurrence only when the ring is empty too. Sends push with
  * interrupts masked; only the system thread pops. */
 #include "kernel_internal.h"
 
 #define QUEUE_BYTES ((uint8_t)OS_CFG_EVENT_QUEUE_BYTES)
 #define HEADER_BYTES 2u
+#define NOTHING_HELD 0u /* os.held_event is the held event's id + 1 */
 
 static uint8_t ring[OS_CFG_EVENT_QUEUE_BYTES];
 static uint8_t head; /* next byte to pop; os.queued_bytes follow it */
+static uint8_t tail; /* next byte to push: head + os.queued_bytes, wrapped */
 
-void os_event_queue_reset(void) { head = os.queued_bytes = 0; }
+void os_event_queue_reset(void) { head = tail = os.queued_bytes = os.held_event = NOTHING_HELD; }
 
 /* The ring index after i. */
 static inline uint8_t after(uint8_t i) { return (uint8_t)(i + 1u == QUEUE_BYTES ? 0u : i + 1u); }
@@ -19,43 +30,98 @@ static inline uint8_t wrap(uint16_t index) {
     return (uint8_t)(index >= QUEUE_BYTES ? index - QUEUE_BYTES : index);
 }
 
+/* The occurrence becomes the event's kept data now, if the queue is empty
+ * and no handler of the event is reading its kept data. */
+static OS_HOT bool hold(sys_event_id event, os_event_slot *slot, const void *data, uint8_t size) {
+    uint8_t id_plus_one = (uint8_t)(event + 1u); /* 8-bit: no int promotion */
+    if ((os.queued_bytes | os.held_event) != 0 || os.handling_event == id_plus_one) return false;
+    slot->size = size;
+    uint8_t *dest = slot->data;
+    const uint8_t *src = (const uint8_t *)data;
+    for (uint8_t n = size; n != 0; n--) *dest++ = *src++; /* a few bytes: no memcpy call */
+    os.held_event = id_plus_one;
+    return true;
+}
+
 /* Byte by byte with the wrap test inline: occurrences are a few bytes, so
- * this beats splitting the copy in two memcpy calls. */
-bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size) {
+ * this beats splitting the copy in two memcpy calls. 8-bit arithmetic
+ * throughout: the ring and a record (2 + at most 253 bytes) fit in 8 bits. */
+static OS_HOT bool push(sys_event_id event, const void *data, uint8_t size) {
+    uint8_t record = (uint8_t)(HEADER_BYTES + size);
     uint8_t used = os.queued_bytes;
-    if ((uint16_t)used + HEADER_BYTES + size > QUEUE_BYTES) return false;
-    uint8_t at = wrap((uint16_t)head + used);
+    if (record > (uint8_t)(QUEUE_BYTES - used)) return false;
+    uint8_t at = tail;
     ring[at] = event;
     at = after(at);
     ring[at] = size;
+    at = after(at);
     const uint8_t *src = (const uint8_t *)data;
     for (uint8_t n = size; n != 0; n--) {
-        at = after(at);
         ring[at] = *src++;
+        at = after(at);
     }
-    used = (uint8_t)(used + HEADER_BYTES + size);
+    tail = at;
+    used = (uint8_t)(used + record);
     os.queued_bytes = used;
     if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
     return true;
 }
 
-bool os_event_queue_pop(sys_event_data *out) {
+sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
+    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_NOT_REGISTERED;
+    os_event_slot *slot = &os_events[event];
+    if (slot->size == OS_EVENT_UNREGISTERED) return SYS_E_NOT_REGISTERED;
+    if (size > slot->capacity) return SYS_E_TOO_BIG;
+    if (hold(event, slot, data, size) || push(event, data, size)) return SYS_OK;
+    os.stats.event_queue_full++;
+    return SYS_E_QUEUE_FULL;
+}
+
+static OS_HOT void describe(sys_event_id event, const os_event_slot *slot, sys_event_data *out) {
+    out->value = slot->data;
+    out->size = slot->size;
+    out->event = event;
+}
+
+/* The occurrence at the ring's head becomes its event's kept data, unless
+ * it no longer fits: the event was unregistered (or registered again
+ * smaller) since it was sent. */
+static bool pop_ring(sys_event_data *out) {
     uint8_t at = head;
     sys_event_id event = ring[at];
     at = after(at);
     uint8_t size = ring[at];
     at = after(at);
     os.queued_bytes = (uint8_t)(os.queued_bytes - HEADER_BYTES - size);
-    uint8_t *dest = os_event_keep(event, size, out);
-    if (dest == NULL) {
-        at = wrap((uint16_t)at + size); /* dropped: the event was unregistered meanwhile */
-        os.stats.events_discarded++;
-    } else {
+    os_event_slot *slot = &os_events[event]; /* the ring only holds ids that were valid */
+    bool fits = slot->size != OS_EVENT_UNREGISTERED && size <= slot->capacity;
+    if (fits) {
+        slot->size = size;
+        uint8_t *dest = slot->data;
         for (uint8_t n = size; n != 0; n--) {
             *dest++ = ring[at];
             at = after(at);
         }
+        describe(event, slot, out);
+    } else {
+        at = wrap((uint16_t)at + size);
+        os.stats.events_discarded++;
     }
     head = at;
-    return dest != NULL;
+    return fits;
+}
+
+bool os_event_queue_pop(sys_event_data *out) {
+    uint8_t held = os.held_event;
+    if (held == NOTHING_HELD) return pop_ring(out);
+    os.held_event = NOTHING_HELD;
+    sys_event_id event = (sys_event_id)(held - 1u);
+    describe(event, &os_events[event], out);
+    return true;
+}
+
+void os_event_queue_forget(sys_event_id event) {
+    if (!os_event_queue_holds(event)) return;
+    os.held_event = NOTHING_HELD; /* its kept data goes with the registration */
+    os.stats.events_discarded++;
 }

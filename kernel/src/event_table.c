@@ -13,59 +13,44 @@
 
 #include <string.h>
 
-#define NONE 0xFFu
-/* Two sizes no occurrence can have (capacities stop at SYS_EVENT_DATA_MAX)
- * mark a slot's state, so a slot is 4 bytes on an 8-bit CPU. */
-#define UNREGISTERED 0xFFu /* the event is not registered */
-#define NOTHING_KEPT 0xFEu /* registered, no occurrence kept (yet, or cleared) */
-
-typedef struct event_slot {
-    uint8_t *data;
-    uint8_t capacity;
-    uint8_t size; /* bytes kept, or UNREGISTERED / NOTHING_KEPT */
-} event_slot;
+#define UNREGISTERED OS_EVENT_UNREGISTERED
+#define NOTHING_KEPT OS_EVENT_NOTHING_KEPT
 
 typedef struct subscription {
     sys_event_handler handler; /* NULL: free, or unsubscribed during dispatch */
     sys_event_condition condition;
+    struct subscription *next; /* a pointer, not an index: no multiply per step */
     sys_event_id event;
     sys_pid pid;
-    uint8_t next;
 } subscription;
 
-static event_slot events[OS_CFG_MAX_EVENTS];
+os_event_slot os_events[OS_CFG_MAX_EVENTS];
 static uint8_t arena[OS_CFG_EVENT_DATA_BYTES];
 static uint16_t arena_used;
 
 static subscription subs[OS_CFG_MAX_SUBSCRIPTIONS];
-static uint8_t subs_head, subs_tail;
-static bool dispatching;
+static subscription *subs_head, *subs_tail;
 static bool sweep_needed;
 
 void os_event_table_reset(void) {
-    memset(events, 0, sizeof events);
-    for (unsigned i = 0; i < OS_CFG_MAX_EVENTS; i++) events[i].size = UNREGISTERED;
+    memset(os_events, 0, sizeof os_events);
+    for (unsigned i = 0; i < OS_CFG_MAX_EVENTS; i++) os_events[i].size = UNREGISTERED;
     arena_used = 0;
     memset(subs, 0, sizeof subs);
-    subs_head = subs_tail = NONE;
-    dispatching = sweep_needed = false;
+    subs_head = subs_tail = NULL;
+    sweep_needed = false;
 }
 
 bool os_event_registered(sys_event_id event) {
-    return event < OS_CFG_MAX_EVENTS && events[event].size != UNREGISTERED;
-}
-
-sys_status os_event_admit(sys_event_id event, uint8_t size) {
-    if (!os_event_registered(event)) return SYS_E_NOT_REGISTERED;
-    return size > events[event].capacity ? SYS_E_TOO_BIG : SYS_OK;
+    return event < OS_CFG_MAX_EVENTS && os_events[event].size != UNREGISTERED;
 }
 
 /* Find capacity bytes for slot (unregistered): its own block, a block left
  * by another unregistered event, or new arena. A block of non-zero capacity
  * always has its data, and none is needed for capacity 0. */
-static bool take_data_block(event_slot *slot, uint8_t capacity) {
+static bool take_data_block(os_event_slot *slot, uint8_t capacity) {
     if (slot->capacity >= capacity) return true;
-    for (event_slot *other = events; other != &events[OS_CFG_MAX_EVENTS]; other++) {
+    for (os_event_slot *other = os_events; other != &os_events[OS_CFG_MAX_EVENTS]; other++) {
         if (other->size == UNREGISTERED && other->capacity >= capacity) {
             uint8_t *data = slot->data;
             uint8_t cap = slot->capacity;
@@ -91,7 +76,7 @@ sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
     if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
-    event_slot *slot = &events[event];
+    os_event_slot *slot = &os_events[event];
     if (slot->size != UNREGISTERED) {
         st = SYS_E_EXISTS;
     } else if (!take_data_block(slot, capacity)) {
@@ -110,14 +95,14 @@ sys_status Sys_Register_Event(sys_event_id event) {
 }
 
 static void unlink_dead_subscriptions(void) {
-    uint8_t *link = &subs_head;
-    subs_tail = NONE;
-    while (*link != NONE) {
-        subscription *sub = &subs[*link];
+    subscription **link = &subs_head;
+    subs_tail = NULL;
+    while (*link != NULL) {
+        subscription *sub = *link;
         if (sub->handler == NULL) {
             *link = sub->next;
         } else {
-            subs_tail = *link;
+            subs_tail = sub;
             link = &sub->next;
         }
     }
@@ -126,7 +111,7 @@ static void unlink_dead_subscriptions(void) {
 
 /* Marked entries are unlinked now, or after the dispatch under way. */
 static void release_marked(void) {
-    if (dispatching)
+    if (os.handling_event != 0)
         sweep_needed = true;
     else
         unlink_dead_subscriptions();
@@ -134,8 +119,7 @@ static void release_marked(void) {
 
 /* Remove the subscriptions matching (event or any, pid or any). */
 static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid, bool any_pid) {
-    for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
-        subscription *sub = &subs[i];
+    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
     os_listeners_changed();
@@ -146,11 +130,12 @@ sys_status Sys_Unregister_Event(sys_event_id event) {
     if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
     if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
-    if (events[event].size == UNREGISTERED) {
+    if (os_events[event].size == UNREGISTERED) {
         port_irq_restore(s);
         return SYS_E_NOT_REGISTERED;
     }
-    events[event].size = UNREGISTERED; /* the data block stays for reuse */
+    os_events[event].size = UNREGISTERED; /* the data block stays for reuse */
+    os_event_queue_forget(event);
     remove_subscriptions(event, false, 0, true);
     os_wake_all_waiting_for(event, SYS_E_NOT_REGISTERED);
     if (os_in_thread()) os_schedule();
@@ -166,21 +151,20 @@ bool Sys_IsEventRegistered(sys_event_id event) {
 }
 
 static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_event_handler h) {
-    for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
-        subscription *sub = &subs[i];
+    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
         if (sub->handler == h && sub->event == event && sub->pid == pid) return sub;
     }
     return NULL;
 }
 
-static int free_subscription_index(void) {
-    for (unsigned i = 0; i < OS_CFG_MAX_SUBSCRIPTIONS; i++) {
-        if (subs[i].handler != NULL) continue;
+static subscription *free_subscription(void) {
+    for (subscription *s = subs; s != &subs[OS_CFG_MAX_SUBSCRIPTIONS]; s++) {
+        if (s->handler != NULL) continue;
         bool linked = false; /* a marked entry awaiting its sweep is not free yet */
-        for (uint8_t j = subs_head; j != NONE; j = subs[j].next) linked |= (j == i);
-        if (!linked) return (int)i;
+        for (const subscription *l = subs_head; l != NULL; l = l->next) linked |= (l == s);
+        if (!linked) return s;
     }
-    return -1;
+    return NULL;
 }
 
 sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
@@ -188,7 +172,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     if (handler == NULL) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
-    int i;
+    subscription *sub;
     if (!os_event_registered(event)) {
         st = SYS_E_NOT_REGISTERED;
     } else if (pid != SYS_PID_SYSTEM &&
@@ -196,21 +180,20 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
         st = SYS_E_INVALID;
     } else if (find_subscription(event, pid, handler) != NULL) {
         st = SYS_E_EXISTS;
-    } else if ((i = free_subscription_index()) < 0) {
+    } else if ((sub = free_subscription()) == NULL) {
         os_count(&os.stats.subscription_pool_full);
         st = SYS_E_POOL_FULL;
     } else {
-        subscription *sub = &subs[i];
         sub->handler = handler;
         sub->condition = condition;
         sub->event = event;
         sub->pid = pid;
-        sub->next = NONE;
-        if (subs_tail == NONE)
-            subs_head = (uint8_t)i;
+        sub->next = NULL;
+        if (subs_tail == NULL)
+            subs_head = sub;
         else
-            subs[subs_tail].next = (uint8_t)i;
-        subs_tail = (uint8_t)i;
+            subs_tail->next = sub;
+        subs_tail = sub;
         os_listeners_changed();
     }
     port_irq_restore(s);
@@ -233,8 +216,8 @@ void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true,
 
 #if OS_CFG_CLOCK_EVENT
 bool os_event_has_listeners(sys_event_id event) {
-    for (uint8_t i = subs_head; i != NONE; i = subs[i].next)
-        if (subs[i].handler != NULL && subs[i].event == event) return true;
+    for (const subscription *sub = subs_head; sub != NULL; sub = sub->next)
+        if (sub->handler != NULL && sub->event == event) return true;
     for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
         const sys_tcb *t = &os.threads[i];
         if (t->state == SYS_PROCESS_BLOCKED && t->wait != NULL && t->wait->event == event)
@@ -244,34 +227,21 @@ bool os_event_has_listeners(sys_event_id event) {
 }
 #endif
 
-/* os_event_registered's test, spelled out: on the dispatch path its call
- * costs 10 cycles an occurrence. */
-uint8_t *os_event_keep(sys_event_id event, uint8_t size, sys_event_data *out) {
-    if (event >= OS_CFG_MAX_EVENTS) return NULL;
-    event_slot *slot = &events[event];
-    if (slot->size == UNREGISTERED || size > slot->capacity) return NULL;
-    slot->size = size;
-    out->value = slot->data;
-    out->size = size;
-    out->event = event;
-    return slot->data != NULL ? slot->data : arena; /* capacity 0: nothing is copied */
-}
-
 /* Runs in the system thread with interrupts masked; each handler runs with
  * interrupts enabled. Handlers subscribed during the dispatch wait for the
  * next occurrence. */
 void os_run_handlers(const sys_event_data *data) {
-    uint8_t last = subs_tail;
-    dispatching = true;
-    for (uint8_t i = subs_head; i != NONE; i = subs[i].next) {
-        subscription *sub = &subs[i];
+    sys_event_id event = data->event;
+    const subscription *last = subs_tail;
+    os.handling_event = (uint8_t)(event + 1u);
+    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
         sys_event_handler handler = sub->handler;
-        if (handler != NULL && sub->event == data->event) {
+        if (handler != NULL && sub->event == event) {
             sys_event_condition condition = sub->condition;
             sys_pid pid = sub->pid;
+            bool keep = true;
             port_irq_enable();
-            bool run = condition == NULL || condition(data);
-            bool keep = !run || handler(pid, data->event, data);
+            if (condition == NULL || condition(data)) keep = handler(pid, event, data);
             port_irq_disable();
             if (os.lock_depth != 0) { /* a handler must not leave a section open */
                 os.lock_depth = 0;
@@ -284,16 +254,16 @@ void os_run_handlers(const sys_event_data *data) {
                 sweep_needed = true;
             }
         }
-        if (i == last) break;
+        if (sub == last) break;
     }
-    dispatching = false;
+    os.handling_event = 0;
     if (sweep_needed) unlink_dead_subscriptions();
 }
 
 sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size) {
     if (event >= OS_CFG_MAX_EVENTS || (buffer == NULL && capacity != 0)) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
-    event_slot *slot = &events[event];
+    os_event_slot *slot = &os_events[event];
     sys_status st;
     if (slot->size == UNREGISTERED) {
         st = SYS_E_NOT_REGISTERED;
@@ -313,8 +283,8 @@ sys_status Sys_Clear_EventData(sys_event_id event) {
     if (event >= OS_CFG_MAX_EVENTS) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_E_NOT_REGISTERED;
-    if (events[event].size != UNREGISTERED) {
-        events[event].size = NOTHING_KEPT;
+    if (os_events[event].size != UNREGISTERED) {
+        if (!os_event_queue_holds(event)) os_events[event].size = NOTHING_KEPT;
         st = SYS_OK;
     }
     port_irq_restore(s);

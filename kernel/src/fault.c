@@ -24,7 +24,5 @@ void os_fault(sys_fault fault, sys_pid pid) {
     port_report_fault((uint8_t)fault, pid);
     if (os.fault_hook != NULL) os.fault_hook(fault, pid);
     sys_fault_info info = {(uint8_t)fault, pid};
-    if (os_event_registered(SYS_EVENT_FAULT) &&
-        !os_event_queue_push(SYS_EVENT_FAULT, &info, (uint8_t)sizeof info))
-        os.stats.event_queue_full++;
+    os_event_post(SYS_EVENT_FAULT, &info, (uint8_t)sizeof info); /* if registered */
 }

@@ -35,7 +35,7 @@ void Sys_Run_SystemThread(void) {
         if (os.reap_pending) {
             os_reap_zombies();
         } else if (!os_event_queue_empty()) {
-            os_dispatch_one();
+            os_dispatch_all();
         } else {
             sys_tcb *next = os_choose_next();
             if (next != OS_SYSTEM)
@@ -53,10 +53,4 @@ void Sys_Stop_Kernel(void) {
     os.stop_requested = true;
     os_schedule();
     port_irq_restore(s);
-}
-
-void os_isr_enter(void) { os.isr_depth++; }
-
-void os_isr_exit(void) {
-    if (--os.isr_depth == 0) os_schedule_after_interrupt();
 }

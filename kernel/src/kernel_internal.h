@@ -76,7 +76,9 @@ typedef struct os_kernel {
     uint32_t switches;
     uint16_t slice_ms;
     uint16_t slice_left;
-    uint8_t queued_bytes; /* of the event queue: non-zero means dispatch is due */
+    uint8_t queued_bytes; /* in the event queue's ring */
+    uint8_t held_event;   /* id + 1 of the occurrence held in its kept data, 0: none */
+    uint8_t handling_event; /* id + 1 of the event whose handlers run, 0: none */
     uint8_t event_waiters; /* threads blocked on an event: none means no waiter scan */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
@@ -97,7 +99,7 @@ static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current !
 
 /* Has the system thread work to do (on every scheduling decision)? */
 static OS_HOT bool os_system_work_pending(void) {
-    return (os.queued_bytes | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
+    return (os.queued_bytes | os.held_event | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
 }
 
 /* Handlers or waiters may have come or gone: the next tick asks again
@@ -121,7 +123,6 @@ void os_scheduler_reset(void);
 void os_make_ready(sys_tcb *t);
 void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
-void os_schedule_after_interrupt(void); /* the same, as the outermost interrupt ends */
 void os_yield(void);                 /* Sys_Yield's decision */
 sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
 void os_switch_to(sys_tcb *next);
@@ -161,30 +162,43 @@ static OS_HOT void os_check_stack(sys_tcb *t) { (void)t; }
 #endif
 
 /* event_table.c */
+/* One slot per event id: the event's data block and what it keeps. Two
+ * sizes no occurrence can have (capacities stop at SYS_EVENT_DATA_MAX) mark
+ * a slot's state, so a slot is 4 bytes on an 8-bit CPU. The queue reads and
+ * fills slots directly: a call per occurrence costs tens of cycles. */
+#define OS_EVENT_UNREGISTERED 0xFFu /* the event is not registered */
+#define OS_EVENT_NOTHING_KEPT 0xFEu /* registered, no occurrence kept (yet, or cleared) */
+typedef struct os_event_slot {
+    uint8_t *data; /* capacity bytes; NULL when the capacity is 0 */
+    uint8_t capacity;
+    uint8_t size; /* bytes kept, or OS_EVENT_UNREGISTERED / OS_EVENT_NOTHING_KEPT */
+} os_event_slot;
+extern os_event_slot os_events[OS_CFG_MAX_EVENTS];
+
 void os_event_table_reset(void);
 bool os_event_registered(sys_event_id event);
-/* May an occurrence of size bytes be sent: SYS_OK, or why not. */
-sys_status os_event_admit(sys_event_id event, uint8_t size);
 #if OS_CFG_CLOCK_EVENT
 bool os_event_has_listeners(sys_event_id event);
 #endif
 void os_subscriptions_remove_thread(sys_pid pid);
-/* Make an occurrence of size bytes the event's kept data, describe it in
- * *out and return where its bytes go; NULL if it no longer fits (the event
- * was unregistered or registered again smaller since it was sent). */
-uint8_t *os_event_keep(sys_event_id event, uint8_t size, sys_event_data *out);
 void os_run_handlers(const sys_event_data *data);
 
 /* event_queue.c */
 void os_event_queue_reset(void);
-bool os_event_queue_push(sys_event_id event, const void *data, uint8_t size);
-static OS_HOT bool os_event_queue_empty(void) { return os.queued_bytes == 0; }
+/* Queue an occurrence (interrupts masked): SYS_OK, or why not; a full
+ * queue is counted. */
+sys_status os_event_post(sys_event_id event, const void *data, uint8_t size);
+static OS_HOT bool os_event_queue_empty(void) { return (os.queued_bytes | os.held_event) == 0; }
+/* Is the event's occurrence held in its kept data, not yet dispatched? */
+static OS_HOT bool os_event_queue_holds(sys_event_id event) { return os.held_event == (uint8_t)(event + 1u); }
+/* The event was unregistered: an occurrence held for it goes (counted). */
+void os_event_queue_forget(sys_event_id event);
 /* Pop one occurrence into the event's kept data and describe it in *out;
  * false if it had to be discarded (event unregistered meanwhile). */
 bool os_event_queue_pop(sys_event_data *out);
 
 /* event_dispatch.c */
-void os_dispatch_one(void);
+void os_dispatch_all(void);
 void os_dispatch_on_system_stack(void);
 
 /* wait.c */

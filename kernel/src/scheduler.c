@@ -95,13 +95,16 @@ static inline sys_tcb *successor_of_running(sys_tcb *cur) {
     return ready_pop(); /* cur again if it still comes first */
 }
 
-/* The decision for the running thread cur (not the system thread). */
-static void decide(sys_tcb *cur) {
-    if (cur->state == SYS_PROCESS_RUNNING) {
+/* The decision for the running thread (not the system thread). It reads
+ * os.current afresh after the dispatch rather than keeping it across: no
+ * register to save on the way to the handlers. */
+static void decide(void) {
+    if (os.current->state == SYS_PROCESS_RUNNING) {
         if (os.lock_depth != 0) return; /* postponed */
-        /* Events first, on the system stack; a handler may kill cur. */
+        /* Events first, on the system stack; a handler may kill the thread. */
         if (!os_event_queue_empty()) os_dispatch_on_system_stack();
     }
+    sys_tcb *cur = os.current;
     sys_tcb *next =
         cur->state == SYS_PROCESS_RUNNING ? successor_of_running(cur) : os_choose_next();
     if (next != NULL) os_switch_to(next);
@@ -111,7 +114,7 @@ void os_schedule(void) {
     sys_tcb *cur = os.current;
     if (cur == OS_SYSTEM || os.isr_depth != 0) return; /* the system loop decides */
     os_check_stack(cur);                               /* before it runs on or blocks */
-    decide(cur);
+    decide();
 }
 
 /* Sys_Yield: a running thread outside any critical section, interrupts
@@ -139,9 +142,12 @@ void os_yield(void) {
     port_switch(&cur->ctx, &next->ctx);
 }
 
-/* An interrupt's end costs no guard check: the tick makes one. */
-void os_schedule_after_interrupt(void) {
-    if (os.current != OS_SYSTEM) decide(os.current);
+void os_isr_enter(void) { os.isr_depth++; }
+
+/* The outermost interrupt's end decides at once (no guard check: the tick
+ * makes one). */
+void os_isr_exit(void) {
+    if (--os.isr_depth == 0 && os.current != OS_SYSTEM) decide();
 }
 
 sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {

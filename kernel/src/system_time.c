@@ -16,9 +16,8 @@ void os_tick(void) {
                                  : OS_CLOCK_UNHEARD;
     /* The tick runs with interrupts masked: now_ms cannot change while it
      * is copied, so it needs no copy on the interrupt's stack. */
-    if (os.clock_listeners == OS_CLOCK_HEARD &&
-        !os_event_queue_push(SYS_EVENT_1MS_TIMER, &os.now_ms, (uint8_t)sizeof os.now_ms))
-        os_count(&os.stats.event_queue_full);
+    if (os.clock_listeners == OS_CLOCK_HEARD)
+        os_event_post(SYS_EVENT_1MS_TIMER, &os.now_ms, (uint8_t)sizeof os.now_ms);
 #endif
 }
 

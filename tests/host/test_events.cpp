@@ -267,6 +267,48 @@ TEST_F(Events, LastDataIsKeptUntilCleared) {
     EXPECT_STATUS(SYS_E_NOT_REGISTERED, unregistered);
 }
 
+// An occurrence sent while the queue is empty is held in its event's kept
+// data until dispatched; clearing the kept data meanwhile must not spoil it.
+TEST_F(Events, ClearingKeptDataBeforeDispatchKeepsTheSentOccurrence) {
+    int16_t got = 0;
+    uint8_t size = 0;
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, log_handler, nullptr);
+    });
+    irq([] {
+        Sys_Send_IntEvent(EV_A, 7);
+        EXPECT_STATUS(SYS_OK, Sys_Clear_EventData(EV_A));
+    });
+    settle();
+    irq([&] { EXPECT_STATUS(SYS_OK, Sys_Get_EventData(EV_A, &got, sizeof got, &size)); });
+    EXPECT_EQ("h0(0,7)", joined());
+    EXPECT_EQ(7, got);
+    EXPECT_EQ(sizeof got, size);
+}
+
+// A send of the event being handled must not overwrite the data its
+// handlers are reading: it waits in the queue instead.
+TEST_F(Events, HandlerSendingItsOwnEventKeepsReadingItsOwnData) {
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM,
+                               [](sys_pid, sys_event_id, const sys_event_data *d) {
+                                   int16_t v;
+                                   std::memcpy(&v, d->value, sizeof v);
+                                   if (v == 1) Sys_Send_IntEvent(EV_A, 2);
+                                   std::memcpy(&v, d->value, sizeof v);
+                                   note("saw" + std::to_string(v));
+                                   return true;
+                               },
+                               nullptr);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, log_handler, nullptr);
+    });
+    irq([] { Sys_Send_IntEvent(EV_A, 1); });
+    settle();
+    EXPECT_EQ("saw1 h0(0,1) saw2 h0(0,2)", joined());
+}
+
 TEST_F(Events, BadSendsAreRefused) {
     sys_status too_big = SYS_OK, unregistered = SYS_OK, null_data = SYS_OK, range = SYS_OK;
     boot([&] { Sys_Register_Event_Sized(EV_A, 2); });

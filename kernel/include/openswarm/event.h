@@ -84,10 +84,12 @@ sys_status Sys_Wait_for_Condition_Timeout(sys_event_id event, sys_event_conditio
                                           uint32_t timeout_ms, void *buffer, uint8_t capacity,
                                           uint8_t *size);
 
-/* Copy the data kept from the last dispatched occurrence. SYS_E_NOT_FOUND
- * if none was kept (never sent, or cleared). */
+/* Copy the data kept from the last dispatched occurrence (or from one sent
+ * to an empty queue, which is kept at once). SYS_E_NOT_FOUND if none was
+ * kept (never sent, or cleared). */
 sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size);
-/* Forget the kept data of event. */
+/* Forget the kept data of event (not an occurrence kept at once and not
+ * yet dispatched: its handlers will read it). */
 sys_status Sys_Clear_EventData(sys_event_id event);
 
 #ifdef __cplusplus

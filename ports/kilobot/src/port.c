@@ -65,13 +65,17 @@ void port_tick_start(void) {
 void (*volatile kilobot_tick_hook)(void);
 void (*volatile kilobot_sensors_tick_hook)(void);
 
-ISR(TIMER0_COMPA_vect) {
-    os_isr_enter();
+void kilobot_tick(void) {
     os_tick();
     kilobot_motors_tick();
     void (*sensors)(void) = kilobot_sensors_tick_hook;
     if (sensors != NULL) sensors();
     void (*hook)(void) = kilobot_tick_hook;
     if (hook != NULL) hook();
+}
+
+ISR(TIMER0_COMPA_vect) {
+    os_isr_enter();
+    kilobot_tick();
     os_isr_exit();
 }

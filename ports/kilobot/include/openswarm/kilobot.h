@@ -117,8 +117,9 @@ extern sys_device kilobot_temperature;
  * from kilobot_devices_init so applications without them pay nothing. */
 sys_status kilobot_sensors_init(void);
 
-/* Read sensor now (about 110 us, interrupts masked), run its processor and
- * send its event; *value (may be NULL) receives the processed reading.
+/* Read sensor now (about 110 us; in a thread with interrupts enabled, a
+ * conversion the IR receiver takes over is done again), run its processor
+ * and send its event; *value (may be NULL) receives the processed reading.
  * SYS_E_INVALID if sensor is not one of the three; SYS_E_NOT_FOUND if the
  * processor gave no value (counted in sensor->rejected); otherwise the
  * status of sending the event. */
@@ -172,8 +173,10 @@ void kilobot_motors_apply(uint8_t left, uint8_t right);
 #define KILOBOT_ADC_VOLTAGE 6u
 #define KILOBOT_ADC_LIGHT 7u
 #define KILOBOT_ADC_TEMPERATURE 8u
-/* One conversion of input, 0..1023 (about 110 us with interrupts masked,
- * so the IR receiver cannot take the ADC over midway). */
+/* One conversion of input, 0..1023, or -1 if the ADC is busy: a
+ * conversion (the IR receiver's or another reader's) is running, or the IR
+ * receiver took the ADC over at a frame's start before the result came
+ * (about 110 us, interrupts left as the caller had them). */
 int16_t kilobot_adc_read(uint8_t input);
 
 #ifdef __cplusplus

@@ -12,7 +12,8 @@
 /* The battery level from its ADC6 reading: green full, blue good, yellow
  * low, red nearly empty (the classic library's thresholds). */
 static uint8_t battery_colour(void) {
-    int16_t v = get_voltage(); /* never busy: the conversion runs masked */
+    int16_t v;
+    while ((v = get_voltage()) < 0) delay(1); /* busy: a frame was being received */
     if (v > 682) return RGB(0, 3, 0);
     if (v > 648) return RGB(0, 0, 3);
     if (v > 614) return RGB(3, 3, 0);

@@ -13,6 +13,13 @@
 
 #include "devices_internal.h"
 
+/* The reader whose conversion the ADC holds (running, or done and not yet
+ * collected), named by the address of one of its locals: readers suspended
+ * at the same time are on different stacks, so no two share it. NULL when
+ * no reader holds it; a start by anyone else clears it, which tells the
+ * reader its result is gone. */
+static const void *volatile reader;
+
 /* The temperature sensor is only measured against the internal 1.1 V
  * reference; every other input against AVcc. */
 static uint8_t admux_for(uint8_t input) {
@@ -21,26 +28,53 @@ static uint8_t admux_for(uint8_t input) {
     return (uint8_t)(reference | (input & 0x0Fu));
 }
 
+static bool converting(void) { return (ADCSRA & _BV(ADSC)) != 0; }
+
+/* A reader's conversion is waited for: it cannot be cut short any sooner
+ * (clearing ADEN stops it, but the next one is then a 25-clock first
+ * conversion). One the IR receiver left running at a collision is not: the
+ * ADC ignores this start, and the frame gets that conversion's high gain,
+ * as it always did. */
 void kilobot_adc_start(uint8_t input) {
+    if (reader != NULL) {
+        reader = NULL;
+        while (converting()) {
+        }
+    }
     ADMUX = admux_for(input);
     ADCSRA = _BV(ADEN) | _BV(ADSC) | _BV(ADPS2) | _BV(ADPS1);
 }
 
 int16_t kilobot_adc_take(void) {
-    while (ADCSRA & _BV(ADSC)) {
+    while (converting()) {
     }
     return (int16_t)ADC;
 }
 
-/* Interrupts stay masked for the conversion (as the classic library does):
- * the IR receiver's interrupt restarts the ADC on a distance channel, and a
- * conversion it cut into would return the distance reading. */
+/* The conversion runs with interrupts as the caller had them. In a thread
+ * they are enabled, so the IR receiver's interrupt is not held back: at a
+ * start pulse it takes the ADC over (kilobot_adc_start) for the distance,
+ * and this reading is lost (-1), as the classic library's is during a
+ * reception. */
 int16_t kilobot_adc_read(uint8_t input) {
+    uint8_t mine; /* only its address matters */
     uint8_t sreg = SREG;
     cli();
-    kilobot_adc_take(); /* one the IR receiver left running (a frame that stopped short) */
+    if (converting()) { /* the IR receiver's, after a collision, or another reader's */
+        SREG = sreg;
+        return -1;
+    }
     kilobot_adc_start(input);
-    int16_t value = kilobot_adc_take();
+    reader = &mine;
+    SREG = sreg;
+    while (converting()) {
+    }
+    cli();
+    int16_t value = -1;
+    if (reader == &mine) {
+        value = (int16_t)ADC;
+        reader = NULL;
+    }
     SREG = sreg;
     return value;
 }

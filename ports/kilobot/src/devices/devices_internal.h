@@ -11,12 +11,19 @@ void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback);
 /* Called every 1 ms from the tick interrupt. */
 void kilobot_motors_tick(void);
 
+/* port.c: one millisecond of the robot's time (the kernel's tick, then the
+ * devices' and the tick hooks), in interrupt context. The IR driver calls it
+ * for each millisecond a frame kept the tick interrupt masked. */
+void kilobot_tick(void);
+
 /* ir.c: start listening (analog comparator to Timer1 input capture). */
 void kilobot_ir_start(void);
 
 /* adc.c: start a conversion of input (KILOBOT_ADC_*), and wait for its
  * result. For the IR receiver, which starts one at a pulse and takes it at
- * the next, interrupts masked; everything else uses kilobot_adc_read. */
+ * the next, interrupts masked; everything else uses kilobot_adc_read.
+ * Starting takes the ADC from a reader holding it, whose reading is then
+ * -1 (busy), after its conversion ends (at most 104 us). */
 void kilobot_adc_start(uint8_t input);
 int16_t kilobot_adc_take(void);
 

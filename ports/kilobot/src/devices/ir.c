@@ -61,7 +61,7 @@ static void catch_up_ticks(uint16_t since) {
     uint16_t missed = (uint16_t)(TCNT1 - since) / (uint16_t)(F_CPU / 1000u);
     if (missed == 0) return;
     os_isr_enter();
-    while (missed-- != 0) os_tick();
+    while (missed-- != 0) kilobot_tick(); /* kilolib's kilo_ticks too */
     os_isr_exit();
 }
 
@@ -86,6 +86,8 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     uint16_t slot_time = start;
     uint8_t slot = 0;
     memset(rx, 0, sizeof *rx);
+    /* A sensor reading the ADC now loses it (it reads -1, busy); its
+     * conversion ends first, within 104 us: long before the stop pulse. */
     kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
         int32_t edge = next_edge(start);

@@ -56,12 +56,24 @@ static void count_rejected(sys_device *sensor) {
     port_irq_restore(s);
 }
 
+/* A busy ADC (-1) is tried again: the IR receiver takes it only at a
+ * frame's start and decodes the whole frame in its interrupt, so the next
+ * try comes after that frame; a conversion running at the try (the IR
+ * receiver's or another reader's) ends within 104 us. In an interrupt
+ * nothing takes the ADC midway. */
+static int16_t read_adc(uint8_t input) {
+    int16_t raw;
+    while ((raw = kilobot_adc_read(input)) < 0) {
+    }
+    return raw;
+}
+
 /* The processor runs here rather than in Sys_Device_Input, so the caller
  * gets the value it made as well as the event. */
 sys_status kilobot_sense(sys_device *sensor, int16_t *value) {
     uint8_t i = index_of(sensor);
     if (i == SENSORS) return SYS_E_INVALID;
-    int16_t raw = kilobot_adc_read(adc_input_at(i));
+    int16_t raw = read_adc(adc_input_at(i));
     int16_t processed = raw;
     sys_processor processor = sensor->processor;
     if (processor != NULL &&
