@@ -138,7 +138,7 @@ sys_status Sys_Unregister_Event(sys_event_id event) {
     os_event_queue_forget(event);
     remove_subscriptions(event, false, 0, true);
     os_wake_all_waiting_for(event, SYS_E_NOT_REGISTERED);
-    if (os_in_thread()) os_schedule();
+    os_schedule();
     port_irq_restore(s);
     return SYS_OK;
 }
@@ -218,11 +218,8 @@ void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true,
 bool os_event_has_listeners(sys_event_id event) {
     for (const subscription *sub = subs_head; sub != NULL; sub = sub->next)
         if (sub->handler != NULL && sub->event == event) return true;
-    for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) {
-        const sys_tcb *t = &os.threads[i];
-        if (t->state == SYS_PROCESS_BLOCKED && t->wait != NULL && t->wait->event == event)
-            return true;
-    }
+    for (const sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++)
+        if (t->wait != NULL && t->wait->event == event) return true; /* wait: set while blocked */
     return false;
 }
 #endif

@@ -163,7 +163,7 @@ sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {
         t->next = NULL;
         scheduler->insert(&os.ready, t);
     }
-    if (os_in_thread()) os_schedule();
+    os_schedule();
     port_irq_restore(s);
     return SYS_OK;
 }
