@@ -227,6 +227,13 @@ bool os_event_has_listeners(sys_event_id event) {
 /* Runs in the system thread with interrupts masked; each handler runs with
  * interrupts enabled. Handlers subscribed during the dispatch wait for the
  * next occurrence. */
+/* A handler must not leave a critical section open: it is closed for it. */
+static OS_COLD void close_leaked_section(sys_pid pid) {
+    os.lock_depth = 0;
+    os_count(&os.stats.critical_leaks);
+    os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
+}
+
 void os_run_handlers(const sys_event_data *data) {
     sys_event_id event = data->event;
     const subscription *last = subs_tail;
@@ -235,17 +242,15 @@ void os_run_handlers(const sys_event_data *data) {
         sys_event_handler handler = sub->handler;
         if (handler != NULL && sub->event == event) {
             sys_event_condition condition = sub->condition;
-            sys_pid pid = sub->pid;
             bool keep = true;
             port_irq_enable();
-            if (condition == NULL || condition(data)) keep = handler(pid, event, data);
+            if (condition == NULL || condition(data)) keep = handler(sub->pid, event, data);
             port_irq_disable();
-            if (os.lock_depth != 0) { /* a handler must not leave a section open */
-                os.lock_depth = 0;
-                os.stats.critical_leaks++;
-                os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
-            }
-            if (!keep && sub->handler == handler) {
+            if (os.lock_depth != 0) close_leaked_section(sub->pid);
+            /* Returning false unsubscribes. The entry cannot have been
+             * reused meanwhile: a cleared entry stays linked until the
+             * sweep, and only unlinked entries are free. */
+            if (!keep) {
                 os_listeners_changed();
                 sub->handler = NULL;
                 sweep_needed = true;
