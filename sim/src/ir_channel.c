@@ -22,6 +22,7 @@
 #include <avr_adc.h>
 #include <avr_ioport.h>
 #include <math.h>
+#include <string.h>
 #include <sim_cycle_timers.h>
 #include <sim_io.h>
 
@@ -51,6 +52,8 @@ struct ir_link {
 /* links[s][0 .. n_links[s] - 1]: the receivers sender s reaches. */
 static ir_link links[MAX_ROBOTS][MAX_ROBOTS - 1];
 static int n_links[MAX_ROBOTS];
+/* The same, as text for --ir-log: "1, 2". */
+static char in_range[MAX_ROBOTS][MAX_ROBOTS * 4];
 /* The link each robot's distance sensors read now, NULL before any. */
 static const ir_link *sensed[MAX_ROBOTS];
 
@@ -79,6 +82,7 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     robot *from = param;
     avr_cycle_count_t sent = from->avr->cycle;
+    if (value) ir_log_flash(from, sent, in_range[from->index]);
     for (int k = 0; k < n_links[from->index]; k++) {
         ir_link *l = &links[from->index][k];
         ir_edge *e = &l->edge[value ? 1 : 0];
@@ -117,6 +121,8 @@ static void link_sender(robot *all, int n, int s, const placement *p, int range_
         l->edge[1] = (ir_edge){l, LIT_MV};
         l->high_gain_mv = millivolts_of(l->to, ir_high_gain_reading((int)lround(mm)));
         l->low_gain_mv = millivolts_of(l->to, ir_low_gain_reading((int)lround(mm)));
+        size_t used = strlen(in_range[s]);
+        snprintf(in_range[s] + used, sizeof in_range[s] - used, "%s%d", used ? ", " : "", j);
     }
 }
 

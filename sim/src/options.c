@@ -38,6 +38,8 @@ static void usage(FILE *out) {
             "                       '#' starts a comment; --robots defaults to the count\n"
             "      --ir-range MM    a robot hears senders at most MM away (default 100,\n"
             "                       a Kilobot's IR range), 10..1000\n"
+            "      --ir-log         print every frame a robot sends, decoded from its IR\n"
+            "                       flashes by the Kilobot wire format: bytes, CRC, timing\n"
             "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
             "                       (run, sleep, wakeup, reset, voltage, charge, boot;\n"
             "                       calibration: calib-uid:UID, calib-left:DUTY,\n"
@@ -126,6 +128,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"distance", required_argument, 0, 'd'},   {"ohc", required_argument, 0, 'O'},
         {"line", required_argument, 0, 'N'},       {"positions", required_argument, 0, 'P'},
         {"ir-range", required_argument, 0, 'I'},   {"charging", no_argument, 0, 'H'},
+        {"ir-log", no_argument, 0, 'R'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -146,6 +149,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'N': place.line = optarg; break;
         case 'P': place.positions = optarg; break;
         case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
+        case 'R': o->ir_log = 1; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'F': o->profile = 1; break;

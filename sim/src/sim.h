@@ -66,6 +66,7 @@ typedef struct options {
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
     placement place;    /* --distance (default), --line or --positions */
     int ir_range_mm;    /* a robot hears senders this close or closer */
+    int ir_log;         /* print every frame on the air, decoded */
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
@@ -146,6 +147,11 @@ int measure_attach(robot *r, const options *o);
 
 /* ir_channel.c: every robot hears the IR LED of every other within range */
 void ir_channel_attach(robot *all, int n, const placement *p, int range_mm);
+/* ir_log.c: --ir-log, the frames on the air decoded by the wire format */
+void ir_log_enable(void);
+/* A rising flash of from's IR LED; in_range names the robots it reaches. */
+void ir_log_flash(const robot *from, avr_cycle_count_t cycle, const char *in_range);
+
 /* The readings that model, for the calibration tables a robot keeps. */
 int ir_high_gain_reading(int mm);
 int ir_low_gain_reading(int mm);
