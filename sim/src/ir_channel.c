@@ -78,6 +78,12 @@ static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void
     return 0;
 }
 
+/* Cycle c of robot from's clock on robot to's (--clock-spread). */
+static avr_cycle_count_t on_clock_of(const robot *to, const robot *from, avr_cycle_count_t c) {
+    uint32_t f_to = to->avr->frequency, f_from = from->avr->frequency;
+    return f_to == f_from ? c : c * f_to / f_from;
+}
+
 static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     robot *from = param;
@@ -88,7 +94,8 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
         ir_edge *e = &l->edge[value ? 1 : 0];
         robot *to = l->to;
         avr_cycle_count_t now = to->avr->cycle;
-        avr_cycle_count_t at = sent > now ? sent : now;
+        avr_cycle_count_t heard = on_clock_of(to, from, sent);
+        avr_cycle_count_t at = heard > now ? heard : now;
         if (at < l->next_free) at = l->next_free;
         l->next_free = at + EDGE_GAP;
         avr_cycle_timer_register(to->avr, at - now + 1, deliver, e);

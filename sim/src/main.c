@@ -1,6 +1,7 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* openswarm-sim: load the robots, run them in lockstep, report how they ended. */
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -37,11 +38,37 @@ static int finished(const robot *r) { return r->state == cpu_Done || r->state ==
  * simulated flash is erased there: simavr 1.6 would run through it. */
 static int at_bootloader(const robot *r) { return r->avr->pc == KILOBOT_BOOTLOADER_ADDRESS; }
 
+/* The ELF's clock: the lockstep windows count its cycles. */
+static uint32_t nominal_hz;
+
+/* Robot index's clock error as a fraction of --clock-spread: evenly from -1
+ * to +1 over the n robots, in an order scrambled by a fixed hash so that
+ * robots next to each other by index do not run alike. */
+static double clock_error(int index, int n) {
+    if (n < 2) return 0.0;
+    uint32_t mine = (uint32_t)index * 2654435761u;
+    int rank = 0;
+    for (int j = 0; j < n; j++) {
+        uint32_t other = (uint32_t)j * 2654435761u;
+        if (other < mine || (other == mine && j < index)) rank++;
+    }
+    return 2.0 * rank / (n - 1) - 1.0;
+}
+
+/* Cycle c of the nominal clock, in robot r's own cycles. */
+static avr_cycle_count_t own_cycles(const robot *r, avr_cycle_count_t c) {
+    return r->avr->frequency == nominal_hz ? c : c * r->avr->frequency / nominal_hz;
+}
+
 static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     r->index = index;
     r->state = cpu_Running;
     r->avr = firmware_load(o->elf);
     if (r->avr == NULL) return -1;
+    nominal_hz = r->avr->frequency;
+    if (o->clock_spread_pct != 0)
+        r->avr->frequency = (uint32_t)lround(
+            nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
     board_configure(r->avr, o, index);
     char prefix[16] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
@@ -62,13 +89,14 @@ static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void
     return when + 1;
 }
 
-/* Run every robot up to cycle end (or until it stops); 1 when all stopped.
- * With several robots a sleeping one is woken at the window's end, so it
- * never skips past what the others do. */
-static int run_window(int n, avr_cycle_count_t end) {
+/* Run every robot up to the nominal clock's cycle window_end (or until it
+ * stops); 1 when all stopped. With several robots a sleeping one is woken
+ * at the window's end, so it never skips past what the others do. */
+static int run_window(int n, avr_cycle_count_t window_end) {
     int all_finished = 1;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
+        avr_cycle_count_t end = own_cycles(r, window_end);
         if (n > 1 && !finished(r) && r->avr->cycle < end)
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
         while (!finished(r) && r->avr->cycle < end) {
@@ -141,7 +169,7 @@ int main(int argc, char **argv) {
     if (o.ir_log) ir_log_enable();
     ohc_attach(robots, o.robots, &o);
 
-    avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)robots[0].avr->frequency);
+    avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)nominal_hz);
     for (avr_cycle_count_t end = LOCKSTEP_CYCLES;; end += LOCKSTEP_CYCLES) {
         if (end > limit) end = limit;
         if (run_window(o.robots, end) || end == limit) break;

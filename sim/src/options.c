@@ -38,6 +38,9 @@ static void usage(FILE *out) {
             "                       '#' starts a comment; --robots defaults to the count\n"
             "      --ir-range MM    a robot hears senders at most MM away (default 100,\n"
             "                       a Kilobot's IR range), 10..1000\n"
+            "      --clock-spread PCT  the robots' clocks differ: each runs fast or slow by up\n"
+            "                       to PCT percent (0..5), spread evenly over the robots in a\n"
+            "                       fixed order; 0 (default): all exactly at the ELF's clock\n"
             "      --ir-log         print every frame a robot sends, decoded from its IR\n"
             "                       flashes by the Kilobot wire format: bytes, CRC, timing\n"
             "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
@@ -89,6 +92,19 @@ static int parse_calibration(const char *text, options *o) {
     return 0;
 }
 
+static int parse_clock_spread(const char *text, options *o) {
+    char *end;
+    o->clock_spread_pct = strtod(text, &end);
+    if (*end == '%') end++;
+    if (*end != '\0' || !(o->clock_spread_pct >= 0 && o->clock_spread_pct <= 5)) {
+        fprintf(stderr, "openswarm-sim: --clock-spread '%s': expected a percentage from 0 to 5, "
+                        "e.g. --clock-spread 1 (a Kilobot's calibrated oscillator is within about "
+                        "1%%)\n", text);
+        return -1;
+    }
+    return 0;
+}
+
 static int parse_time(const char *text, options *o) {
     char *end;
     o->seconds = strtod(text, &end);
@@ -128,7 +144,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"distance", required_argument, 0, 'd'},   {"ohc", required_argument, 0, 'O'},
         {"line", required_argument, 0, 'N'},       {"positions", required_argument, 0, 'P'},
         {"ir-range", required_argument, 0, 'I'},   {"charging", no_argument, 0, 'H'},
-        {"ir-log", no_argument, 0, 'R'},
+        {"ir-log", no_argument, 0, 'R'},           {"clock-spread", required_argument, 0, 'S'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -150,6 +166,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'P': place.positions = optarg; break;
         case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
         case 'R': o->ir_log = 1; break;
+        case 'S': if (parse_clock_spread(optarg, o) != 0) return -1; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'F': o->profile = 1; break;

@@ -67,6 +67,7 @@ typedef struct options {
     placement place;    /* --distance (default), --line or --positions */
     int ir_range_mm;    /* a robot hears senders this close or closer */
     int ir_log;         /* print every frame on the air, decoded */
+    double clock_spread_pct; /* robots' clocks differ by up to this, either way */
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */

@@ -65,50 +65,64 @@ static void catch_up_ticks(uint16_t since) {
     os_isr_exit();
 }
 
-/* Next edge's Timer1 time, or -1 once the frame's time is over. Edges are
- * latched by the input capture hardware, so polling loses none. */
-static int32_t next_edge(uint16_t start) {
+/* Next edge's Timer1 time, or -1 when none comes within 10 slots of the
+ * last one (a frame never leaves more than 9 between pulses: the header's,
+ * and a zero byte's start and stop bits). Edges are latched by the input
+ * capture hardware, so polling loses none. */
+static int32_t next_edge(uint16_t last) {
     for (;;) {
         if (TIFR1 & _BV(ICF1)) {
             uint16_t t = ICR1;
             TIFR1 = _BV(ICF1);
             return t;
         }
-        if ((uint16_t)(TCNT1 - start) > (uint16_t)((SLOTS + 1u) * BIT)) return -1;
+        if ((uint16_t)(TCNT1 - last) > (uint16_t)(10u * BIT)) return -1;
     }
 }
 
 /* Decode one frame, interrupts masked throughout (4.4 ms, as the classic
  * library does): another interrupt in the middle would make us miss the
- * edges of two consecutive 1 bits. Slots are counted forward from the
- * start pulse, so no division runs per edge. */
+ * edges of two consecutive 1 bits. Slots are counted forward, so no
+ * division runs per edge (one would take longer than a bit), from the start
+ * pulse and again from the stop pulse and each byte's start bit (always a
+ * 1), as a UART does: robots' clocks differ by a percent or two, which over
+ * a whole frame's 130 slots would add up to more than half a slot. */
 static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     uint16_t slot_time = start;
-    uint8_t slot = 0;
+    uint8_t slot = 0;          /* in the header; HEADER_SLOTS once past it */
+    uint8_t byte = 0, bit = 0; /* past the header: which byte, which of its 10 slots */
     memset(rx, 0, sizeof *rx);
     /* A sensor reading the ADC now loses it (it reads -1, busy); its
      * conversion ends first, within 104 us: long before the stop pulse. */
     kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
-        int32_t edge = next_edge(start);
+        int32_t edge = next_edge(slot_time);
         if (edge < 0) return false; /* the frame stopped short */
         while ((int16_t)((uint16_t)edge - slot_time) > (int16_t)(BIT / 2u)) {
             slot_time = (uint16_t)(slot_time + BIT);
-            slot++;
+            if (slot < HEADER_SLOTS)
+                slot++;
+            else if (++bit == 10u) {
+                bit = 0;
+                byte++;
+            }
         }
         if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
             stats.collisions++;
             return false;
         }
         if (slot == HEADER_SLOTS - 1u) {
+            slot_time = (uint16_t)edge; /* the sender's clock, afresh */
             rx->high_gain = kilobot_adc_take();
             kilobot_adc_start(KILOBOT_ADC_IR_LOW_GAIN);
             continue;
         }
-        uint8_t data_slot = (uint8_t)(slot - HEADER_SLOTS);
-        uint8_t bit = data_slot % 10u;
-        if (bit >= 1u && bit <= 8u) rx->frame[data_slot / 10u] |= (uint8_t)(1u << (bit - 1u));
-        if (data_slot == SLOTS - HEADER_SLOTS - 1u) {
+        if (byte == KILOBOT_IR_FRAME_BYTES) return false; /* pulses past the frame's end */
+        if (bit == 0u)
+            slot_time = (uint16_t)edge; /* a start bit: the sender's clock, afresh */
+        else if (bit <= 8u)
+            rx->frame[byte] |= (uint8_t)(1u << (bit - 1u));
+        else if (byte == KILOBOT_IR_FRAME_BYTES - 1u) { /* the last stop bit */
             rx->low_gain = kilobot_adc_take();
             return true;
         }
