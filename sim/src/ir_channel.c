@@ -54,6 +54,12 @@ static ir_link links[MAX_ROBOTS][MAX_ROBOTS - 1];
 static int n_links[MAX_ROBOTS];
 /* The same, as text for --ir-log: "1, 2". */
 static char in_range[MAX_ROBOTS][MAX_ROBOTS * 4];
+/* Until about this cycle a frame may be on the air (a flash plus two frame
+ * times: the sender's cycles are within a few percent of the others'). */
+static avr_cycle_count_t busy_until;
+#define FRAME_CYCLES (131 * 269)
+
+avr_cycle_count_t ir_channel_busy_until(void) { return busy_until; }
 /* The link each robot's distance sensors read now, NULL before any. */
 static const ir_link *sensed[MAX_ROBOTS];
 
@@ -89,6 +95,8 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     robot *from = param;
     avr_cycle_count_t sent = from->avr->cycle;
     if (value) ir_log_flash(from, sent, in_range[from->index]);
+    if (n_links[from->index] != 0 && sent + 2 * FRAME_CYCLES > busy_until)
+        busy_until = sent + 2 * FRAME_CYCLES;
     for (int k = 0; k < n_links[from->index]; k++) {
         ir_link *l = &links[from->index][k];
         ir_edge *e = &l->edge[value ? 1 : 0];

@@ -12,6 +12,7 @@
 /* Robots advance together in windows this many cycles long, so what one
  * does is seen by the others within a window. */
 #define LOCKSTEP_CYCLES 64
+#define LOCKSTEP_CYCLES_ON_AIR 8 /* while a frame may be on the air */
 
 static robot robots[MAX_ROBOTS];
 static int profiling;
@@ -170,7 +171,8 @@ int main(int argc, char **argv) {
     ohc_attach(robots, o.robots, &o);
 
     avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)nominal_hz);
-    for (avr_cycle_count_t end = LOCKSTEP_CYCLES;; end += LOCKSTEP_CYCLES) {
+    for (avr_cycle_count_t end = 0;;) {
+        end += end < ir_channel_busy_until() ? LOCKSTEP_CYCLES_ON_AIR : LOCKSTEP_CYCLES;
         if (end > limit) end = limit;
         if (run_window(o.robots, end) || end == limit) break;
     }

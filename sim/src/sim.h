@@ -148,6 +148,10 @@ int measure_attach(robot *r, const options *o);
 
 /* ir_channel.c: every robot hears the IR LED of every other within range */
 void ir_channel_attach(robot *all, int n, const placement *p, int range_mm);
+/* The cycle until which a frame may be on the air: the robots run in finer
+ * lockstep meanwhile, so a flash reaches a receiver at most a few cycles
+ * late (a receiver times each bit; Timer1 stamps the edges). */
+avr_cycle_count_t ir_channel_busy_until(void);
 /* ir_log.c: --ir-log, the frames on the air decoded by the wire format */
 void ir_log_enable(void);
 /* A rising flash of from's IR LED; in_range names the robots it reaches. */
