@@ -24,26 +24,17 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     if (stack_bytes == 0) stack_bytes = OS_CFG_DEFAULT_STACK_BYTES;
     port_irq_state_t s = port_irq_save();
     sys_tcb *t = free_slot();
-    if (t == NULL) {
-        os_count(&os.stats.process_pool_full);
+    size_t size = t != NULL ? os_stack_alloc(t, stack_bytes) : 0;
+    if (size == 0) {
+        os_count(t == NULL ? &os.stats.process_pool_full : &os.stats.stack_pool_full);
         port_irq_restore(s);
         return SYS_E_POOL_FULL;
     }
-    size_t size;
-    os_block_count blocks;
-    uint8_t *stack = os_stack_alloc(stack_bytes, &blocks, &size);
-    if (stack == NULL) {
-        os_count(&os.stats.stack_pool_full);
-        port_irq_restore(s);
-        return SYS_E_POOL_FULL;
-    }
-    t->stack = stack;
-    t->stack_blocks = blocks;
     t->priority = priority;
     t->state = SYS_PROCESS_NEW; /* its wait is NULL: os_terminate cleared it */
     /* pid = slot | generation << 4; the generation was bumped at reaping. */
     t->pid = (sys_pid)((t->pid & 0xF0u) | (uint8_t)(t - os.threads));
-    port_context_init(&t->ctx, stack, size, fn, arg);
+    port_context_init(&t->ctx, t->stack, size, fn, arg);
     os_make_ready(t);
     if (pid != NULL) *pid = t->pid;
     os_schedule(); /* a higher priority may preempt a thread that starts one */
