@@ -19,7 +19,9 @@ static uint8_t pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
 
 /* Block numbers and counts fit in os_block_count: one byte on robots,
  * where 16-bit arithmetic doubles the code. */
-static os_block_count first_block(const sys_tcb *t) { return (os_block_count)((size_t)(t->stack - pool) / BLOCK); }
+static os_block_count first_block(const sys_tcb *t) {
+    return (os_block_count)((size_t)(t->stack - pool) / BLOCK);
+}
 
 /* Do blocks [first, first + count) lie in the pool, clear of every live
  * stack? first is in the pool or just past it; count is at most BLOCKS. */
@@ -44,7 +46,8 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
     /* The pool's start is tried for every thread without a stack (the
      * system thread first), then the end of each live stack. */
     for (const sys_tcb *o = os.threads; o != &os.threads[OS_CFG_MAX_THREADS]; o++) {
-        os_block_count at = o->stack == NULL ? 0 : (os_block_count)(first_block(o) + o->stack_blocks);
+        os_block_count at =
+            o->stack == NULL ? 0 : (os_block_count)(first_block(o) + o->stack_blocks);
         if (at < best && gap_is_free(at, need)) best = at;
     }
     if (best == BLOCKS) return 0;
