@@ -66,20 +66,27 @@ sys_pid Sys_Start_Process(void (*fn)(void)) {
                : SYS_PID_NONE;
 }
 
-void os_terminate(sys_tcb *t) {
+/* What every ending does, once t is in no ready list and waits for
+ * nothing (as the running thread is not and does not: a thread that
+ * returns needs no more). */
+static void make_zombie(sys_tcb *t) {
     if (t == os.current && os.lock_depth != 0) {
         os.lock_depth = 0;
         os_count(&os.stats.critical_leaks);
         os_fault(SYS_FAULT_CRITICAL_LEAK, t->pid);
     }
     os_subscriptions_remove_thread(t->pid);
+    t->state = SYS_PROCESS_ZOMBIE;
+    os.reap_pending = true;
+}
+
+void os_terminate(sys_tcb *t) {
     if (t == os.preempted)
         os.preempted = NULL;
     else if (t->state == SYS_PROCESS_READY || t->state == SYS_PROCESS_NEW)
         os_ready_remove(t);
     os_wait_abandon(t);
-    t->state = SYS_PROCESS_ZOMBIE;
-    os.reap_pending = true;
+    make_zombie(t);
 }
 
 /* Runs in the system thread, never on the stack it frees. */
@@ -111,7 +118,7 @@ sys_status Sys_Kill_Process(sys_pid pid) {
 
 void os_thread_exit(void) {
     port_irq_disable();
-    os_terminate(os.current);
+    make_zombie(os.current); /* running: neither ready, preempted nor waiting */
     os_schedule();
     for (;;) {
         /* unreachable: a zombie is never scheduled again */
