@@ -26,8 +26,18 @@ void os_event_queue_reset(void) { head = tail = os.queued_bytes = os.held_event 
 /* The ring index after i. */
 static inline uint8_t after(uint8_t i) { return (uint8_t)(i + 1u == QUEUE_BYTES ? 0u : i + 1u); }
 
-static inline uint8_t wrap(uint16_t index) {
-    return (uint8_t)(index >= QUEUE_BYTES ? index - QUEUE_BYTES : index);
+/* One byte in at the tail, one out at the head: out of line, as the ring
+ * is the uncommon path (the held occurrence is the common one), so a call
+ * per byte costs less flash than the wrap test inline at every use. */
+static OS_COLD void put(uint8_t byte) {
+    ring[tail] = byte;
+    tail = after(tail);
+}
+
+static OS_COLD uint8_t get(void) {
+    uint8_t byte = ring[head];
+    head = after(head);
+    return byte;
 }
 
 /* The occurrence becomes the event's kept data now, if the queue is empty
@@ -43,28 +53,28 @@ static OS_HOT bool hold(sys_event_id event, os_event_slot *slot, const void *dat
     return true;
 }
 
-/* Byte by byte with the wrap test inline: occurrences are a few bytes, so
- * this beats splitting the copy in two memcpy calls. 8-bit arithmetic
- * throughout: the ring and a record (2 + at most 253 bytes) fit in 8 bits. */
-static OS_HOT bool push(sys_event_id event, const void *data, uint8_t size) {
+/* 8-bit arithmetic throughout: the ring and a record (2 + at most 253
+ * bytes) fit in 8 bits. */
+static bool push(sys_event_id event, const void *data, uint8_t size) {
     uint8_t record = (uint8_t)(HEADER_BYTES + size);
     uint8_t used = os.queued_bytes;
     if (record > (uint8_t)(QUEUE_BYTES - used)) return false;
-    uint8_t at = tail;
-    ring[at] = event;
-    at = after(at);
-    ring[at] = size;
-    at = after(at);
+    put(event);
+    put(size);
     const uint8_t *src = (const uint8_t *)data;
-    for (uint8_t n = size; n != 0; n--) {
-        ring[at] = *src++;
-        at = after(at);
-    }
-    tail = at;
+    for (uint8_t n = size; n != 0; n--) put(*src++);
     used = (uint8_t)(used + record);
     os.queued_bytes = used;
     if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
     return true;
+}
+
+/* Out of line, so the common case - held - is a leaf that saves no
+ * registers. */
+static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, uint8_t size) {
+    if (push(event, data, size)) return SYS_OK;
+    os_count(&os.stats.event_queue_full);
+    return SYS_E_QUEUE_FULL;
 }
 
 sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
@@ -72,9 +82,8 @@ sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
     os_event_slot *slot = &os_events[event];
     if (slot->size == OS_EVENT_UNREGISTERED) return SYS_E_NOT_REGISTERED;
     if (size > slot->capacity) return SYS_E_TOO_BIG;
-    if (hold(event, slot, data, size) || push(event, data, size)) return SYS_OK;
-    os.stats.event_queue_full++;
-    return SYS_E_QUEUE_FULL;
+    if (hold(event, slot, data, size)) return SYS_OK;
+    return push_or_refuse(event, data, size);
 }
 
 static OS_HOT void describe(sys_event_id event, const os_event_slot *slot, sys_event_data *out) {
@@ -89,28 +98,20 @@ static OS_HOT void describe(sys_event_id event, const os_event_slot *slot, sys_e
  * common case, and the ring's index kept in a register across the dispatch
  * loop cost it 4 cycles (bench/avr_bench.py). */
 static OS_COLD bool pop_ring(sys_event_data *out) {
-    uint8_t at = head;
-    sys_event_id event = ring[at];
-    at = after(at);
-    uint8_t size = ring[at];
-    at = after(at);
+    sys_event_id event = get();
+    uint8_t size = get();
     os.queued_bytes = (uint8_t)(os.queued_bytes - HEADER_BYTES - size);
     os_event_slot *slot = &os_events[event]; /* the ring only holds ids that were valid */
-    bool fits = slot->size != OS_EVENT_UNREGISTERED && size <= slot->capacity;
-    if (fits) {
-        slot->size = size;
-        uint8_t *dest = slot->data;
-        for (uint8_t n = size; n != 0; n--) {
-            *dest++ = ring[at];
-            at = after(at);
-        }
-        describe(event, slot, out);
-    } else {
-        at = wrap((uint16_t)at + size);
-        os.stats.events_discarded++;
+    if (slot->size == OS_EVENT_UNREGISTERED || size > slot->capacity) {
+        for (uint8_t n = size; n != 0; n--) get(); /* skipped */
+        os_count(&os.stats.events_discarded);
+        return false;
     }
-    head = at;
-    return fits;
+    slot->size = size;
+    uint8_t *dest = slot->data;
+    for (uint8_t n = size; n != 0; n--) *dest++ = get();
+    describe(event, slot, out);
+    return true;
 }
 
 bool os_event_queue_pop(sys_event_data *out) {
@@ -125,5 +126,5 @@ bool os_event_queue_pop(sys_event_data *out) {
 void os_event_queue_forget(sys_event_id event) {
     if (!os_event_queue_holds(event)) return;
     os.held_event = NOTHING_HELD; /* its kept data goes with the registration */
-    os.stats.events_discarded++;
+    os_count(&os.stats.events_discarded);
 }

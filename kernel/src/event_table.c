@@ -33,8 +33,11 @@ static subscription *subs_head, *subs_tail;
 static bool sweep_needed;
 
 void os_event_table_reset(void) {
-    memset(os_events, 0, sizeof os_events);
-    for (unsigned i = 0; i < OS_CFG_MAX_EVENTS; i++) os_events[i].size = UNREGISTERED;
+    for (os_event_slot *slot = os_events; slot != &os_events[OS_CFG_MAX_EVENTS]; slot++) {
+        slot->data = NULL; /* no block yet: the arena starts empty */
+        slot->capacity = 0;
+        slot->size = UNREGISTERED;
+    }
     arena_used = 0;
     memset(subs, 0, sizeof subs);
     subs_head = subs_tail = NULL;

@@ -128,9 +128,10 @@ sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
 void os_switch_to(sys_tcb *next);
 
 /* stack_pool.c */
-/* A stack of at least bytes (plus the port's extra and the guard), or NULL.
- * It stays the thread's until the thread's stack pointer is cleared. */
-uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size);
+/* Give t (a free slot) a stack of at least bytes (plus the port's extra and
+ * the guard): its size, or 0 if there is no room. It stays the thread's
+ * until the thread's stack pointer is cleared. */
+size_t os_stack_alloc(sys_tcb *t, uint16_t bytes);
 #if OS_CFG_STACK_CHECK
 /* The pattern in the lowest bytes of every thread stack; checked at every
  * scheduling decision a thread makes and at every tick, so overwriting it

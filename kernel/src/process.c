@@ -24,26 +24,17 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     if (stack_bytes == 0) stack_bytes = OS_CFG_DEFAULT_STACK_BYTES;
     port_irq_state_t s = port_irq_save();
     sys_tcb *t = free_slot();
-    if (t == NULL) {
-        os_count(&os.stats.process_pool_full);
+    size_t size = t != NULL ? os_stack_alloc(t, stack_bytes) : 0;
+    if (size == 0) {
+        os_count(t == NULL ? &os.stats.process_pool_full : &os.stats.stack_pool_full);
         port_irq_restore(s);
         return SYS_E_POOL_FULL;
     }
-    size_t size;
-    os_block_count blocks;
-    uint8_t *stack = os_stack_alloc(stack_bytes, &blocks, &size);
-    if (stack == NULL) {
-        os_count(&os.stats.stack_pool_full);
-        port_irq_restore(s);
-        return SYS_E_POOL_FULL;
-    }
-    t->stack = stack;
-    t->stack_blocks = blocks;
     t->priority = priority;
     t->state = SYS_PROCESS_NEW; /* its wait is NULL: os_terminate cleared it */
     /* pid = slot | generation << 4; the generation was bumped at reaping. */
     t->pid = (sys_pid)((t->pid & 0xF0u) | (uint8_t)(t - os.threads));
-    port_context_init(&t->ctx, stack, size, fn, arg);
+    port_context_init(&t->ctx, t->stack, size, fn, arg);
     os_make_ready(t);
     if (pid != NULL) *pid = t->pid;
     os_schedule(); /* a higher priority may preempt a thread that starts one */
@@ -75,20 +66,27 @@ sys_pid Sys_Start_Process(void (*fn)(void)) {
                : SYS_PID_NONE;
 }
 
-void os_terminate(sys_tcb *t) {
+/* What every ending does, once t is in no ready list and waits for
+ * nothing (as the running thread is not and does not: a thread that
+ * returns needs no more). */
+static void make_zombie(sys_tcb *t) {
     if (t == os.current && os.lock_depth != 0) {
         os.lock_depth = 0;
         os_count(&os.stats.critical_leaks);
         os_fault(SYS_FAULT_CRITICAL_LEAK, t->pid);
     }
     os_subscriptions_remove_thread(t->pid);
+    t->state = SYS_PROCESS_ZOMBIE;
+    os.reap_pending = true;
+}
+
+void os_terminate(sys_tcb *t) {
     if (t == os.preempted)
         os.preempted = NULL;
     else if (t->state == SYS_PROCESS_READY || t->state == SYS_PROCESS_NEW)
         os_ready_remove(t);
     os_wait_abandon(t);
-    t->state = SYS_PROCESS_ZOMBIE;
-    os.reap_pending = true;
+    make_zombie(t);
 }
 
 /* Runs in the system thread, never on the stack it frees. */
@@ -120,7 +118,7 @@ sys_status Sys_Kill_Process(sys_pid pid) {
 
 void os_thread_exit(void) {
     port_irq_disable();
-    os_terminate(os.current);
+    make_zombie(os.current); /* running: neither ready, preempted nor waiting */
     os_schedule();
     for (;;) {
         /* unreachable: a zombie is never scheduled again */

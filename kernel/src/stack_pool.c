@@ -17,39 +17,48 @@ typedef char block_is_aligned[(OS_CFG_STACK_BLOCK_BYTES % PORT_STACK_ALIGN) == 0
 
 static uint8_t pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
 
-static size_t first_block(const sys_tcb *t) { return (size_t)(t->stack - pool) / BLOCK; }
+/* Block numbers and counts fit in os_block_count: one byte on robots,
+ * where 16-bit arithmetic doubles the code. */
+static os_block_count first_block(const sys_tcb *t) {
+    return (os_block_count)((size_t)(t->stack - pool) / BLOCK);
+}
 
-/* Do blocks [first, first + count) lie in the pool, clear of every live stack? */
-static bool gap_is_free(size_t first, size_t count) {
-    if (first + count > BLOCKS) return false;
+/* Do blocks [first, first + count) lie in the pool, clear of every live
+ * stack? first is in the pool or just past it; count is at most BLOCKS. */
+static bool gap_is_free(os_block_count first, os_block_count count) {
+    if (count > (os_block_count)(BLOCKS - first)) return false;
+    os_block_count end = (os_block_count)(first + count);
     for (const sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         if (t->stack == NULL) continue;
-        size_t f = first_block(t);
-        if (first < f + t->stack_blocks && f < first + count) return false;
+        os_block_count f = first_block(t);
+        if (first < (os_block_count)(f + t->stack_blocks) && f < end) return false;
     }
     return true;
 }
 
-uint8_t *os_stack_alloc(uint16_t bytes, os_block_count *blocks, size_t *size) {
+size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
     /* Blocks for bytes, the port's extra and the guard; bytes is divided
      * first, so a size near 64 KiB cannot wrap round a 16-bit size_t. */
-    size_t need = bytes / BLOCK + (bytes % BLOCK + PORT_STACK_EXTRA + OS_STACK_GUARD_BYTES + BLOCK - 1) / BLOCK;
-    size_t best = BLOCKS; /* BLOCKS: no room */
+    size_t blocks_needed = bytes / BLOCK + (bytes % BLOCK + PORT_STACK_EXTRA + OS_STACK_GUARD_BYTES + BLOCK - 1) / BLOCK;
+    if (blocks_needed > BLOCKS) return 0;
+    os_block_count need = (os_block_count)blocks_needed;
+    os_block_count best = (os_block_count)BLOCKS; /* BLOCKS: no room */
     /* The pool's start is tried for every thread without a stack (the
      * system thread first), then the end of each live stack. */
-    for (const sys_tcb *t = os.threads; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
-        size_t at = t->stack == NULL ? 0 : first_block(t) + t->stack_blocks;
+    for (const sys_tcb *o = os.threads; o != &os.threads[OS_CFG_MAX_THREADS]; o++) {
+        os_block_count at =
+            o->stack == NULL ? 0 : (os_block_count)(first_block(o) + o->stack_blocks);
         if (at < best && gap_is_free(at, need)) best = at;
     }
-    if (best == BLOCKS) return NULL;
-    uint8_t *stack = &pool[best * BLOCK];
+    if (best == BLOCKS) return 0;
+    uint8_t *stack = &pool[(size_t)best * BLOCK];
 #if OS_CFG_STACK_CHECK
     static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
     for (unsigned i = 0; i < OS_STACK_GUARD_BYTES; i++) stack[i] = guard[i]; /* stores of constants */
 #endif
-    *blocks = (os_block_count)need;
-    *size = need * BLOCK;
-    return stack;
+    t->stack = stack;
+    t->stack_blocks = need;
+    return (size_t)need * BLOCK;
 }
 
 #if OS_CFG_STACK_CHECK
