@@ -7,7 +7,6 @@
 
 #include "openswarm/port_arch.h"
 
-using Faults = KernelTest;
 
 static std::atomic<int> hook_calls{0};
 static std::atomic<int> hook_fault{0};
@@ -25,13 +24,31 @@ __attribute__((no_sanitize_address, noinline)) static void overflow_stack(size_t
     for (size_t i = 256; i < reach; i++) p[-(ptrdiff_t)i] = 0xEE;
 }
 
+struct Faults : KernelTest {
+    // While booting: a thread that overflows its 256-byte stack, then spins.
+    // A spacer below its stack, killed before the overflow, makes the
+    // overflow land in free pool memory rather than in a live stack.
+    sys_pid start_overflowing_thread(std::atomic<bool> &overflowed, std::atomic<long> &spins) {
+        sys_pid spacer = spawn([] { Sys_Sleep(1000000); }, 0, 256);
+        sys_pid victim = spawn(
+            [&] {
+                overflow_stack(256);
+                overflowed = true;
+                for (;;) spins++;
+            },
+            0, 256);
+        Sys_Kill_Process(spacer);
+        return victim;
+    }
+};
+
 #if OS_CFG_STACK_CHECK
 TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
     testing::internal::CaptureStderr(); // the host port reports faults there
     hook_calls = 0;
     event_fault = 0;
     std::atomic<bool> overflowed{false};
-    std::atomic<long> bystander{0};
+    std::atomic<long> spins{0}, bystander{0};
     sys_pid victim = 0;
     boot([&] {
         Sys_Set_FaultHook([](sys_fault f, sys_pid pid) {
@@ -48,18 +65,7 @@ TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
                                    return true;
                                },
                                nullptr);
-        // A spacer below the victim's stack, killed before the overflow, so
-        // the overflow lands in free pool memory rather than a live stack.
-        sys_pid spacer = spawn([] { Sys_Sleep(1000000); }, 0, 256);
-        victim = spawn(
-            [&] {
-                overflow_stack(256);
-                overflowed = true;
-                for (;;) {
-                }
-            },
-            0, 256);
-        Sys_Kill_Process(spacer);
+        victim = start_overflowing_thread(overflowed, spins);
         spawn([&] {
             for (;;) bystander++;
         });
@@ -100,15 +106,7 @@ TEST_F(Faults, StackOverflowGoesUnnoticedWithoutTheCheck) {
                                    return true;
                                },
                                nullptr);
-        sys_pid spacer = spawn([] { Sys_Sleep(1000000); }, 0, 256);
-        victim = spawn(
-            [&] {
-                overflow_stack(256);
-                overflowed = true;
-                for (;;) spins++;
-            },
-            0, 256);
-        Sys_Kill_Process(spacer);
+        victim = start_overflowing_thread(overflowed, spins);
         spawn([] {
             for (;;) {
             }
