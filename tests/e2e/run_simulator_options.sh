@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # End to end: `openswarm run` hands the simulator what it is given - the
-# overhead controller's messages, the profiler, and anything after --.
+# overhead controller's messages, the profiler, the IR log, the robots'
+# clock spread, and anything after --.
 #   run_simulator_options.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -14,9 +15,24 @@ grep -q "profile of [0-9]* cycles, by function" run.log
 grep -q "(asleep)" run.log
 last=$(grep -o "^\[ *[0-9.]* s\] led" run.log | tail -1 | grep -o "[0-9.]*" | head -1)
 awk -v t="$last" 'BEGIN { exit !(t <= 0.55) }' || { echo "the LED changed at $last s, after SLEEP"; cat run.log; exit 1; }
+# Two robots with clocks up to 1% fast or slow: the blue LED, off at 0.5 s
+# of each robot's own time, goes off more than 5 ms apart.
+"$openswarm" run --time 0.6 --robots 2 --clock-spread 1 >spread.log 2>&1
+off() { grep "^\[robot $1\] .* led    red 0 green 0 blue 0" spread.log | grep -o "[0-9]*\.[0-9]*" | head -1; }
+awk -v a="$(off 0)" -v b="$(off 1)" 'BEGIN { d = a - b; exit !(d > 0.005 || d < -0.005) }' \
+    || { echo "the robots' clocks agree"; cat spread.log; exit 1; }
+# The IR log shows the frames a messaging app sends, decoded.
+cd .. && "$openswarm" new talk --template disperse >/dev/null && cd talk
+"$openswarm" run --time 1.2 --robots 2 --ir-log >air.log 2>&1
+grep -q "^\[robot 0\] \[ *[0-9.]* s\] ir     .* crc ok, pulses within [0-9]* cycles of their slots, in range of 1$" air.log \
+    || { echo "no decoded frame from robot 0"; cat air.log; exit 1; }
 # Something the simulator refuses is reported with its own message.
 if "$openswarm" run --time 1 -- --light nonsense >bad.log 2>&1; then
     echo "a bad simulator option was accepted"; cat bad.log; exit 1
 fi
 grep -q -- "--light 'nonsense'" bad.log
+if "$openswarm" run --time 1 --clock-spread 9 >spread.log 2>&1; then
+    echo "a clock spread of 9% was accepted"; cat spread.log; exit 1
+fi
+grep -q -- "--clock-spread '9': expected a percentage from 0 to 5" spread.log
 echo "1 passed, 0 failed"

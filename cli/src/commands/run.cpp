@@ -21,6 +21,8 @@ struct RunOptions {
     std::string vcd;
     std::vector<std::string> ohc; // overhead-controller messages, MSG@SECONDS
     bool profile = false;
+    bool ir_log = false;
+    std::string clock_spread; // percent; empty: the simulator's default (none)
     std::vector<std::string> simulator_options; // after --, passed as they are
 };
 
@@ -46,6 +48,8 @@ int run_app(const RunOptions &o, const Paths &paths) {
     if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
     for (const auto &message : o.ohc) argv.insert(argv.end(), {"--ohc", message});
     if (o.profile) argv.push_back("--profile");
+    if (o.ir_log) argv.push_back("--ir-log");
+    if (!o.clock_spread.empty()) argv.insert(argv.end(), {"--clock-spread", o.clock_spread});
     argv.insert(argv.end(), o.simulator_options.begin(), o.simulator_options.end());
     argv.push_back(built->image.string());
     std::printf("Running %s in the simulator for %s s\n", built->image.filename().string().c_str(),
@@ -81,6 +85,11 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "calib-left:70, ...; repeatable)")
         ->type_name("MSG@SECONDS");
     cmd->add_flag("--profile", o->profile, "print where the CPU cycles went, by function");
+    cmd->add_flag("--ir-log", o->ir_log,
+                  "print every frame the robots send, decoded by the Kilobot wire format");
+    cmd->add_option("--clock-spread", o->clock_spread,
+                    "the robots' clocks run fast or slow by up to PCT percent (0-5), as real ones")
+        ->type_name("PCT");
     cmd->add_option("simulator-options", o->simulator_options,
                     "after --: more openswarm-sim options, passed as they are (openswarm-sim --help), "
                     "e.g. -- --light 500 --uid 7")
