@@ -53,6 +53,13 @@ const KernelSetting kernel_settings[] = {
     {"hal_max_value", "OS_CFG_HAL_MAX_VALUE", 1, 253},
 };
 
+// The kernel's optional features openswarm.json may turn off (true/false,
+// written as 1/0): their flash goes with them.
+const KernelSetting kernel_switches[] = {
+    {"stack_check", "OS_CFG_STACK_CHECK", 0, 1},
+    {"clock_event", "OS_CFG_CLOCK_EVENT", 0, 1},
+};
+
 const std::map<std::string, unsigned> payload_types = {
     {"none", 0}, {"int8", 1}, {"uint8", 1}, {"int16", 2}, {"uint16", 2}, {"int32", 4}, {"uint32", 4},
 };
@@ -109,9 +116,17 @@ void load_kernel(const fs::path &file, const json &k, AppConfig &c) {
     if (!k.is_object()) fail(file, "kernel", "expected an object { ... }, found " + found(k));
     std::vector<std::string> allowed = {"scheduler", "time_slice_ms"};
     for (const auto &s : kernel_settings) allowed.push_back(s.key);
+    for (const auto &s : kernel_switches) allowed.push_back(s.key);
     check_keys(file, "kernel", k, allowed);
     for (const auto &s : kernel_settings)
         if (k.contains(s.key)) c.kernel[s.key] = number_at(file, std::string("kernel.") + s.key, k[s.key], s.min, s.max);
+    for (const auto &s : kernel_switches) {
+        if (!k.contains(s.key)) continue;
+        const json &on = k[s.key];
+        if (!on.is_boolean())
+            fail(file, std::string("kernel.") + s.key, "expected true or false, found " + found(on));
+        c.kernel[s.key] = on.get<bool>() ? 1 : 0;
+    }
     if (k.contains("time_slice_ms")) c.time_slice_ms = number_at(file, "kernel.time_slice_ms", k["time_slice_ms"], 1, 1000);
     if (k.contains("scheduler")) {
         c.scheduler = string_at(file, "kernel.scheduler", k["scheduler"], "\"round-robin\" or \"priority\"");
@@ -243,8 +258,10 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
 
 const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros() {
     static std::vector<std::pair<std::string, std::string>> all;
-    if (all.empty())
+    if (all.empty()) {
         for (const auto &s : kernel_settings) all.emplace_back(s.key, s.macro);
+        for (const auto &s : kernel_switches) all.emplace_back(s.key, s.macro);
+    }
     return all;
 }
 

@@ -62,6 +62,8 @@ printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 40}}' > ke
 expect 2 "\"kernel.max_threads\": expected a whole number 2..16, found number 40" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "kernel": {"scheduler": "priorty"}}' > keep/openswarm.json
 expect 2 "\"kernel.scheduler\": unknown scheduler.*did you mean \"priority\"" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "kernel": {"stack_check": 0}}' > keep/openswarm.json
+expect 2 "\"kernel.stack_check\": expected true or false, found number 0" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "events": [{"name": "hop", "type": "int61"}]}' > keep/openswarm.json
 expect 2 "\"events\[0\].type\": unknown type \"int61\".*did you mean \"int16\"" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "events": [{"name": "a"}, {"name": "a"}]}' > keep/openswarm.json
