@@ -73,7 +73,7 @@ typedef struct os_kernel {
     const sys_scheduler *policy;
     uint32_t now_ms;
     uint32_t timeout_next; /* the nearest deadline, or a time already past if none (wait.c) */
-    uint32_t switches;
+    uint8_t switches[4]; /* thread-to-thread switches, lowest byte first (scheduler.c) */
     uint16_t slice_ms;
     uint16_t slice_left;
     uint8_t queued_bytes; /* in the event queue's ring */

@@ -185,7 +185,8 @@ sys_status Sys_Set_Priority(sys_pid pid, uint8_t priority) {
 
 uint32_t Sys_Get_SwitchCount(void) {
     port_irq_state_t s = port_irq_save();
-    uint32_t n = os.switches;
+    uint32_t n = 0;
+    for (unsigned i = sizeof os.switches; i-- != 0;) n = n << 8 | os.switches[i];
     port_irq_restore(s);
     return n;
 }

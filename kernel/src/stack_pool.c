@@ -3,8 +3,8 @@
  * The live threads' control blocks are the only record of what is used:
  * each holds its stack and its length in blocks, and a thread keeps its
  * stack until it is reaped. So the pool needs no bitmap. A new stack takes
- * the lowest gap large enough (first fit); such a gap starts at the pool's
- * start or right after a live stack, so those are the only places tried.
+ * the lowest gap large enough (first fit): the search starts at the pool's
+ * start and jumps to the end of each live stack in the way.
  * With OS_CFG_STACK_CHECK each stack's lowest bytes hold a guard pattern:
  * a thread that overflows its stack overwrites it, and the kernel checks it
  * at every scheduling decision a thread makes and at every tick. */
@@ -23,17 +23,18 @@ static os_block_count first_block(const sys_tcb *t) {
     return (os_block_count)((size_t)(t->stack - pool) / BLOCK);
 }
 
-/* Do blocks [first, first + count) lie in the pool, clear of every live
- * stack? first is in the pool or just past it; count is at most BLOCKS. */
-static bool gap_is_free(os_block_count first, os_block_count count) {
-    if (count > (os_block_count)(BLOCKS - first)) return false;
+/* Where the search for count free blocks goes on after first: 0 if
+ * blocks [first, first + count) lie clear of every live stack, else the end
+ * of a live stack that overlaps them (always past first). */
+static os_block_count past_overlap(os_block_count first, os_block_count count) {
     os_block_count end = (os_block_count)(first + count);
     for (const sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         if (t->stack == NULL) continue;
         os_block_count f = first_block(t);
-        if (first < (os_block_count)(f + t->stack_blocks) && f < end) return false;
+        os_block_count f_end = (os_block_count)(f + t->stack_blocks);
+        if (first < f_end && f < end) return f_end;
     }
-    return true;
+    return 0;
 }
 
 size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
@@ -42,16 +43,11 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
     size_t blocks_needed = bytes / BLOCK + (bytes % BLOCK + PORT_STACK_EXTRA + OS_STACK_GUARD_BYTES + BLOCK - 1) / BLOCK;
     if (blocks_needed > BLOCKS) return 0;
     os_block_count need = (os_block_count)blocks_needed;
-    os_block_count best = (os_block_count)BLOCKS; /* BLOCKS: no room */
-    /* The pool's start is tried for every thread without a stack (the
-     * system thread first), then the end of each live stack. */
-    for (const sys_tcb *o = os.threads; o != &os.threads[OS_CFG_MAX_THREADS]; o++) {
-        os_block_count at =
-            o->stack == NULL ? 0 : (os_block_count)(first_block(o) + o->stack_blocks);
-        if (at < best && gap_is_free(at, need)) best = at;
+    os_block_count start = 0;
+    for (os_block_count next; (next = past_overlap(start, need)) != 0; start = next) {
+        if (need > (os_block_count)(BLOCKS - next)) return 0; /* no room */
     }
-    if (best == BLOCKS) return 0;
-    uint8_t *stack = &pool[(size_t)best * BLOCK];
+    uint8_t *stack = &pool[(size_t)start * BLOCK];
 #if OS_CFG_STACK_CHECK
     static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
     for (unsigned i = 0; i < OS_STACK_GUARD_BYTES; i++) stack[i] = guard[i]; /* stores of constants */

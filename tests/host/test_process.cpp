@@ -179,6 +179,24 @@ TEST_F(Process, YieldAlternatesBetweenReadyThreads) {
     EXPECT_EQ("a b a b a b", joined());
 }
 
+// Each yield to the other ready thread and back is two switches, counted
+// past 255 and 511 (the count's low byte carries into the others).
+TEST_F(Process, SwitchCountCountsEverySwitchPastItsLowByte) {
+    uint32_t counted = 0;
+    boot([&] {
+        spawn([&] {
+            uint32_t before = Sys_Get_SwitchCount();
+            for (int i = 0; i < 300; i++) Sys_Yield();
+            counted = Sys_Get_SwitchCount() - before;
+        });
+        spawn([] {
+            for (int i = 0; i < 400; i++) Sys_Yield(); // outlasts the first
+        });
+    });
+    settle();
+    EXPECT_EQ(600u, counted);
+}
+
 TEST_F(Process, YieldAloneReturnsAtOnce) {
     boot([&] {
         spawn([] {
