@@ -47,6 +47,8 @@ struct ir_link {
     uint32_t high_gain_mv, low_gain_mv; /* the receiver's distance sensors, from this sender */
     ir_edge edge[2];                    /* [0] fall, [1] rise */
     avr_cycle_count_t next_free;        /* earliest receiver cycle for the next edge */
+    double loss;                        /* chance that a frame does not reach it (--ir-loss) */
+    avr_cycle_count_t lost_until;       /* sender cycle: the current frame's edges are lost */
 };
 
 /* links[s][0 .. n_links[s] - 1]: the receivers sender s reaches. */
@@ -58,6 +60,11 @@ static char in_range[MAX_ROBOTS][MAX_ROBOTS * 4];
  * times: the sender's cycles are within a few percent of the others'). */
 static avr_cycle_count_t busy_until;
 #define FRAME_CYCLES (131 * 269)
+/* A sender's flash this long after its last starts a new frame (within a
+ * frame, pulses are at most 9 slots apart). */
+#define FRAME_GAP_CYCLES (12 * 269)
+static avr_cycle_count_t last_flash[MAX_ROBOTS];
+static uint32_t loss_random = 0x2545F491u; /* fixed: every run loses the same frames */
 
 avr_cycle_count_t ir_channel_busy_until(void) { return busy_until; }
 /* The link each robot's distance sensors read now, NULL before any. */
@@ -84,6 +91,26 @@ static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void
     return 0;
 }
 
+/* A number in [0, 1) from a fixed xorshift sequence. */
+static double next_random(void) {
+    loss_random ^= loss_random << 13;
+    loss_random ^= loss_random >> 17;
+    loss_random ^= loss_random << 5;
+    return loss_random / 4294967296.0;
+}
+
+/* At a frame's start pulse, each receiver in range loses the whole frame
+ * or none of it. */
+static void draw_losses(robot *from, avr_cycle_count_t sent) {
+    int starts = last_flash[from->index] == 0 || sent - last_flash[from->index] > FRAME_GAP_CYCLES;
+    last_flash[from->index] = sent;
+    if (!starts) return;
+    for (int k = 0; k < n_links[from->index]; k++) {
+        ir_link *l = &links[from->index][k];
+        l->lost_until = l->loss > 0 && next_random() < l->loss ? sent + FRAME_CYCLES : 0;
+    }
+}
+
 /* Cycle c of robot from's clock on robot to's (--clock-spread). */
 static avr_cycle_count_t on_clock_of(const robot *to, const robot *from, avr_cycle_count_t c) {
     uint32_t f_to = to->avr->frequency, f_from = from->avr->frequency;
@@ -94,11 +121,15 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     robot *from = param;
     avr_cycle_count_t sent = from->avr->cycle;
-    if (value) ir_log_flash(from, sent, in_range[from->index]);
+    if (value) {
+        ir_log_flash(from, sent, in_range[from->index]);
+        draw_losses(from, sent);
+    }
     if (n_links[from->index] != 0 && sent + 2 * FRAME_CYCLES > busy_until)
         busy_until = sent + 2 * FRAME_CYCLES;
     for (int k = 0; k < n_links[from->index]; k++) {
         ir_link *l = &links[from->index][k];
+        if (sent < l->lost_until) continue; /* neither heard nor sensed as carrier */
         ir_edge *e = &l->edge[value ? 1 : 0];
         robot *to = l->to;
         avr_cycle_count_t now = to->avr->cycle;
@@ -126,7 +157,7 @@ static uint32_t millivolts_of(const robot *r, int reading) {
 }
 
 /* List the receivers sender s reaches, with what their sensors read. */
-static void link_sender(robot *all, int n, int s, const placement *p, int range_mm) {
+static void link_sender(robot *all, int n, int s, const placement *p, int range_mm, double loss_pct) {
     for (int j = 0; j < n; j++) {
         double mm = placement_distance(p, s, j);
         if (j == s || mm > range_mm) continue;
@@ -136,18 +167,19 @@ static void link_sender(robot *all, int n, int s, const placement *p, int range_
         l->edge[1] = (ir_edge){l, LIT_MV};
         l->high_gain_mv = millivolts_of(l->to, ir_high_gain_reading((int)lround(mm)));
         l->low_gain_mv = millivolts_of(l->to, ir_low_gain_reading((int)lround(mm)));
+        l->loss = loss_pct / 100.0 * (mm / range_mm) * (mm / range_mm);
         size_t used = strlen(in_range[s]);
         snprintf(in_range[s] + used, sizeof in_range[s] - used, "%s%d", used ? ", " : "", j);
     }
 }
 
-void ir_channel_attach(robot *all, int n, const placement *p, int range_mm) {
+void ir_channel_attach(robot *all, int n, const placement *p, int range_mm, double loss_pct) {
     for (int i = 0; i < n; i++) {
         robot *r = &all[i];
         avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
                                 tx_pin, r);
         set_input(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1, AIN1_MV);
         set_input(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, 0);
-        link_sender(all, n, i, p, range_mm);
+        link_sender(all, n, i, p, range_mm, loss_pct);
     }
 }

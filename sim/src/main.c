@@ -166,7 +166,7 @@ int main(int argc, char **argv) {
     }
     for (int i = 0; i < o.robots; i++)
         if (setup_robot(&robots[i], i, &o, csv) != 0) return EXIT_USAGE;
-    ir_channel_attach(robots, o.robots, &o.place, o.ir_range_mm);
+    ir_channel_attach(robots, o.robots, &o.place, o.ir_range_mm, o.ir_loss_pct);
     if (o.ir_log) ir_log_enable();
     ohc_attach(robots, o.robots, &o);
 

@@ -38,6 +38,9 @@ static void usage(FILE *out) {
             "                       '#' starts a comment; --robots defaults to the count\n"
             "      --ir-range MM    a robot hears senders at most MM away (default 100,\n"
             "                       a Kilobot's IR range), 10..1000\n"
+            "      --ir-loss PCT    a frame is lost to a receiver at the --ir-range's edge with\n"
+            "                       PCT percent chance, less closer by (distance/range)^2;\n"
+            "                       whole frames, a fixed sequence: every run loses the same\n"
             "      --clock-spread PCT  the robots' clocks differ: each runs fast or slow by up\n"
             "                       to PCT percent (0..5), spread evenly over the robots in a\n"
             "                       fixed order; 0 (default): all exactly at the ELF's clock\n"
@@ -89,6 +92,18 @@ static int parse_calibration(const char *text, options *o) {
         }
     }
     memcpy(o->calibration, v, sizeof v);
+    return 0;
+}
+
+static int parse_ir_loss(const char *text, options *o) {
+    char *end;
+    o->ir_loss_pct = strtod(text, &end);
+    if (*end == '%') end++;
+    if (*end != '\0' || !(o->ir_loss_pct >= 0 && o->ir_loss_pct <= 100)) {
+        fprintf(stderr, "openswarm-sim: --ir-loss '%s': expected a percentage from 0 to 100, "
+                        "e.g. --ir-loss 20\n", text);
+        return -1;
+    }
     return 0;
 }
 
@@ -145,6 +160,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"line", required_argument, 0, 'N'},       {"positions", required_argument, 0, 'P'},
         {"ir-range", required_argument, 0, 'I'},   {"charging", no_argument, 0, 'H'},
         {"ir-log", no_argument, 0, 'R'},           {"clock-spread", required_argument, 0, 'S'},
+        {"ir-loss", required_argument, 0, 'X'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -167,6 +183,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
         case 'R': o->ir_log = 1; break;
         case 'S': if (parse_clock_spread(optarg, o) != 0) return -1; break;
+        case 'X': if (parse_ir_loss(optarg, o) != 0) return -1; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'F': o->profile = 1; break;

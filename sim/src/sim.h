@@ -68,6 +68,7 @@ typedef struct options {
     int ir_range_mm;    /* a robot hears senders this close or closer */
     int ir_log;         /* print every frame on the air, decoded */
     double clock_spread_pct; /* robots' clocks differ by up to this, either way */
+    double ir_loss_pct;      /* a frame's chance to be lost at the range's edge */
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
@@ -147,7 +148,9 @@ void board_configure(avr_t *avr, const options *o, int index);
 int measure_attach(robot *r, const options *o);
 
 /* ir_channel.c: every robot hears the IR LED of every other within range */
-void ir_channel_attach(robot *all, int n, const placement *p, int range_mm);
+/* loss_pct: the chance, in percent, that a frame is lost to a receiver at
+ * the range's edge; closer, it falls with the distance squared. */
+void ir_channel_attach(robot *all, int n, const placement *p, int range_mm, double loss_pct);
 /* The cycle until which a frame may be on the air: the robots run in finer
  * lockstep meanwhile, so a flash reaches a receiver at most a few cycles
  * late (a receiver times each bit; Timer1 stamps the edges). */

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End to end: `openswarm run` hands the simulator what it is given - the
 # overhead controller's messages, the profiler, the IR log, the robots'
-# clock spread, and anything after --.
+# clock spread, the IR loss, and anything after --.
 #   run_simulator_options.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -26,6 +26,11 @@ cd .. && "$openswarm" new talk --template disperse >/dev/null && cd talk
 "$openswarm" run --time 1.2 --robots 2 --ir-log >air.log 2>&1
 grep -q "^\[robot 0\] \[ *[0-9.]* s\] ir     .* crc ok, pulses within [0-9]* cycles of their slots, in range of 1$" air.log \
     || { echo "no decoded frame from robot 0"; cat air.log; exit 1; }
+grep -q "led    red 3 green 0 blue 0" air.log || { echo "nobody heard anybody"; cat air.log; exit 1; }
+# Every frame lost at the range's edge: frames go out, nobody turns away.
+"$openswarm" run --time 1.2 --robots 2 --distance 100 --ir-loss 100 --ir-log >lost.log 2>&1
+grep -q " ir     .* crc ok" lost.log
+if grep -q "led    red 3" lost.log; then echo "a robot heard a lost frame"; cat lost.log; exit 1; fi
 # Something the simulator refuses is reported with its own message.
 if "$openswarm" run --time 1 -- --light nonsense >bad.log 2>&1; then
     echo "a bad simulator option was accepted"; cat bad.log; exit 1

@@ -23,6 +23,7 @@ struct RunOptions {
     bool profile = false;
     bool ir_log = false;
     std::string clock_spread; // percent; empty: the simulator's default (none)
+    std::string ir_loss;      // percent at the range's edge; empty: none
     std::vector<std::string> simulator_options; // after --, passed as they are
 };
 
@@ -50,6 +51,7 @@ int run_app(const RunOptions &o, const Paths &paths) {
     if (o.profile) argv.push_back("--profile");
     if (o.ir_log) argv.push_back("--ir-log");
     if (!o.clock_spread.empty()) argv.insert(argv.end(), {"--clock-spread", o.clock_spread});
+    if (!o.ir_loss.empty()) argv.insert(argv.end(), {"--ir-loss", o.ir_loss});
     argv.insert(argv.end(), o.simulator_options.begin(), o.simulator_options.end());
     argv.push_back(built->image.string());
     std::printf("Running %s in the simulator for %s s\n", built->image.filename().string().c_str(),
@@ -89,6 +91,9 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                   "print every frame the robots send, decoded by the Kilobot wire format");
     cmd->add_option("--clock-spread", o->clock_spread,
                     "the robots' clocks run fast or slow by up to PCT percent (0-5), as real ones")
+        ->type_name("PCT");
+    cmd->add_option("--ir-loss", o->ir_loss,
+                    "lose PCT percent of the frames at the IR range's edge, fewer closer in")
         ->type_name("PCT");
     cmd->add_option("simulator-options", o->simulator_options,
                     "after --: more openswarm-sim options, passed as they are (openswarm-sim --help), "
