@@ -95,28 +95,19 @@ static int parse_calibration(const char *text, options *o) {
     return 0;
 }
 
-static int parse_ir_loss(const char *text, options *o) {
+/* A percentage from 0 to max, "20" or "20%"; -1 with a message naming the
+ * option and an example. */
+static int percentage(const char *option, const char *text, double max, const char *example,
+                      double *out) {
     char *end;
-    o->ir_loss_pct = strtod(text, &end);
+    double v = strtod(text, &end);
     if (*end == '%') end++;
-    if (*end != '\0' || !(o->ir_loss_pct >= 0 && o->ir_loss_pct <= 100)) {
-        fprintf(stderr, "openswarm-sim: --ir-loss '%s': expected a percentage from 0 to 100, "
-                        "e.g. --ir-loss 20\n", text);
+    if (*end != '\0' || !(v >= 0 && v <= max)) {
+        fprintf(stderr, "openswarm-sim: %s '%s': expected a percentage from 0 to %g, e.g. %s %s\n",
+                option, text, max, option, example);
         return -1;
     }
-    return 0;
-}
-
-static int parse_clock_spread(const char *text, options *o) {
-    char *end;
-    o->clock_spread_pct = strtod(text, &end);
-    if (*end == '%') end++;
-    if (*end != '\0' || !(o->clock_spread_pct >= 0 && o->clock_spread_pct <= 5)) {
-        fprintf(stderr, "openswarm-sim: --clock-spread '%s': expected a percentage from 0 to 5, "
-                        "e.g. --clock-spread 1 (a Kilobot's calibrated oscillator is within about "
-                        "1%%)\n", text);
-        return -1;
-    }
+    *out = v;
     return 0;
 }
 
@@ -182,8 +173,8 @@ int parse_options(int argc, char **argv, options *o) {
         case 'P': place.positions = optarg; break;
         case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
         case 'R': o->ir_log = 1; break;
-        case 'S': if (parse_clock_spread(optarg, o) != 0) return -1; break;
-        case 'X': if (parse_ir_loss(optarg, o) != 0) return -1; break;
+        case 'S': if (percentage("--clock-spread", optarg, 5, "1", &o->clock_spread_pct) != 0) return -1; break;
+        case 'X': if (percentage("--ir-loss", optarg, 100, "20", &o->ir_loss_pct) != 0) return -1; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'F': o->profile = 1; break;
