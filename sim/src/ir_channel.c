@@ -54,8 +54,10 @@ struct ir_link {
 /* links[s][0 .. n_links[s] - 1]: the receivers sender s reaches. */
 static ir_link links[MAX_ROBOTS][MAX_ROBOTS - 1];
 static int n_links[MAX_ROBOTS];
-/* The same, as text for --ir-log: "1, 2". */
+/* The same, as text for --ir-log: "1, 2"; and for the frame on the air,
+ * with the receivers --ir-loss took it from: "1, 2; lost at 2". */
 static char in_range[MAX_ROBOTS][MAX_ROBOTS * 4];
+static char frame_reach[MAX_ROBOTS][MAX_ROBOTS * 8 + 16];
 /* Until about this cycle a frame may be on the air (a flash plus two frame
  * times: the sender's cycles are within a few percent of the others'). */
 static avr_cycle_count_t busy_until;
@@ -105,9 +107,16 @@ static void draw_losses(robot *from, avr_cycle_count_t sent) {
     int starts = last_flash[from->index] == 0 || sent - last_flash[from->index] > FRAME_GAP_CYCLES;
     last_flash[from->index] = sent;
     if (!starts) return;
+    char *lost = frame_reach[from->index];
+    strcpy(lost, in_range[from->index]);
+    const char *sep = "; lost at ";
     for (int k = 0; k < n_links[from->index]; k++) {
         ir_link *l = &links[from->index][k];
         l->lost_until = l->loss > 0 && next_random() < l->loss ? sent + FRAME_CYCLES : 0;
+        if (l->lost_until == 0) continue;
+        size_t used = strlen(lost);
+        snprintf(lost + used, sizeof frame_reach[0] - used, "%s%d", sep, l->to->index);
+        sep = ", ";
     }
 }
 
@@ -122,7 +131,7 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     robot *from = param;
     avr_cycle_count_t sent = from->avr->cycle;
     if (value) {
-        ir_log_flash(from, sent, in_range[from->index]);
+        ir_log_flash(from, sent, frame_reach[from->index]); /* ends a frame, or starts one */
         draw_losses(from, sent);
     }
     if (n_links[from->index] != 0 && sent + 2 * FRAME_CYCLES > busy_until)
