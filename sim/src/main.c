@@ -167,6 +167,9 @@ int main(int argc, char **argv) {
     for (int i = 0; i < o.robots; i++)
         if (setup_robot(&robots[i], i, &o, csv) != 0) return EXIT_USAGE;
     ir_channel_attach(robots, o.robots, &o.place, o.ir_range_mm, o.ir_loss_pct);
+    if (o.robots > 1 && !o.quiet) /* "[robot 0]" is an index; programs see the uid */
+        fprintf(stderr, "openswarm-sim: robots 0..%d have uids %d..%d\n", o.robots - 1, o.uid,
+                o.uid + o.robots - 1);
     if (o.ir_log) ir_log_enable();
     ohc_attach(robots, o.robots, &o);
 
