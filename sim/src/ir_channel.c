@@ -29,7 +29,6 @@
 #include "sim.h"
 
 #define AIN1_MV 500 /* the comparator's threshold */
-#define LIT_MV 1000
 #define EDGE_GAP 8
 
 typedef struct ir_link ir_link;
@@ -61,10 +60,10 @@ static char frame_reach[MAX_ROBOTS][MAX_ROBOTS * 8 + 16];
 /* Until about this cycle a frame may be on the air (a flash plus two frame
  * times: the sender's cycles are within a few percent of the others'). */
 static avr_cycle_count_t busy_until;
-#define FRAME_CYCLES (131 * 269)
+#define FRAME_CYCLES ((IR_FRAME_SLOTS + 1) * IR_BIT_CYCLES)
 /* A sender's flash this long after its last starts a new frame (within a
  * frame, pulses are at most 9 slots apart). */
-#define FRAME_GAP_CYCLES (12 * 269)
+#define FRAME_GAP_CYCLES (12 * IR_BIT_CYCLES)
 static avr_cycle_count_t last_flash[MAX_ROBOTS];
 static uint32_t loss_random = 0x2545F491u; /* fixed: every run loses the same frames */
 
@@ -173,7 +172,7 @@ static void link_sender(robot *all, int n, int s, const placement *p, int range_
         ir_link *l = &links[s][n_links[s]++];
         l->to = &all[j];
         l->edge[0] = (ir_edge){l, 0};
-        l->edge[1] = (ir_edge){l, LIT_MV};
+        l->edge[1] = (ir_edge){l, IR_LIT_MV};
         l->high_gain_mv = millivolts_of(l->to, ir_high_gain_reading((int)lround(mm)));
         l->low_gain_mv = millivolts_of(l->to, ir_low_gain_reading((int)lround(mm)));
         l->loss = loss_pct / 100.0 * (mm / range_mm) * (mm / range_mm);

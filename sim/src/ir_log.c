@@ -4,29 +4,22 @@
  * a robot sends is checked against the format classic robots and the
  * overhead controller use.
  *
- * Slots are one bit time (269 cycles at 8 MHz) from the start pulse: the
- * stop pulse in slot 9 and nothing between (slots 1-8), then 12 bytes of 10
- * slots: a start bit (1), 8 data bits LSB first, a stop bit (1). The frame
- * is reported at its last stop bit, or as broken when it stops short or a
+ * Slots (sim.h's IR_* format) count from the start pulse. The frame is
+ * reported at its last stop bit, or as broken when it stops short or a
  * pulse falls outside the format: the bytes (9 data, the type), whether the
- * CRC-16 CCITT (seed 0xFFFF) over the first 10 bytes matches the last two,
- * how far the worst pulse lay from its slot (counted from the start pulse),
- * and who is in range. */
+ * CRC matches the last two, how far the worst pulse lay from its slot, and
+ * who is in range. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "sim.h"
 
-#define BIT_CYCLES 269
-#define HEADER_SLOTS 10
-#define FRAME_BYTES 12
-#define SLOTS (HEADER_SLOTS + FRAME_BYTES * 10)
-#define OFF_CYCLES (BIT_CYCLES / 4) /* a pulse this far from its slot is off the format */
+#define OFF_CYCLES (IR_BIT_CYCLES / 4) /* a pulse this far from its slot is off the format */
 
 typedef struct air_frame {
     avr_cycle_count_t start; /* the start pulse's cycle; 0: no frame under way */
     int last_slot;
-    uint8_t bytes[FRAME_BYTES];
+    uint8_t bytes[IR_FRAME_BYTES];
     int worst;          /* cycles between a pulse and its slot, at most */
     const char *broken; /* what was wrong, NULL: nothing yet */
 } air_frame;
@@ -36,28 +29,16 @@ static int enabled;
 
 void ir_log_enable(void) { enabled = 1; }
 
-/* CRC-16 CCITT, reflected (x^16 + x^12 + x^5 + 1 as 0x8408), bit by bit:
- * the firmware uses avr-libc's table-free routine, this is worked out
- * independently of it. */
-static uint16_t crc_ccitt(const uint8_t *bytes, int n) {
-    uint16_t crc = 0xFFFF;
-    for (int i = 0; i < n; i++) {
-        crc ^= bytes[i];
-        for (int b = 0; b < 8; b++) crc = (crc & 1u) ? (uint16_t)((crc >> 1) ^ 0x8408u) : (uint16_t)(crc >> 1);
-    }
-    return crc;
-}
-
 static void report(const robot *from, const air_frame *f, const char *in_range) {
     double s = (double)f->start / (double)from->avr->frequency;
     printf("%s[%10.6f s] ir     ", from->console.prefix, s);
     for (int i = 0; i < 9; i++) printf("%02x ", f->bytes[i]);
-    uint16_t crc = (uint16_t)(f->bytes[10] | f->bytes[11] << 8);
+    uint16_t crc = (uint16_t)(f->bytes[IR_CRC_BYTES] | f->bytes[IR_CRC_BYTES + 1] << 8);
     if (f->broken != NULL)
         printf("type %02x BROKEN (%s, after slot %d)", f->bytes[9], f->broken, f->last_slot);
     else
         printf("type %02x crc %s, pulses within %d cycles of their slots", f->bytes[9],
-               crc == crc_ccitt(f->bytes, 10) ? "ok" : "BAD", f->worst);
+               crc == ir_frame_crc(f->bytes) ? "ok" : "BAD", f->worst);
     printf(", in range of %s\n", in_range[0] ? in_range : "nobody");
     fflush(stdout);
 }
@@ -65,10 +46,10 @@ static void report(const robot *from, const air_frame *f, const char *in_range) 
 /* Is a pulse in this slot allowed, and where do its data go? */
 static const char *place_pulse(air_frame *f, int slot) {
     if (slot <= f->last_slot) return "two pulses in one slot";
-    if (slot < HEADER_SLOTS) return slot == HEADER_SLOTS - 1 ? NULL : "a pulse inside the header";
-    int data = slot - HEADER_SLOTS, bit = data % 10;
+    if (slot < IR_HEADER_SLOTS) return slot == IR_HEADER_SLOTS - 1 ? NULL : "a pulse inside the header";
+    int data = slot - IR_HEADER_SLOTS, bit = data % 10;
     for (int s = f->last_slot + 1; s < slot; s++) /* the start and stop bits skipped are missing */
-        if (s >= HEADER_SLOTS && ((s - HEADER_SLOTS) % 10 == 0 || (s - HEADER_SLOTS) % 10 == 9))
+        if (s >= IR_HEADER_SLOTS && ((s - IR_HEADER_SLOTS) % 10 == 0 || (s - IR_HEADER_SLOTS) % 10 == 9))
             return "a start or stop bit missing";
     if (bit >= 1 && bit <= 8) f->bytes[data / 10] |= (uint8_t)(1u << (bit - 1));
     return NULL;
@@ -79,7 +60,7 @@ static const char *place_pulse(air_frame *f, int slot) {
 void ir_log_flash(const robot *from, avr_cycle_count_t cycle, const char *in_range) {
     if (!enabled) return;
     air_frame *f = &frames[from->index];
-    if (f->start != 0 && cycle >= f->start + (avr_cycle_count_t)(SLOTS + 1) * BIT_CYCLES) {
+    if (f->start != 0 && cycle >= f->start + (avr_cycle_count_t)(IR_FRAME_SLOTS + 1) * IR_BIT_CYCLES) {
         if (f->broken == NULL) f->broken = "stopped short";
         report(from, f, in_range);
         f->start = 0;
@@ -92,13 +73,13 @@ void ir_log_flash(const robot *from, avr_cycle_count_t cycle, const char *in_ran
     /* Slots count from the start pulse, to the nearest: each pulse is a few
      * cycles after its slot begins, the start pulse too. */
     avr_cycle_count_t since = cycle - f->start;
-    int slot = (int)((since + BIT_CYCLES / 2) / BIT_CYCLES);
-    int off = abs((int)(since - (avr_cycle_count_t)slot * BIT_CYCLES));
+    int slot = (int)((since + IR_BIT_CYCLES / 2) / IR_BIT_CYCLES);
+    int off = abs((int)(since - (avr_cycle_count_t)slot * IR_BIT_CYCLES));
     if (off > f->worst) f->worst = off;
     const char *wrong = off > OFF_CYCLES ? "a pulse between slots" : place_pulse(f, slot);
     if (wrong != NULL && f->broken == NULL) f->broken = wrong;
     if (f->broken == NULL) f->last_slot = slot;
-    if (slot == SLOTS - 1 && f->broken == NULL) {
+    if (slot == IR_FRAME_SLOTS - 1 && f->broken == NULL) {
         report(from, f, in_range);
         f->start = 0;
     }

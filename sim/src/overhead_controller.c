@@ -11,12 +11,7 @@
 
 #include "sim.h"
 
-#define BIT 269
-#define HEADER_SLOTS 10
-#define FRAME_BYTES 12
-#define SLOTS (HEADER_SLOTS + FRAME_BYTES * 10)
 #define FLASH_CYCLES 12
-#define LIT_MV 1000
 
 #define CALIB 0x8A
 #define NO_MODE (-1)
@@ -120,24 +115,16 @@ int ohc_parse(const char *text, ohc_message *m) {
     return 0;
 }
 
-/* CRC-16 CCITT as avr-libc's _crc_ccitt_update computes it (seed 0xFFFF). */
-static uint16_t crc_ccitt_update(uint16_t crc, uint8_t data) {
-    data ^= (uint8_t)(crc & 0xFF);
-    data ^= (uint8_t)(data << 4);
-    return (uint16_t)(((uint16_t)data << 8 | (crc >> 8)) ^ (uint8_t)(data >> 4) ^
-                      ((uint16_t)data << 3));
-}
-
 static int slot_lit(const uint8_t *frame, int slot) {
-    if (slot < HEADER_SLOTS) return slot == 0 || slot == HEADER_SLOTS - 1;
-    int s = slot - HEADER_SLOTS, bit = s % 10;
+    if (slot < IR_HEADER_SLOTS) return slot == 0 || slot == IR_HEADER_SLOTS - 1;
+    int s = slot - IR_HEADER_SLOTS, bit = s % 10;
     return bit == 0 || bit == 9 || ((frame[s / 10] >> (bit - 1)) & 1);
 }
 
 /* One frame on its way to one robot: a timer steps through its edges. */
 typedef struct broadcast {
     robot *to;
-    uint8_t frame[FRAME_BYTES];
+    uint8_t frame[IR_FRAME_BYTES];
     int slot; /* next slot to consider */
     int lit;  /* the LED is on now */
 } broadcast;
@@ -153,11 +140,11 @@ static avr_cycle_count_t step(struct avr_t *avr, avr_cycle_count_t when, void *p
         set_ain0(b->to, 0);
         b->lit = 0;
         int from = b->slot;
-        while (b->slot < SLOTS && !slot_lit(b->frame, b->slot)) b->slot++;
-        if (b->slot == SLOTS) return 0;
-        return when + (avr_cycle_count_t)((b->slot - from) * BIT + BIT - FLASH_CYCLES);
+        while (b->slot < IR_FRAME_SLOTS && !slot_lit(b->frame, b->slot)) b->slot++;
+        if (b->slot == IR_FRAME_SLOTS) return 0;
+        return when + (avr_cycle_count_t)((b->slot - from) * IR_BIT_CYCLES + IR_BIT_CYCLES - FLASH_CYCLES);
     }
-    set_ain0(b->to, LIT_MV);
+    set_ain0(b->to, IR_LIT_MV);
     b->lit = 1;
     b->slot++;
     return when + FLASH_CYCLES;
@@ -167,13 +154,12 @@ static broadcast broadcasts[MAX_OHC_MESSAGES][MAX_ROBOTS];
 
 void ohc_attach(robot *all, int n, const options *o) {
     for (int k = 0; k < o->n_ohc; k++) {
-        uint8_t frame[FRAME_BYTES] = {0};
+        uint8_t frame[IR_FRAME_BYTES] = {0};
         memcpy(frame, o->ohc[k].data, sizeof o->ohc[k].data);
         frame[9] = o->ohc[k].type;
-        uint16_t crc = 0xFFFF;
-        for (int i = 0; i < 10; i++) crc = crc_ccitt_update(crc, frame[i]);
-        frame[10] = (uint8_t)crc;
-        frame[11] = (uint8_t)(crc >> 8);
+        uint16_t crc = ir_frame_crc(frame);
+        frame[IR_CRC_BYTES] = (uint8_t)crc;
+        frame[IR_CRC_BYTES + 1] = (uint8_t)(crc >> 8);
         for (int i = 0; i < n; i++) {
             broadcast *b = &broadcasts[k][i];
             b->to = &all[i];

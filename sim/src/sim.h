@@ -147,6 +147,22 @@ void board_configure(avr_t *avr, const options *o, int index);
 /* measure.c: markers and interrupt timestamps */
 int measure_attach(robot *r, const options *o);
 
+/* The Kilobot IR wire format (ports/kilobot/src/devices/ir.c), as the
+ * channel, the overhead controller and --ir-log use it: slots of one bit
+ * time; a start pulse, the stop pulse 9 slots later, then 12 bytes of 10
+ * slots each (a start bit, 8 data bits LSB first, a stop bit); a flash lights
+ * a receiver's comparator input to IR_LIT_MV. */
+#define IR_BIT_CYCLES 269
+#define IR_HEADER_SLOTS 10
+#define IR_FRAME_BYTES 12
+#define IR_FRAME_SLOTS (IR_HEADER_SLOTS + IR_FRAME_BYTES * 10)
+#define IR_CRC_BYTES 10 /* the CRC covers the data and the type; it fills the last two */
+#define IR_LIT_MV 1000
+
+/* ir_frame.c: a frame's CRC-16 CCITT (seed 0xFFFF) over its first
+ * IR_CRC_BYTES bytes, stored little-endian after them */
+uint16_t ir_frame_crc(const uint8_t *bytes);
+
 /* ir_channel.c: every robot hears the IR LED of every other within range */
 /* loss_pct: the chance, in percent, that a frame is lost to a receiver at
  * the range's edge; closer, it falls with the distance squared. */
