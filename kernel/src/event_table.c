@@ -120,6 +120,14 @@ static void release_marked(void) {
         unlink_dead_subscriptions();
 }
 
+/* One subscription ends: marked now, unlinked when no dispatch walks the
+ * list. Out of line: os_run_handlers keeps fewer registers across a call. */
+static OS_COLD void unsubscribe(subscription *sub) {
+    sub->handler = NULL;
+    os_listeners_changed();
+    release_marked();
+}
+
 /* Remove the subscriptions matching (event or any, pid or any). */
 static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid, bool any_pid) {
     for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
@@ -206,11 +214,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
 sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler) {
     port_irq_state_t s = port_irq_save();
     subscription *sub = find_subscription(event, pid, handler);
-    if (sub != NULL) {
-        sub->handler = NULL;
-        os_listeners_changed();
-        release_marked();
-    }
+    if (sub != NULL) unsubscribe(sub);
     port_irq_restore(s);
     return sub != NULL ? SYS_OK : SYS_E_NOT_FOUND;
 }
@@ -227,9 +231,6 @@ bool os_event_has_listeners(sys_event_id event) {
 }
 #endif
 
-/* Runs in the system thread with interrupts masked; each handler runs with
- * interrupts enabled. Handlers subscribed during the dispatch wait for the
- * next occurrence. */
 /* A handler must not leave a critical section open: it is closed for it. */
 static OS_COLD void close_leaked_section(sys_pid pid) {
     os.lock_depth = 0;
@@ -237,6 +238,9 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
     os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
 }
 
+/* Runs in the system thread with interrupts masked; each handler runs with
+ * interrupts enabled. Handlers subscribed during the dispatch wait for the
+ * next occurrence. */
 void os_run_handlers(const sys_event_data *data) {
     sys_event_id event = data->event;
     const subscription *last = subs_tail;
@@ -253,11 +257,7 @@ void os_run_handlers(const sys_event_data *data) {
             /* Returning false unsubscribes. The entry cannot have been
              * reused meanwhile: a cleared entry stays linked until the
              * sweep, and only unlinked entries are free. */
-            if (!keep) {
-                os_listeners_changed();
-                sub->handler = NULL;
-                sweep_needed = true;
-            }
+            if (!keep) unsubscribe(sub);
         }
         if (sub == last) break;
     }
