@@ -47,6 +47,11 @@ struct AppConfig {
     std::vector<DeviceConfig> devices; // processors chosen in openswarm.json
 };
 
+// The guard pattern at the bottom of every thread stack while the kernel's
+// stack check is on (OS_STACK_GUARD_BYTES, kernel/src/kernel_internal.h):
+// the same on every port.
+constexpr unsigned stack_guard_bytes = 4;
+
 // (key, config.h macro) of every kernel setting openswarm.json may give.
 const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros();
 

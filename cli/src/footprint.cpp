@@ -12,10 +12,6 @@ namespace openswarm {
 
 namespace {
 
-// The guard pattern at the bottom of every stack (OS_STACK_GUARD_BYTES,
-// kernel/src/kernel_internal.h): the same on every port.
-constexpr unsigned stack_guard = 4;
-
 // What the RAM accounting needs to know of a port beyond ports.hpp.
 struct PortCosts {
     const char *port;
@@ -122,7 +118,7 @@ Footprint footprint_of(const AppConfig &config, const Attribution &a,
     auto values = generated_values(generated_config);
     Footprint f{};
     f.stack_extra = costs.stack_extra;
-    f.stack_guard = value_or(values, "OS_CFG_STACK_CHECK", 1) ? stack_guard : 0;
+    f.stack_guard = value_or(values, "OS_CFG_STACK_CHECK", 1) ? stack_guard_bytes : 0;
     f.stack_block = value_or(values, "OS_CFG_STACK_BLOCK_BYTES", port.stack_block);
     f.max_threads = value_or(values, "OS_CFG_MAX_THREADS", port.default_max_threads);
     unsigned default_stack = value_or(values, "OS_CFG_DEFAULT_STACK_BYTES", port.default_stack);

@@ -92,7 +92,7 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
     if (!c.threads.empty()) {
         if (!values.count("max_threads"))
             values["max_threads"] = std::max<long>(port.default_max_threads, (long)stacks.size() + 1);
-        unsigned guard = values.count("stack_check") && values["stack_check"] == 0 ? 0 : 4;
+        unsigned guard = values.count("stack_check") && values["stack_check"] == 0 ? 0 : stack_guard_bytes;
         unsigned pool = 0;
         for (unsigned stack : stacks) pool += round_up(stack + guard, port.stack_block);
         if (!values.count("stack_pool")) values["stack_pool"] = pool;
