@@ -265,6 +265,12 @@ const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros() 
     return all;
 }
 
+bool is_kernel_switch(const std::string &key) {
+    for (const auto &s : kernel_switches)
+        if (key == s.key) return true;
+    return false;
+}
+
 AppConfig load_app_config(const fs::path &dir) {
     AppConfig config;
     config.file = dir / "openswarm.json";

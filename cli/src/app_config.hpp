@@ -55,6 +55,10 @@ constexpr unsigned stack_guard_bytes = 4;
 // (key, config.h macro) of every kernel setting openswarm.json may give.
 const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros();
 
+// Is key one of the kernel's on/off features ("stack_check": true/false in
+// openswarm.json, kept as 1/0)?
+bool is_kernel_switch(const std::string &key);
+
 // Read and validate dir/openswarm.json.
 AppConfig load_app_config(const std::filesystem::path &dir);
 

@@ -131,6 +131,8 @@ rm -rf lean/build
 built lean
 grep -q "^#define OS_CFG_STACK_CHECK 0$" lean/build/kilobot/openswarm/openswarm_config.h
 grep -q "^#define OS_CFG_CLOCK_EVENT 0$" lean/build/kilobot/openswarm/openswarm_config.h
+"$openswarm" config show -C lean | grep -q "^kernel.stack_check false$"
+"$openswarm" config show -C lean | grep -q "^kernel.clock_event false$"
 flash() { python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["flash"])' "$1/build.json"; }
 [ $(( $(flash roomy) - $(flash lean) )) -gt 300 ] || { echo "lean saves $(( $(flash roomy) - $(flash lean) )) B"; exit 1; }
 (cd lean && "$openswarm" run --time 0.1 > run.log 2>&1)

@@ -27,7 +27,12 @@ void add_config_command(CLI::App &app, const Paths &) {
                     std::printf("scheduler %s, time slice %ld ms\n",
                                 c.scheduler.empty() ? "round-robin" : c.scheduler.c_str(),
                                 c.time_slice_ms ? c.time_slice_ms : 10L);
-                    for (const auto &[key, value] : c.kernel) std::printf("kernel.%s %ld\n", key.c_str(), value);
+                    for (const auto &[key, value] : c.kernel) {
+                        if (is_kernel_switch(key))
+                            std::printf("kernel.%s %s\n", key.c_str(), value ? "true" : "false");
+                        else
+                            std::printf("kernel.%s %ld\n", key.c_str(), value);
+                    }
                     for (size_t i = 0; i < c.events.size(); i++) {
                         std::string macro = c.events[i].name;
                         for (auto &ch : macro) ch = (char)std::toupper((unsigned char)ch);
