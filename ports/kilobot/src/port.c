@@ -37,7 +37,11 @@ port_irq_state_t port_irq_save(void) {
     return sreg;
 }
 
-void port_irq_restore(port_irq_state_t state) { SREG = state; }
+/* A compiler barrier too, as cli() is: what the critical section stored is
+ * in memory before an interrupt can see it. */
+void port_irq_restore(port_irq_state_t state) {
+    __asm__ __volatile__("out __SREG__, %0" ::"r"(state) : "memory");
+}
 void port_irq_enable(void) { sei(); }
 void port_irq_disable(void) { cli(); }
 
@@ -62,8 +66,8 @@ void port_tick_start(void) {
     TCCR0B = _BV(CS01) | _BV(CS00);
 }
 
-void (*volatile kilobot_tick_hook)(void);
-void (*volatile kilobot_sensors_tick_hook)(void);
+void (*kilobot_tick_hook)(void);
+void (*kilobot_sensors_tick_hook)(void);
 
 void kilobot_tick(void) {
     os_tick();

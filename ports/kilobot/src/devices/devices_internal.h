@@ -28,7 +28,8 @@ void kilobot_adc_start(uint8_t input);
 int16_t kilobot_adc_take(void);
 
 /* sensors.c: sampling due every 1 ms (NULL: none); called by the tick
- * interrupt, so applications that sample nothing pay one test. */
-extern void (*volatile kilobot_sensors_tick_hook)(void);
+ * interrupt. Set with interrupts masked; applications that never set it
+ * pay nothing (see kilobot_tick_hook). */
+extern void (*kilobot_sensors_tick_hook)(void);
 
 #endif
