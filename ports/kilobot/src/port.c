@@ -12,9 +12,10 @@ void port_thread_start(void); /* switch.S */
 
 #define SWITCH_FRAME_REGISTERS 18u
 
-void port_init(void) {
-    set_sleep_mode(SLEEP_MODE_IDLE); /* timers keep running */
-}
+/* Idle sleep (timers keep running), enabled once for good: the only SLEEP
+ * instructions are port_idle's and sim_exit's, so there is no stray one
+ * for avr-libc's enable-just-before-sleeping guard to catch. */
+void port_init(void) { SMCR = SLEEP_MODE_IDLE | _BV(SE); }
 
 void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*entry)(void *),
                        void *arg) {
@@ -46,7 +47,6 @@ void port_irq_enable(void) { sei(); }
 void port_irq_disable(void) { cli(); }
 
 void port_idle(void) {
-    sleep_enable();
     sei();       /* the instruction after SEI runs before any interrupt: */
     sleep_cpu(); /* no wake-up is lost between the two */
     /* simavr 1.6 does not sleep while an interrupt is pending, and takes
@@ -55,7 +55,6 @@ void port_idle(void) {
      * just before SLEEP would stay pending for ever (time would stop). */
     __asm__ __volatile__("nop\n\tnop\n\tnop" ::: "memory");
     cli();
-    sleep_disable();
 }
 
 /* 8 MHz / 64 / 125 = 1000 Hz. */
