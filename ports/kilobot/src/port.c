@@ -17,19 +17,23 @@ void port_thread_start(void); /* switch.S */
  * for avr-libc's enable-just-before-sleeping guard to catch. */
 void port_init(void) { SMCR = SLEEP_MODE_IDLE | _BV(SE); }
 
+/* Push value below sp as CALL pushes a return address, low byte first.
+ * (In C, GCC reaches each byte through X with an add and a subtract.) */
+static uint8_t *push_word(uint8_t *sp, uint16_t value) {
+    __asm__ __volatile__("st -%a0, %A1\n\tst -%a0, %B1" : "+e"(sp) : "r"(value) : "memory");
+    return sp;
+}
+
 void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*entry)(void *),
                        void *arg) {
-    uint8_t *sp = (uint8_t *)stack + size - 1; /* AVR pushes post-decrement */
-    uint16_t start = (uint16_t)port_thread_start;
-    *sp-- = (uint8_t)start; /* return address of port_switch's ret: low byte on top */
-    *sp-- = (uint8_t)(start >> 8);
-    *sp-- = (uint8_t)(uint16_t)entry; /* r2, r3: what port_thread_start calls */
-    *sp-- = (uint8_t)((uint16_t)entry >> 8);
-    *sp-- = (uint8_t)(uint16_t)arg; /* r4, r5: its argument */
-    *sp-- = (uint8_t)((uint16_t)arg >> 8);
+    uint8_t *sp = (uint8_t *)stack + size;
+    sp = push_word(sp, (uint16_t)port_thread_start); /* where port_switch's ret goes */
+    sp = push_word(sp, (uint16_t)entry); /* r2, r3: what port_thread_start calls */
+    sp = push_word(sp, (uint16_t)arg);   /* r4, r5: its argument */
     /* r6..r17, r28, r29: whatever the stack holds, as a C function saves
-     * the callee-saved registers it uses before it uses them. */
-    ctx->sp = sp - (SWITCH_FRAME_REGISTERS - 4u);
+     * the callee-saved registers it uses before it uses them. SP is the
+     * free byte below the last one pushed. */
+    ctx->sp = sp - (SWITCH_FRAME_REGISTERS - 4u) - 1u;
 }
 
 port_irq_state_t port_irq_save(void) {
