@@ -71,10 +71,12 @@ void port_tick_start(void) {
 
 void (*kilobot_tick_hook)(void);
 void (*kilobot_sensors_tick_hook)(void);
+void (*kilobot_motors_tick_hook)(void);
 
 void kilobot_tick(void) {
     os_tick();
-    kilobot_motors_tick();
+    void (*motors)(void) = kilobot_motors_tick_hook;
+    if (motors != NULL) motors();
     void (*sensors)(void) = kilobot_sensors_tick_hook;
     if (sensors != NULL) sensors();
     void (*hook)(void) = kilobot_tick_hook;
