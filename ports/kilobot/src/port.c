@@ -12,23 +12,28 @@ void port_thread_start(void); /* switch.S */
 
 #define SWITCH_FRAME_REGISTERS 18u
 
-void port_init(void) {
-    set_sleep_mode(SLEEP_MODE_IDLE); /* timers keep running */
+/* Idle sleep (timers keep running), enabled once for good: the only SLEEP
+ * instructions are port_idle's and sim_exit's, so there is no stray one
+ * for avr-libc's enable-just-before-sleeping guard to catch. */
+void port_init(void) { SMCR = SLEEP_MODE_IDLE | _BV(SE); }
+
+/* Push value below sp as CALL pushes a return address, low byte first.
+ * (In C, GCC reaches each byte through X with an add and a subtract.) */
+static uint8_t *push_word(uint8_t *sp, uint16_t value) {
+    __asm__ __volatile__("st -%a0, %A1\n\tst -%a0, %B1" : "+e"(sp) : "r"(value) : "memory");
+    return sp;
 }
 
 void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*entry)(void *),
                        void *arg) {
-    uint8_t *sp = (uint8_t *)stack + size - 1; /* AVR pushes post-decrement */
-    uint16_t start = (uint16_t)port_thread_start;
-    *sp-- = (uint8_t)start; /* return address of port_switch's ret: low byte on top */
-    *sp-- = (uint8_t)(start >> 8);
-    *sp-- = (uint8_t)(uint16_t)entry; /* r2, r3: what port_thread_start calls */
-    *sp-- = (uint8_t)((uint16_t)entry >> 8);
-    *sp-- = (uint8_t)(uint16_t)arg; /* r4, r5: its argument */
-    *sp-- = (uint8_t)((uint16_t)arg >> 8);
+    uint8_t *sp = (uint8_t *)stack + size;
+    sp = push_word(sp, (uint16_t)port_thread_start); /* where port_switch's ret goes */
+    sp = push_word(sp, (uint16_t)entry); /* r2, r3: what port_thread_start calls */
+    sp = push_word(sp, (uint16_t)arg);   /* r4, r5: its argument */
     /* r6..r17, r28, r29: whatever the stack holds, as a C function saves
-     * the callee-saved registers it uses before it uses them. */
-    ctx->sp = sp - (SWITCH_FRAME_REGISTERS - 4u);
+     * the callee-saved registers it uses before it uses them. SP is the
+     * free byte below the last one pushed. */
+    ctx->sp = sp - (SWITCH_FRAME_REGISTERS - 4u) - 1u;
 }
 
 port_irq_state_t port_irq_save(void) {
@@ -37,12 +42,15 @@ port_irq_state_t port_irq_save(void) {
     return sreg;
 }
 
-void port_irq_restore(port_irq_state_t state) { SREG = state; }
+/* A compiler barrier too, as cli() is: what the critical section stored is
+ * in memory before an interrupt can see it. */
+void port_irq_restore(port_irq_state_t state) {
+    __asm__ __volatile__("out __SREG__, %0" ::"r"(state) : "memory");
+}
 void port_irq_enable(void) { sei(); }
 void port_irq_disable(void) { cli(); }
 
 void port_idle(void) {
-    sleep_enable();
     sei();       /* the instruction after SEI runs before any interrupt: */
     sleep_cpu(); /* no wake-up is lost between the two */
     /* simavr 1.6 does not sleep while an interrupt is pending, and takes
@@ -51,7 +59,6 @@ void port_idle(void) {
      * just before SLEEP would stay pending for ever (time would stop). */
     __asm__ __volatile__("nop\n\tnop\n\tnop" ::: "memory");
     cli();
-    sleep_disable();
 }
 
 /* 8 MHz / 64 / 125 = 1000 Hz. */
@@ -62,12 +69,14 @@ void port_tick_start(void) {
     TCCR0B = _BV(CS01) | _BV(CS00);
 }
 
-void (*volatile kilobot_tick_hook)(void);
-void (*volatile kilobot_sensors_tick_hook)(void);
+void (*kilobot_tick_hook)(void);
+void (*kilobot_sensors_tick_hook)(void);
+void (*kilobot_motors_tick_hook)(void);
 
 void kilobot_tick(void) {
     os_tick();
-    kilobot_motors_tick();
+    void (*motors)(void) = kilobot_motors_tick_hook;
+    if (motors != NULL) motors();
     void (*sensors)(void) = kilobot_sensors_tick_hook;
     if (sensors != NULL) sensors();
     void (*hook)(void) = kilobot_tick_hook;

@@ -64,12 +64,12 @@ port_switch:
     .size port_switch, .-port_switch
 
 ; First code of every thread: port_context_init leaves the entry function
-; in r3:r2 and its argument in r5:r4 of the initial switch frame.
+; in r3:r2 and its argument in r5:r4 of the initial switch frame. r1 is
+; already zero: port_switch is only ever called from C code.
     .section .text.port_thread_start,"ax",@progbits
     .global port_thread_start
     .type port_thread_start, @function
 port_thread_start:
-    clr r1
     movw r24, r4
     movw r30, r2
     sei

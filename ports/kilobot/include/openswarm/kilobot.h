@@ -150,8 +150,11 @@ uint8_t kilobot_linear_table(sys_device *dev, const void *in, uint8_t size, void
 sys_status kilobot_devices_init(void);
 
 /* Called every 1 ms from the tick interrupt (NULL: nothing). For clocks an
- * application keeps in interrupt context, such as kilolib's kilo_ticks. */
-extern void (*volatile kilobot_tick_hook)(void);
+ * application keeps in interrupt context, such as kilolib's kilo_ticks. Set
+ * it before Sys_Start_Kernel or with interrupts masked: the tick must not
+ * read half a pointer. (Not volatile: the tick reads it afresh each time,
+ * and link-time optimisation drops the test from images that never set it.) */
+extern void (*kilobot_tick_hook)(void);
 
 /* Calibration and identity the robot keeps in its EEPROM. */
 #define KILOBOT_EEPROM_OSCCAL 0x01

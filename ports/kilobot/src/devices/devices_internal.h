@@ -6,10 +6,11 @@
 #include <stdint.h>
 
 /* motors.c. From now on, a motor at full power for more than limit_ms
- * drops to fallback (checked every 1 ms by kilobot_motors_tick). */
+ * drops to fallback (0: no limit); checked every 1 ms by the motors' tick
+ * hook, which only these two set (NULL: no limit). */
 void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback);
-/* Called every 1 ms from the tick interrupt. */
-void kilobot_motors_tick(void);
+void kilobot_motors_unlimit(void);
+extern void (*kilobot_motors_tick_hook)(void);
 
 /* port.c: one millisecond of the robot's time (the kernel's tick, then the
  * devices' and the tick hooks), in interrupt context. The IR driver calls it
@@ -28,7 +29,8 @@ void kilobot_adc_start(uint8_t input);
 int16_t kilobot_adc_take(void);
 
 /* sensors.c: sampling due every 1 ms (NULL: none); called by the tick
- * interrupt, so applications that sample nothing pay one test. */
-extern void (*volatile kilobot_sensors_tick_hook)(void);
+ * interrupt. Set with interrupts masked; applications that never set it
+ * pay nothing (see kilobot_tick_hook). */
+extern void (*kilobot_sensors_tick_hook)(void);
 
 #endif

@@ -45,7 +45,7 @@ static uint8_t to_duties(const void *in, uint8_t size, void *out, uint8_t capaci
 uint8_t kilobot_motor_commands(sys_device *dev, const void *in, uint8_t size, void *out,
                                uint8_t capacity) {
     (void)dev;
-    kilobot_motors_limit_full_power(0, 0); /* no limit unless kilobot_spinup_limited runs */
+    kilobot_motors_unlimit(); /* no limit unless kilobot_spinup_limited runs */
     return to_duties(in, size, out, capacity);
 }
 

@@ -3,12 +3,13 @@
  * simavr 1.6 does not implement phase-correct PWM (mode 1) on this MCU. A
  * duty of 0 disconnects the pin: fast PWM would still emit a 1-count pulse. */
 #include "openswarm/kilobot.h"
+#include "openswarm/port.h"
 
 #include <avr/io.h>
 
 #include "devices_internal.h"
 
-/* Full-power limit armed by kilobot_spinup_limited: 0 = none. */
+/* Full-power limit armed by kilobot_spinup_limited. */
 static uint16_t full_power_limit_ms;
 static uint8_t full_power_fallback;
 static uint16_t full_power_ms[2]; /* how long each motor has been at 255 */
@@ -32,14 +33,8 @@ void kilobot_motors_apply(uint8_t left, uint8_t right) {
     TCCR2A = com;
 }
 
-void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback) {
-    full_power_limit_ms = limit_ms;
-    full_power_fallback = fallback;
-}
-
-/* Interrupt context, every 1 ms: cheap when no limit is armed. */
-void kilobot_motors_tick(void) {
-    if (full_power_limit_ms == 0) return;
+/* Interrupt context, every 1 ms while a limit is armed. */
+static void enforce_full_power_limit(void) {
     volatile uint8_t *ocr[2] = {&OCR2A, &OCR2B};
     for (uint8_t i = 0; i < 2; i++) {
         if (*ocr[i] != 255) {
@@ -49,6 +44,22 @@ void kilobot_motors_tick(void) {
             full_power_ms[i] = 0;
         }
     }
+}
+
+/* The limit is checked by a tick hook that only this arms, so firmware
+ * that never limits the motors carries neither the check nor its test. */
+void kilobot_motors_limit_full_power(uint16_t limit_ms, uint8_t fallback) {
+    port_irq_state_t s = port_irq_save();
+    full_power_limit_ms = limit_ms;
+    full_power_fallback = fallback;
+    kilobot_motors_tick_hook = limit_ms != 0 ? enforce_full_power_limit : NULL;
+    port_irq_restore(s);
+}
+
+void kilobot_motors_unlimit(void) {
+    port_irq_state_t s = port_irq_save();
+    kilobot_motors_tick_hook = NULL;
+    port_irq_restore(s);
 }
 
 static void motors_write(sys_device *dev, const void *raw, uint8_t size) {
