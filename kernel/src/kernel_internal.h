@@ -75,14 +75,13 @@ typedef struct os_kernel {
     uint32_t timeout_next; /* the nearest deadline, or a time already past if none (wait.c) */
     uint8_t switches[4]; /* thread-to-thread switches, lowest byte first (scheduler.c) */
     uint16_t slice_ms;
-    uint16_t slice_left;
+    uint16_t slice_left; /* 0: the running thread's slice is over */
     uint8_t queued_bytes; /* in the event queue's ring */
     uint8_t held_event;   /* id + 1 of the occurrence held in its kept data, 0: none */
     uint8_t handling_event; /* id + 1 of the event whose handlers run, 0: none */
     uint8_t event_waiters; /* threads blocked on an event: none means no waiter scan */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
-    bool slice_expired;
     bool yield_requested;
     bool reap_pending;
     bool stop_requested;
@@ -99,7 +98,9 @@ static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current !
 
 /* Has the system thread work to do (on every scheduling decision)? */
 static OS_HOT bool os_system_work_pending(void) {
-    return (os.queued_bytes | os.held_event | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
+    uint8_t work = (uint8_t)(os.queued_bytes | os.held_event);
+    work |= (uint8_t)((uint8_t)os.reap_pending | (uint8_t)os.stop_requested);
+    return work != 0;
 }
 
 /* Handlers or waiters may have come or gone: the next tick asks again

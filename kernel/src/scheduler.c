@@ -37,13 +37,13 @@ void os_ready_remove(sys_tcb *t) {
     }
 }
 
+/* The head leaves the ready list; its stale next is cleared when it is
+ * queued again (os_make_ready). */
 static OS_HOT sys_tcb *ready_pop(void) {
     sys_tcb *t = os.ready;
     if (t != NULL) {
         os.ready = t->next;
-        t->next = NULL;
         os.slice_left = os.slice_ms; /* a fresh turn */
-        os.slice_expired = false;
     }
     return t;
 }
@@ -52,13 +52,10 @@ static OS_HOT sys_tcb *ready_pop(void) {
  * list's head? */
 static inline bool must_rotate(const sys_tcb *t) {
     if (os.ready == NULL) {
-        if (os.slice_expired) { /* nobody is waiting: renew the slice */
-            os.slice_expired = false;
-            os.slice_left = os.slice_ms;
-        }
+        if (os.slice_left == 0) os.slice_left = os.slice_ms; /* nobody is waiting: renew it */
         return false;
     }
-    return os.slice_expired || os.yield_requested || os.policy->preempts(os.ready, t);
+    return os.slice_left == 0 || os.yield_requested || os.policy->preempts(os.ready, t);
 }
 
 /* One more switch: the count's bytes are added to one at a time, as far
