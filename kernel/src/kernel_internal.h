@@ -125,8 +125,9 @@ void os_make_ready(sys_tcb *t);
 void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
 void os_yield(void);                 /* Sys_Yield's decision */
-sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
-void os_switch_to(sys_tcb *next);
+/* Switch to whoever should run now; false if the caller goes on (the
+ * system thread: nobody else can run). */
+bool os_decide(void);
 
 /* stack_pool.c */
 /* Give t (a free slot) a stack of at least bytes (plus the port's extra and
