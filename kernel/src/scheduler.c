@@ -18,7 +18,7 @@ void os_scheduler_reset(void) {
     os.ready = NULL;
     os.preempted = NULL;
     os.slice_ms = OS_CFG_TIME_SLICE_MS;
-    os.slice_left = OS_CFG_TIME_SLICE_MS;
+    os.slice_left = 0; /* nobody holds a slice: the first thread popped gets one */
 }
 
 void os_make_ready(sys_tcb *t) {
