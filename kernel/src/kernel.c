@@ -37,11 +37,10 @@ void Sys_Run_SystemThread(void) {
         } else if (!os_event_queue_empty()) {
             os_dispatch_all();
         } else {
-            sys_tcb *next = os_choose_next();
-            if (next != OS_SYSTEM)
-                os_switch_to(next);
-            else
-                port_idle();
+            /* It gives the CPU away as a thread that stops running does:
+             * to the thread its work preempted, or the ready list. */
+            OS_SYSTEM->state = SYS_PROCESS_READY;
+            if (!os_decide()) port_idle(); /* nobody else can run */
         }
     }
     os.stop_requested = false;

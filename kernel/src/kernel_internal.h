@@ -75,14 +75,13 @@ typedef struct os_kernel {
     uint32_t timeout_next; /* the nearest deadline, or a time already past if none (wait.c) */
     uint8_t switches[4]; /* thread-to-thread switches, lowest byte first (scheduler.c) */
     uint16_t slice_ms;
-    uint16_t slice_left;
+    uint16_t slice_left; /* 0: the running thread's slice is over */
     uint8_t queued_bytes; /* in the event queue's ring */
     uint8_t held_event;   /* id + 1 of the occurrence held in its kept data, 0: none */
     uint8_t handling_event; /* id + 1 of the event whose handlers run, 0: none */
     uint8_t event_waiters; /* threads blocked on an event: none means no waiter scan */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
-    bool slice_expired;
     bool yield_requested;
     bool reap_pending;
     bool stop_requested;
@@ -99,7 +98,9 @@ static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current !
 
 /* Has the system thread work to do (on every scheduling decision)? */
 static OS_HOT bool os_system_work_pending(void) {
-    return (os.queued_bytes | os.held_event | (uint8_t)os.reap_pending | (uint8_t)os.stop_requested) != 0;
+    uint8_t work = (uint8_t)(os.queued_bytes | os.held_event);
+    work |= (uint8_t)((uint8_t)os.reap_pending | (uint8_t)os.stop_requested);
+    return work != 0;
 }
 
 /* Handlers or waiters may have come or gone: the next tick asks again
@@ -124,8 +125,9 @@ void os_make_ready(sys_tcb *t);
 void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
 void os_yield(void);                 /* Sys_Yield's decision */
-sys_tcb *os_choose_next(void);       /* for the system thread: who runs next */
-void os_switch_to(sys_tcb *next);
+/* Switch to whoever should run now; false if the caller goes on (the
+ * system thread: nobody else can run). */
+bool os_decide(void);
 
 /* stack_pool.c */
 /* Give t (a free slot) a stack of at least bytes (plus the port's extra and
@@ -135,14 +137,16 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes);
 #if OS_CFG_STACK_CHECK
 /* The pattern in the lowest bytes of every thread stack; checked at every
  * scheduling decision a thread makes and at every tick, so overwriting it
- * (an overflow) is caught. Compared byte by byte
- * against constants: a dozen cycles on an 8-bit CPU, not a memcmp call. */
+ * (an overflow) is caught. Compared as one 32-bit number against a
+ * constant: a few cycles on an 8-bit CPU, not a memcmp call. */
 #define OS_STACK_GUARD_BYTES 4u
 #define OS_STACK_GUARD {0xA5u, 0x5Au, 0xC3u, 0x3Cu}
 static OS_HOT bool os_stack_guard_intact(const sys_tcb *t) {
     static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
     const uint8_t *g = t->stack;
-    return g == NULL || (g[0] == guard[0] && g[1] == guard[1] && g[2] == guard[2] && g[3] == guard[3]);
+    if (g == NULL) return true;
+    uint32_t have = g[0] | (uint32_t)g[1] << 8 | (uint32_t)g[2] << 16 | (uint32_t)g[3] << 24;
+    return have == (guard[0] | (uint32_t)guard[1] << 8 | (uint32_t)guard[2] << 16 | (uint32_t)guard[3] << 24);
 }
 
 void os_stack_overflowed(sys_tcb *t); /* its guard is broken: stop it */

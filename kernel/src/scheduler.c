@@ -18,7 +18,7 @@ void os_scheduler_reset(void) {
     os.ready = NULL;
     os.preempted = NULL;
     os.slice_ms = OS_CFG_TIME_SLICE_MS;
-    os.slice_left = OS_CFG_TIME_SLICE_MS;
+    os.slice_left = 0; /* nobody holds a slice: the first thread popped gets one */
 }
 
 void os_make_ready(sys_tcb *t) {
@@ -37,13 +37,13 @@ void os_ready_remove(sys_tcb *t) {
     }
 }
 
+/* The head leaves the ready list; its stale next is cleared when it is
+ * queued again (os_make_ready). */
 static OS_HOT sys_tcb *ready_pop(void) {
     sys_tcb *t = os.ready;
     if (t != NULL) {
         os.ready = t->next;
-        t->next = NULL;
         os.slice_left = os.slice_ms; /* a fresh turn */
-        os.slice_expired = false;
     }
     return t;
 }
@@ -52,13 +52,10 @@ static OS_HOT sys_tcb *ready_pop(void) {
  * list's head? */
 static inline bool must_rotate(const sys_tcb *t) {
     if (os.ready == NULL) {
-        if (os.slice_expired) { /* nobody is waiting: renew the slice */
-            os.slice_expired = false;
-            os.slice_left = os.slice_ms;
-        }
+        if (os.slice_left == 0) os.slice_left = os.slice_ms; /* nobody is waiting: renew it */
         return false;
     }
-    return os.slice_expired || os.yield_requested || os.policy->preempts(os.ready, t);
+    return os.slice_left == 0 || os.yield_requested || os.policy->preempts(os.ready, t);
 }
 
 /* One more switch: the count's bytes are added to one at a time, as far
@@ -69,66 +66,60 @@ static OS_HOT void count_switch(void) {
     }
 }
 
-sys_tcb *os_choose_next(void) {
-    if (os_system_work_pending()) return OS_SYSTEM;
-    sys_tcb *p = os.preempted;
-    os.preempted = NULL;
-    if (p != NULL) {
-        if (!must_rotate(p)) return p;
-        os_make_ready(p);
-    }
-    sys_tcb *n = ready_pop();
-    return n != NULL ? n : OS_SYSTEM;
-}
-
-void os_switch_to(sys_tcb *next) {
+static OS_HOT void switch_to(sys_tcb *next) {
     sys_tcb *prev = os.current;
-    next->state = SYS_PROCESS_RUNNING;
     os.yield_requested = false; /* a yield is consumed by the switch it caused */
-    if (next == prev) return;
     count_switch();
     os.current = next;
     port_switch(&prev->ctx, &next->ctx);
 }
 
-/* Who runs after cur, which still could run; NULL if cur goes on. */
-static inline sys_tcb *successor_of_running(sys_tcb *cur) {
-    if (os_system_work_pending()) { /* cur resumes once the work is done */
-        cur->state = SYS_PROCESS_READY;
-        os.preempted = cur;
-        return OS_SYSTEM;
-    }
-    if (!must_rotate(cur)) return NULL;
-    os_make_ready(cur);
-    return ready_pop(); /* cur again if it still comes first */
-}
-
-/* The decision for the running thread (not the system thread). It reads
- * os.current afresh after the dispatch rather than keeping it across: no
- * register to save on the way to the handlers. */
-static void decide(void) {
+/* The one scheduling decision, for a running thread and for one that
+ * stops running (blocks, ends, or is the system thread with no work left):
+ * the candidate to run on is the running thread, or else the one the
+ * system thread's work preempted. It reads os.current afresh after the
+ * dispatch rather than keeping it across: no register to save on the way
+ * to the handlers. */
+bool os_decide(void) {
+    sys_tcb *cand;
     if (os.current->state == SYS_PROCESS_RUNNING) {
-        if (os.lock_depth != 0) return; /* postponed */
+        if (os.lock_depth != 0) return false; /* postponed */
         /* Events first, on the system stack; a handler may kill the thread. */
         if (!os_event_queue_empty()) os_dispatch_on_system_stack();
+        cand = os.current->state == SYS_PROCESS_RUNNING ? os.current : NULL;
+    } else {
+        cand = os.preempted; /* NULL unless the system thread asks */
+        os.preempted = NULL;
     }
-    sys_tcb *cur = os.current;
-    sys_tcb *next =
-        cur->state == SYS_PROCESS_RUNNING ? successor_of_running(cur) : os_choose_next();
-    if (next != NULL) os_switch_to(next);
+    sys_tcb *next;
+    if (os_system_work_pending()) { /* cand resumes once the work is done */
+        if (cand != NULL) cand->state = SYS_PROCESS_READY;
+        os.preempted = cand;
+        next = OS_SYSTEM;
+    } else if (cand != NULL && !must_rotate(cand)) {
+        next = cand;
+    } else {
+        if (cand != NULL) os_make_ready(cand);
+        next = ready_pop(); /* cand again if it still comes first */
+        if (next == NULL) next = OS_SYSTEM;
+    }
+    next->state = SYS_PROCESS_RUNNING; /* again, if it was cand or the system thread */
+    if (next == os.current) return false;
+    switch_to(next);
+    return true;
 }
 
 void os_schedule(void) {
     sys_tcb *cur = os.current;
     if (cur == OS_SYSTEM || os.isr_depth != 0) return; /* the system loop decides */
     os_check_stack(cur);                               /* before it runs on or blocks */
-    decide();
+    os_decide();
 }
 
 /* Sys_Yield: a running thread outside any critical section, interrupts
  * masked. The common case - nothing for the system thread to do, someone
  * ready - rotates directly; anything else takes the general decision.
- * The rotation spells out os_make_ready and os_switch_to (a running
+ * The rotation spells out os_make_ready and switch_to (a running
  * thread is never NEW, and this path sets no yield request): calling them
  * costs 44 more cycles a yield (bench/avr_bench.py). */
 void os_yield(void) {
@@ -155,7 +146,7 @@ void os_isr_enter(void) { os.isr_depth++; }
 /* The outermost interrupt's end decides at once (no guard check: the tick
  * makes one). */
 void os_isr_exit(void) {
-    if (--os.isr_depth == 0 && os.current != OS_SYSTEM) decide();
+    if (--os.isr_depth == 0 && os.current != OS_SYSTEM) os_decide();
 }
 
 sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {
