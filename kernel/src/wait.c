@@ -14,30 +14,30 @@ static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
     settle_timeouts(); /* w's may be the nearest deadline now (none is due) */
 }
 
-static sys_status block_current(os_wait *w, uint32_t timeout_ms) {
-    if (w->event != OS_NO_EVENT) { /* a sleep listens to nothing */
+/* The running thread blocks on w until woken: the status it is woken with
+ * (every waker sets one). */
+static sys_status block_current(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
+    if (event != OS_NO_EVENT) { /* a sleep listens to nothing */
         os.event_waiters++;
         os_listeners_changed();
     }
-    os.current->wait = w;
-    if (w->timed) start_timeout(w, timeout_ms);
-    os.current->state = SYS_PROCESS_BLOCKED;
+    w->event = event;
+    w->timed = timed;
+    sys_tcb *cur = os.current;
+    cur->wait = w;
+    cur->state = SYS_PROCESS_BLOCKED;
+    if (timed) start_timeout(w, timeout_ms); /* w is not due: timeout_ms > 0 */
     os_schedule(); /* returns once woken */
     return w->status;
 }
 
-static sys_status wait_for(sys_event_id event, sys_event_condition condition, bool timed,
-                           uint32_t timeout_ms, void *buffer, uint8_t capacity, uint8_t *size) {
-    if (buffer == NULL && capacity != 0) return SYS_E_INVALID;
-    if (!os_in_thread() || os.lock_depth != 0) return SYS_E_CONTEXT;
-    os_wait w;
-    w.buffer = (uint8_t *)buffer;
-    w.condition = condition;
-    w.event = event;
-    w.capacity = capacity;
-    w.size = 0;
-    w.status = SYS_OK;
-    w.timed = timed;
+/* The running thread waits as w says (the caller sets what an event's
+ * waker reads: buffer, condition, capacity, size): the status it is woken
+ * with, or why it cannot wait. The event and the kind of wait come as
+ * arguments, not through w, so a caller's constants fold: a sleep's tests
+ * vanish and it sets only what the tick and the wakers read. */
+static sys_status block(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
+    if ((os.isr_depth | os.lock_depth) != 0 || os.current == OS_SYSTEM) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     sys_status st;
     if (event != OS_NO_EVENT && !os_event_registered(event))
@@ -45,8 +45,20 @@ static sys_status wait_for(sys_event_id event, sys_event_condition condition, bo
     else if (timed && timeout_ms == 0)
         st = SYS_E_TIMEOUT;
     else
-        st = block_current(&w, timeout_ms);
+        st = block_current(w, event, timed, timeout_ms);
     port_irq_restore(s);
+    return st;
+}
+
+static sys_status wait_for(sys_event_id event, sys_event_condition condition, bool timed,
+                           uint32_t timeout_ms, void *buffer, uint8_t capacity, uint8_t *size) {
+    if (buffer == NULL && capacity != 0) return SYS_E_INVALID;
+    os_wait w;
+    w.buffer = (uint8_t *)buffer;
+    w.condition = condition;
+    w.capacity = capacity;
+    w.size = 0;
+    sys_status st = block(&w, event, timed, timeout_ms);
     if (size != NULL) *size = w.size;
     return st;
 }
@@ -76,7 +88,8 @@ sys_status Sys_Wait_for_Condition_Timeout(sys_event_id event, sys_event_conditio
 }
 
 sys_status Sys_Sleep(uint32_t ms) {
-    sys_status st = wait_for(OS_NO_EVENT, NULL, true, ms, NULL, 0, NULL);
+    os_wait w; /* only woken by its timeout: no buffer, condition or size */
+    sys_status st = block(&w, OS_NO_EVENT, true, ms);
     return st == SYS_E_TIMEOUT ? SYS_OK : st;
 }
 
