@@ -5,10 +5,11 @@
  * reuses the first such block that is large enough, so registering and
  * unregistering in a loop never exhausts the arena.
  *
- * Subscriptions form one list in subscription order. While handlers run, an
- * unsubscription only marks its entry; the entries are unlinked after the
- * dispatch, so a handler that unsubscribes itself or another never makes
- * the dispatch skip a later handler. */
+ * Subscriptions fill the front of one array, in subscription order: a new
+ * one goes at the end, and the array is packed when some end. While
+ * handlers run, an unsubscription only marks its entry; the array is
+ * packed after the dispatch, so a handler that unsubscribes itself or
+ * another never makes the dispatch skip a later handler. */
 #include "kernel_internal.h"
 
 #include <string.h>
@@ -17,9 +18,8 @@
 #define NOTHING_KEPT OS_EVENT_NOTHING_KEPT
 
 typedef struct subscription {
-    sys_event_handler handler; /* NULL: free, or unsubscribed during dispatch */
+    sys_event_handler handler; /* NULL: unsubscribed, until the array is packed */
     sys_event_condition condition;
-    struct subscription *next; /* a pointer, not an index: no multiply per step */
     sys_event_id event;
     sys_pid pid;
 } subscription;
@@ -29,7 +29,7 @@ static uint8_t arena[OS_CFG_EVENT_DATA_BYTES];
 static uint16_t arena_used;
 
 static subscription subs[OS_CFG_MAX_SUBSCRIPTIONS];
-static subscription *subs_head, *subs_tail;
+static subscription *subs_end; /* past the last subscription: the rest is free */
 static bool sweep_needed;
 
 void os_event_table_reset(void) {
@@ -39,8 +39,7 @@ void os_event_table_reset(void) {
         slot->size = UNREGISTERED;
     }
     arena_used = 0;
-    memset(subs, 0, sizeof subs);
-    subs_head = subs_tail = NULL;
+    subs_end = subs;
     sweep_needed = false;
 }
 
@@ -97,31 +96,25 @@ sys_status Sys_Register_Event(sys_event_id event) {
     return Sys_Register_Event_Sized(event, OS_CFG_DEFAULT_EVENT_DATA);
 }
 
-static void unlink_dead_subscriptions(void) {
-    subscription **link = &subs_head;
-    subs_tail = NULL;
-    while (*link != NULL) {
-        subscription *sub = *link;
-        if (sub->handler == NULL) {
-            *link = sub->next;
-        } else {
-            subs_tail = sub;
-            link = &sub->next;
-        }
-    }
+/* The marked entries go; the others move up, in their order. */
+static void pack_subscriptions(void) {
+    subscription *kept = subs;
+    for (const subscription *sub = subs; sub != subs_end; sub++)
+        if (sub->handler != NULL) *kept++ = *sub;
+    subs_end = kept;
     sweep_needed = false;
 }
 
-/* Marked entries are unlinked now, or after the dispatch under way. */
+/* Marked entries go now, or after the dispatch under way. */
 static void release_marked(void) {
     if (os.handling_event != 0)
         sweep_needed = true;
     else
-        unlink_dead_subscriptions();
+        pack_subscriptions();
 }
 
-/* One subscription ends: marked now, unlinked when no dispatch walks the
- * list. Out of line: os_run_handlers keeps fewer registers across a call. */
+/* One subscription ends: marked now, gone when no dispatch walks the
+ * array. Out of line: os_run_handlers keeps fewer registers across a call. */
 static OS_COLD void unsubscribe(subscription *sub) {
     sub->handler = NULL;
     os_listeners_changed();
@@ -130,7 +123,7 @@ static OS_COLD void unsubscribe(subscription *sub) {
 
 /* Remove the subscriptions matching (event or any, pid or any). */
 static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid, bool any_pid) {
-    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
+    for (subscription *sub = subs; sub != subs_end; sub++) {
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
     os_listeners_changed();
@@ -162,18 +155,8 @@ bool Sys_IsEventRegistered(sys_event_id event) {
 }
 
 static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_event_handler h) {
-    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
+    for (subscription *sub = subs; sub != subs_end; sub++) {
         if (sub->handler == h && sub->event == event && sub->pid == pid) return sub;
-    }
-    return NULL;
-}
-
-static subscription *free_subscription(void) {
-    for (subscription *s = subs; s != &subs[OS_CFG_MAX_SUBSCRIPTIONS]; s++) {
-        if (s->handler != NULL) continue;
-        bool linked = false; /* a marked entry awaiting its sweep is not free yet */
-        for (const subscription *l = subs_head; l != NULL; l = l->next) linked |= (l == s);
-        if (!linked) return s;
     }
     return NULL;
 }
@@ -183,7 +166,6 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     if (handler == NULL) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
-    subscription *sub;
     if (!os_event_registered(event)) {
         st = SYS_E_NOT_REGISTERED;
     } else if (pid != SYS_PID_SYSTEM &&
@@ -191,20 +173,15 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
         st = SYS_E_INVALID;
     } else if (find_subscription(event, pid, handler) != NULL) {
         st = SYS_E_EXISTS;
-    } else if ((sub = free_subscription()) == NULL) {
+    } else if (subs_end == &subs[OS_CFG_MAX_SUBSCRIPTIONS]) { /* marked, unpacked ones count */
         os_count(&os.stats.subscription_pool_full);
         st = SYS_E_POOL_FULL;
     } else {
+        subscription *sub = subs_end++;
         sub->handler = handler;
         sub->condition = condition;
         sub->event = event;
         sub->pid = pid;
-        sub->next = NULL;
-        if (subs_tail == NULL)
-            subs_head = sub;
-        else
-            subs_tail->next = sub;
-        subs_tail = sub;
         os_listeners_changed();
     }
     port_irq_restore(s);
@@ -223,7 +200,7 @@ void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true,
 
 #if OS_CFG_CLOCK_EVENT
 bool os_event_has_listeners(sys_event_id event) {
-    for (const subscription *sub = subs_head; sub != NULL; sub = sub->next)
+    for (const subscription *sub = subs; sub != subs_end; sub++)
         if (sub->handler != NULL && sub->event == event) return true;
     for (const sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++)
         if (t->wait != NULL && t->wait->event == event) return true; /* wait: set while blocked */
@@ -243,9 +220,9 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
  * next occurrence. */
 void os_run_handlers(const sys_event_data *data) {
     sys_event_id event = data->event;
-    const subscription *last = subs_tail;
+    const subscription *end = subs_end; /* later subscriptions wait for the next occurrence */
     os.handling_event = (uint8_t)(event + 1u);
-    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
+    for (subscription *sub = subs; sub != end; sub++) {
         sys_event_handler handler = sub->handler;
         if (handler != NULL && sub->event == event) {
             sys_event_condition condition = sub->condition;
@@ -254,15 +231,13 @@ void os_run_handlers(const sys_event_data *data) {
             if (condition == NULL || condition(data)) keep = handler(sub->pid, event, data);
             port_irq_disable();
             if (os.lock_depth != 0) close_leaked_section(sub->pid);
-            /* Returning false unsubscribes. The entry cannot have been
-             * reused meanwhile: a cleared entry stays linked until the
-             * sweep, and only unlinked entries are free. */
+            /* Returning false unsubscribes. The entry is still this
+             * subscription: the array is packed only after the dispatch. */
             if (!keep) unsubscribe(sub);
         }
-        if (sub == last) break;
     }
     os.handling_event = 0;
-    if (sweep_needed) unlink_dead_subscriptions();
+    if (sweep_needed) pack_subscriptions();
 }
 
 sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size) {
