@@ -47,16 +47,16 @@ bool os_event_registered(sys_event_id event) {
     return event < OS_CFG_MAX_EVENTS && os_events[event].size != UNREGISTERED;
 }
 
-/* Find capacity bytes for slot (unregistered): its own block, a block left
- * by another unregistered event, or new arena. A block of non-zero capacity
- * always has its data, and none is needed for capacity 0. */
+/* Find capacity bytes for slot (unregistered): the first block of an
+ * unregistered event (its own or another's) that is large enough, or new
+ * arena. A block of non-zero capacity always has its data, and none is
+ * needed for capacity 0. */
 static bool take_data_block(os_event_slot *slot, uint8_t capacity) {
-    if (slot->capacity >= capacity) return true;
     for (os_event_slot *other = os_events; other != &os_events[OS_CFG_MAX_EVENTS]; other++) {
         if (other->size == UNREGISTERED && other->capacity >= capacity) {
-            uint8_t *data = slot->data;
+            uint8_t *data = slot->data; /* swap: no block is lost */
             uint8_t cap = slot->capacity;
-            slot->data = other->data; /* swap, so the smaller block stays available */
+            slot->data = other->data;
             slot->capacity = other->capacity;
             other->data = data;
             other->capacity = cap;
