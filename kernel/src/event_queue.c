@@ -94,10 +94,11 @@ static OS_HOT void describe(sys_event_id event, const os_event_slot *slot, sys_e
 
 /* The occurrence at the ring's head becomes its event's kept data, unless
  * it no longer fits: the event was unregistered (or registered again
- * smaller) since it was sent. Out of line: the held occurrence is the
- * common case, and the ring's index kept in a register across the dispatch
- * loop cost it 4 cycles (bench/avr_bench.py). */
-static OS_COLD bool pop_ring(sys_event_data *out) {
+ * smaller) since it was sent. Its event's id + 1, or NOTHING_HELD if it had
+ * to be discarded. Out of line: the held occurrence is the common case, and
+ * the ring's index kept in a register across the dispatch loop cost it 4
+ * cycles (bench/avr_bench.py). */
+static OS_COLD uint8_t pop_ring(void) {
     sys_event_id event = get();
     uint8_t size = get();
     os.queued_bytes = (uint8_t)(os.queued_bytes - HEADER_BYTES - size);
@@ -105,20 +106,19 @@ static OS_COLD bool pop_ring(sys_event_data *out) {
     if (slot->size == OS_EVENT_UNREGISTERED || size > slot->capacity) {
         for (uint8_t n = size; n != 0; n--) get(); /* skipped */
         os_count(&os.stats.events_discarded);
-        return false;
+        return NOTHING_HELD;
     }
     slot->size = size;
     uint8_t *dest = slot->data;
     for (uint8_t n = size; n != 0; n--) *dest++ = get();
-    describe(event, slot, out);
-    return true;
+    return (uint8_t)(event + 1u);
 }
 
 bool os_event_queue_pop(sys_event_data *out) {
-    uint8_t held = os.held_event;
-    if (held == NOTHING_HELD) return pop_ring(out);
+    uint8_t id_plus_one = os.held_event;
+    if (id_plus_one == NOTHING_HELD && (id_plus_one = pop_ring()) == NOTHING_HELD) return false;
     os.held_event = NOTHING_HELD;
-    sys_event_id event = (sys_event_id)(held - 1u);
+    sys_event_id event = (sys_event_id)(id_plus_one - 1u);
     describe(event, &os_events[event], out);
     return true;
 }

@@ -116,10 +116,9 @@ static inline void wake(sys_tcb *t, sys_status status) {
  * A thread's wait is set exactly while it is blocked. */
 void os_wake_waiters(const sys_event_data *data) {
     if (os.event_waiters == 0) return; /* the common case costs one test */
-    sys_event_id event = data->event;
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait;
-        if (w == NULL || w->event != event) continue;
+        if (w == NULL || w->event != data->event) continue;
         if (w->condition != NULL && !w->condition(data)) continue;
         const uint8_t *src = (const uint8_t *)data->value;
         uint8_t *dst = w->buffer;
