@@ -53,28 +53,25 @@ static OS_HOT bool hold(sys_event_id event, os_event_slot *slot, const void *dat
     return true;
 }
 
-/* 8-bit arithmetic throughout: the ring and a record (2 + at most 253
- * bytes) fit in 8 bits. */
-static bool push(sys_event_id event, const void *data, uint8_t size) {
+/* Out of line, so the common case - held - is a leaf that saves no
+ * registers. 8-bit arithmetic throughout: the ring and a record (2 + at
+ * most 253 bytes) fit in 8 bits. The count goes up before the bytes go in
+ * (interrupts are masked), so it is not kept across the calls. */
+static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, uint8_t size) {
     uint8_t record = (uint8_t)(HEADER_BYTES + size);
     uint8_t used = os.queued_bytes;
-    if (record > (uint8_t)(QUEUE_BYTES - used)) return false;
+    if (record > (uint8_t)(QUEUE_BYTES - used)) {
+        os_count(&os.stats.event_queue_full);
+        return SYS_E_QUEUE_FULL;
+    }
+    used = (uint8_t)(used + record);
+    os.queued_bytes = used;
+    if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
     put(event);
     put(size);
     const uint8_t *src = (const uint8_t *)data;
     for (uint8_t n = size; n != 0; n--) put(*src++);
-    used = (uint8_t)(used + record);
-    os.queued_bytes = used;
-    if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
-    return true;
-}
-
-/* Out of line, so the common case - held - is a leaf that saves no
- * registers. */
-static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, uint8_t size) {
-    if (push(event, data, size)) return SYS_OK;
-    os_count(&os.stats.event_queue_full);
-    return SYS_E_QUEUE_FULL;
+    return SYS_OK;
 }
 
 sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
