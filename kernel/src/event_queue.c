@@ -21,7 +21,8 @@ static uint8_t ring[OS_CFG_EVENT_QUEUE_BYTES];
 static uint8_t head; /* next byte to pop; os.queued_bytes follow it */
 static uint8_t tail; /* next byte to push: head + os.queued_bytes, wrapped */
 
-void os_event_queue_reset(void) { head = tail = os.queued_bytes = os.held_event = NOTHING_HELD; }
+/* os.queued_bytes and os.held_event are cleared with the rest of os. */
+void os_event_queue_reset(void) { head = tail = 0; }
 
 /* The ring index after i. */
 static inline uint8_t after(uint8_t i) { return (uint8_t)(i + 1u == QUEUE_BYTES ? 0u : i + 1u); }

@@ -185,7 +185,7 @@ void os_subscriptions_remove_thread(sys_pid pid);
 void os_run_handlers(const sys_event_data *data);
 
 /* event_queue.c */
-void os_event_queue_reset(void);
+void os_event_queue_reset(void); /* after os is cleared */
 /* Queue an occurrence (interrupts masked): SYS_OK, or why not; a full
  * queue is counted. */
 sys_status os_event_post(sys_event_id event, const void *data, uint8_t size);
