@@ -94,8 +94,8 @@ sys_status Sys_Sleep(uint32_t ms) {
 }
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */
-static inline void leave_wait(sys_tcb *t) {
-    if (t->wait->event != OS_NO_EVENT) {
+static inline void leave_wait(sys_tcb *t, const os_wait *w) {
+    if (w->event != OS_NO_EVENT) {
         os.event_waiters--;
         os_listeners_changed();
     }
@@ -103,12 +103,16 @@ static inline void leave_wait(sys_tcb *t) {
 }
 
 void os_wait_abandon(sys_tcb *t) {
-    if (t->wait != NULL) leave_wait(t);
+    if (t->wait != NULL) leave_wait(t, t->wait);
 }
 
-static inline void wake(sys_tcb *t, sys_status status) {
-    t->wait->status = status;
-    leave_wait(t);
+/* Out of line: the dispatch and the timeouts share it. The status is
+ * stored last: a byte store may alias t->wait, which would then be read
+ * again. */
+static OS_COLD void wake(sys_tcb *t, sys_status status) {
+    os_wait *w = t->wait;
+    leave_wait(t, w);
+    w->status = status;
     os_make_ready(t);
 }
 
