@@ -105,19 +105,20 @@ static void pack_subscriptions(void) {
     sweep_needed = false;
 }
 
-/* Marked entries go now, or after the dispatch under way. */
-static void release_marked(void) {
+/* Subscriptions were marked: they go now, or after the dispatch under way.
+ * Out of line: every way a subscription ends shares it. */
+static OS_COLD void release_marked(void) {
+    os_listeners_changed();
     if (os.handling_event != 0)
         sweep_needed = true;
     else
         pack_subscriptions();
 }
 
-/* One subscription ends: marked now, gone when no dispatch walks the
- * array. Out of line: os_run_handlers keeps fewer registers across a call. */
+/* One subscription ends. Out of line: os_run_handlers keeps fewer
+ * registers across a call. */
 static OS_COLD void unsubscribe(subscription *sub) {
     sub->handler = NULL;
-    os_listeners_changed();
     release_marked();
 }
 
@@ -126,7 +127,6 @@ static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid
     for (subscription *sub = subs; sub != subs_end; sub++) {
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
-    os_listeners_changed();
     release_marked();
 }
 
