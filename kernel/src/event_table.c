@@ -6,9 +6,9 @@
  * unregistering in a loop never exhausts the arena.
  *
  * Subscriptions fill the front of one array, in subscription order: a new
- * one goes at the end, and the array is packed when some end. While
- * handlers run, an unsubscription only marks its entry; the array is
- * packed after the dispatch, so a handler that unsubscribes itself or
+ * one goes at the end. An unsubscription only marks its entry, which every
+ * walk skips; the array is packed when a new subscription needs the room,
+ * and never while handlers run, so a handler that unsubscribes itself or
  * another never makes the dispatch skip a later handler. */
 #include "kernel_internal.h"
 
@@ -18,7 +18,7 @@
 #define NOTHING_KEPT OS_EVENT_NOTHING_KEPT
 
 typedef struct subscription {
-    sys_event_handler handler; /* NULL: unsubscribed, until the array is packed */
+    sys_event_handler handler; /* NULL: unsubscribed (until the array is packed) */
     sys_event_condition condition;
     sys_event_id event;
     sys_pid pid;
@@ -30,7 +30,6 @@ static uint16_t arena_used;
 
 static subscription subs[OS_CFG_MAX_SUBSCRIPTIONS];
 static subscription *subs_end; /* past the last subscription: the rest is free */
-static bool sweep_needed;
 
 void os_event_table_reset(void) {
     for (os_event_slot *slot = os_events; slot != &os_events[OS_CFG_MAX_EVENTS]; slot++) {
@@ -40,7 +39,6 @@ void os_event_table_reset(void) {
     }
     arena_used = 0;
     subs_end = subs;
-    sweep_needed = false;
 }
 
 bool os_event_registered(sys_event_id event) {
@@ -102,24 +100,12 @@ static void pack_subscriptions(void) {
     for (const subscription *sub = subs; sub != subs_end; sub++)
         if (sub->handler != NULL) *kept++ = *sub;
     subs_end = kept;
-    sweep_needed = false;
 }
 
-/* Subscriptions were marked: they go now, or after the dispatch under way.
- * Out of line: every way a subscription ends shares it. */
-static OS_COLD void release_marked(void) {
-    os_listeners_changed();
-    if (os.handling_event != 0)
-        sweep_needed = true;
-    else
-        pack_subscriptions();
-}
-
-/* One subscription ends. Out of line: os_run_handlers keeps fewer
- * registers across a call. */
-static OS_COLD void unsubscribe(subscription *sub) {
+/* A subscription ends: its entry is marked. */
+static OS_HOT void unsubscribe(subscription *sub) {
     sub->handler = NULL;
-    release_marked();
+    os_listeners_changed();
 }
 
 /* Remove the subscriptions matching (event or any, pid or any). */
@@ -127,7 +113,7 @@ static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid
     for (subscription *sub = subs; sub != subs_end; sub++) {
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
-    release_marked();
+    os_listeners_changed();
 }
 
 sys_status Sys_Unregister_Event(sys_event_id event) {
@@ -161,6 +147,13 @@ static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_even
     return NULL;
 }
 
+/* Is there room for one more subscription? Marked entries make room,
+ * except while handlers run (they walk the array). */
+static bool subscription_room(void) {
+    if (subs_end == &subs[OS_CFG_MAX_SUBSCRIPTIONS] && os.handling_event == 0) pack_subscriptions();
+    return subs_end != &subs[OS_CFG_MAX_SUBSCRIPTIONS];
+}
+
 sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
                                   sys_event_condition condition) {
     if (handler == NULL) return SYS_E_INVALID;
@@ -173,7 +166,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
         st = SYS_E_INVALID;
     } else if (find_subscription(event, pid, handler) != NULL) {
         st = SYS_E_EXISTS;
-    } else if (subs_end == &subs[OS_CFG_MAX_SUBSCRIPTIONS]) { /* marked, unpacked ones count */
+    } else if (!subscription_room()) {
         os_count(&os.stats.subscription_pool_full);
         st = SYS_E_POOL_FULL;
     } else {
@@ -190,7 +183,8 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
 
 sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler) {
     port_irq_state_t s = port_irq_save();
-    subscription *sub = find_subscription(event, pid, handler);
+    /* A NULL handler would find a marked entry. */
+    subscription *sub = handler != NULL ? find_subscription(event, pid, handler) : NULL;
     if (sub != NULL) unsubscribe(sub);
     port_irq_restore(s);
     return sub != NULL ? SYS_OK : SYS_E_NOT_FOUND;
@@ -232,12 +226,11 @@ void os_run_handlers(const sys_event_data *data) {
             port_irq_disable();
             if (os.lock_depth != 0) close_leaked_section(sub->pid);
             /* Returning false unsubscribes. The entry is still this
-             * subscription: the array is packed only after the dispatch. */
+             * subscription: the array is never packed while handlers run. */
             if (!keep) unsubscribe(sub);
         }
     }
     os.handling_event = 0;
-    if (sweep_needed) pack_subscriptions();
 }
 
 sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size) {
