@@ -68,6 +68,19 @@ static bool take_data_block(os_event_slot *slot, uint8_t capacity) {
     return true;
 }
 
+/* The registration proper, interrupts masked. Out of line, so the slot is
+ * one pointer throughout rather than recomputed from its index. */
+static OS_COLD sys_status register_slot(os_event_slot *slot, uint8_t capacity) {
+    if (slot->size != UNREGISTERED) return SYS_E_EXISTS;
+    if (!take_data_block(slot, capacity)) {
+        os_count(&os.stats.event_data_full);
+        return SYS_E_POOL_FULL;
+    }
+    slot->size = NOTHING_KEPT;
+    os_listeners_changed();
+    return SYS_OK;
+}
+
 sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
     if (event >= OS_CFG_MAX_EVENTS || capacity > SYS_EVENT_DATA_MAX) return SYS_E_INVALID;
 #if !OS_CFG_CLOCK_EVENT
@@ -75,17 +88,7 @@ sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
 #endif
     if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
-    sys_status st = SYS_OK;
-    os_event_slot *slot = &os_events[event];
-    if (slot->size != UNREGISTERED) {
-        st = SYS_E_EXISTS;
-    } else if (!take_data_block(slot, capacity)) {
-        os_count(&os.stats.event_data_full);
-        st = SYS_E_POOL_FULL;
-    } else {
-        slot->size = NOTHING_KEPT;
-        os_listeners_changed();
-    }
+    sys_status st = register_slot(&os_events[event], capacity);
     port_irq_restore(s);
     return st;
 }
