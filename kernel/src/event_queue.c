@@ -76,7 +76,6 @@ static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, u
 }
 
 sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
-    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_NOT_REGISTERED;
     os_event_slot *slot = &os_events[event];
     if (slot->size == OS_EVENT_UNREGISTERED) return SYS_E_NOT_REGISTERED;
     if (size > slot->capacity) return SYS_E_TOO_BIG;
