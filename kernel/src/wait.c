@@ -145,17 +145,17 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
  * timeout works; os.timeout_next == now_ms means none is pending (the tick
  * meets that value again only after 2^32 ms, and then finds nothing due). */
 static OS_COLD void settle_timeouts(void) {
-    uint32_t now = os.now_ms, nearest = 0; /* ms from now; 0: none */
+    uint32_t nearest = 0; /* ms from now; 0: none */
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait; /* set exactly while t is blocked */
         if (w == NULL || !w->timed) continue;
-        uint32_t left = w->deadline - now;
+        uint32_t left = w->deadline - os.now_ms;
         if (left == 0)
             wake(t, SYS_E_TIMEOUT);
         else if (left - 1u < nearest - 1u) /* sooner: none (0) wraps to the farthest */
             nearest = left;
     }
-    os.timeout_next = now + nearest;
+    os.timeout_next = os.now_ms + nearest;
 }
 
 /* From the tick, once os.now_ms has advanced. */
