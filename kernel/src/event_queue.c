@@ -25,7 +25,10 @@ static uint8_t tail; /* next byte to push: head + os.queued_bytes, wrapped */
 void os_event_queue_reset(void) { head = tail = 0; }
 
 /* The ring index after i. */
-static inline uint8_t after(uint8_t i) { return (uint8_t)(i + 1u == QUEUE_BYTES ? 0u : i + 1u); }
+static inline uint8_t after(uint8_t i) {
+    if (++i == QUEUE_BYTES) i = 0;
+    return i;
+}
 
 /* One byte in at the tail, one out at the head: out of line, as the ring
  * is the uncommon path (the held occurrence is the common one), so a call
