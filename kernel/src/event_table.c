@@ -26,7 +26,12 @@ typedef struct subscription {
 
 os_event_slot os_events[OS_CFG_MAX_EVENTS];
 static uint8_t arena[OS_CFG_EVENT_DATA_BYTES];
-static uint16_t arena_used;
+#if OS_CFG_EVENT_DATA_BYTES > 255
+typedef uint16_t arena_index; /* hosts: a large arena */
+#else
+typedef uint8_t arena_index; /* robots: 8-bit arithmetic */
+#endif
+static arena_index arena_used;
 
 static subscription subs[OS_CFG_MAX_SUBSCRIPTIONS];
 static subscription *subs_end; /* past the last subscription: the rest is free */
@@ -61,10 +66,10 @@ static bool take_data_block(os_event_slot *slot, uint8_t capacity) {
             return true;
         }
     }
-    if ((size_t)arena_used + capacity > sizeof arena) return false;
+    if (capacity > (arena_index)(sizeof arena - arena_used)) return false;
     slot->data = &arena[arena_used];
     slot->capacity = capacity;
-    arena_used = (uint16_t)(arena_used + capacity);
+    arena_used = (arena_index)(arena_used + capacity);
     return true;
 }
 
