@@ -81,8 +81,7 @@ static OS_COLD sys_status register_slot(os_event_slot *slot, uint8_t capacity) {
         os_count(&os.stats.event_data_full);
         return SYS_E_POOL_FULL;
     }
-    slot->size = NOTHING_KEPT;
-    os_listeners_changed();
+    slot->size = NOTHING_KEPT; /* no listener yet: the clock event's state stays */
     return SYS_OK;
 }
 
