@@ -21,10 +21,14 @@ static uint8_t ring[OS_CFG_EVENT_QUEUE_BYTES];
 static uint8_t head; /* next byte to pop; os.queued_bytes follow it */
 static uint8_t tail; /* next byte to push: head + os.queued_bytes, wrapped */
 
-void os_event_queue_reset(void) { head = tail = os.queued_bytes = os.held_event = NOTHING_HELD; }
+/* os.queued_bytes and os.held_event are cleared with the rest of os. */
+void os_event_queue_reset(void) { head = tail = 0; }
 
 /* The ring index after i. */
-static inline uint8_t after(uint8_t i) { return (uint8_t)(i + 1u == QUEUE_BYTES ? 0u : i + 1u); }
+static inline uint8_t after(uint8_t i) {
+    if (++i == QUEUE_BYTES) i = 0;
+    return i;
+}
 
 /* One byte in at the tail, one out at the head: out of line, as the ring
  * is the uncommon path (the held occurrence is the common one), so a call
@@ -53,32 +57,28 @@ static OS_HOT bool hold(sys_event_id event, os_event_slot *slot, const void *dat
     return true;
 }
 
-/* 8-bit arithmetic throughout: the ring and a record (2 + at most 253
- * bytes) fit in 8 bits. */
-static bool push(sys_event_id event, const void *data, uint8_t size) {
+/* Out of line, so the common case - held - is a leaf that saves no
+ * registers. 8-bit arithmetic throughout: the ring and a record (2 + at
+ * most 253 bytes) fit in 8 bits. The count goes up before the bytes go in
+ * (interrupts are masked), so it is not kept across the calls. */
+static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, uint8_t size) {
     uint8_t record = (uint8_t)(HEADER_BYTES + size);
     uint8_t used = os.queued_bytes;
-    if (record > (uint8_t)(QUEUE_BYTES - used)) return false;
+    if (record > (uint8_t)(QUEUE_BYTES - used)) {
+        os_count(&os.stats.event_queue_full);
+        return SYS_E_QUEUE_FULL;
+    }
+    used = (uint8_t)(used + record);
+    os.queued_bytes = used;
+    if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
     put(event);
     put(size);
     const uint8_t *src = (const uint8_t *)data;
     for (uint8_t n = size; n != 0; n--) put(*src++);
-    used = (uint8_t)(used + record);
-    os.queued_bytes = used;
-    if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
-    return true;
-}
-
-/* Out of line, so the common case - held - is a leaf that saves no
- * registers. */
-static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, uint8_t size) {
-    if (push(event, data, size)) return SYS_OK;
-    os_count(&os.stats.event_queue_full);
-    return SYS_E_QUEUE_FULL;
+    return SYS_OK;
 }
 
 sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
-    if (event >= OS_CFG_MAX_EVENTS) return SYS_E_NOT_REGISTERED;
     os_event_slot *slot = &os_events[event];
     if (slot->size == OS_EVENT_UNREGISTERED) return SYS_E_NOT_REGISTERED;
     if (size > slot->capacity) return SYS_E_TOO_BIG;
@@ -94,10 +94,11 @@ static OS_HOT void describe(sys_event_id event, const os_event_slot *slot, sys_e
 
 /* The occurrence at the ring's head becomes its event's kept data, unless
  * it no longer fits: the event was unregistered (or registered again
- * smaller) since it was sent. Out of line: the held occurrence is the
- * common case, and the ring's index kept in a register across the dispatch
- * loop cost it 4 cycles (bench/avr_bench.py). */
-static OS_COLD bool pop_ring(sys_event_data *out) {
+ * smaller) since it was sent. Its event's id + 1, or NOTHING_HELD if it had
+ * to be discarded. Out of line: the held occurrence is the common case, and
+ * the ring's index kept in a register across the dispatch loop cost it 4
+ * cycles (bench/avr_bench.py). */
+static OS_COLD uint8_t pop_ring(void) {
     sys_event_id event = get();
     uint8_t size = get();
     os.queued_bytes = (uint8_t)(os.queued_bytes - HEADER_BYTES - size);
@@ -105,20 +106,19 @@ static OS_COLD bool pop_ring(sys_event_data *out) {
     if (slot->size == OS_EVENT_UNREGISTERED || size > slot->capacity) {
         for (uint8_t n = size; n != 0; n--) get(); /* skipped */
         os_count(&os.stats.events_discarded);
-        return false;
+        return NOTHING_HELD;
     }
     slot->size = size;
     uint8_t *dest = slot->data;
     for (uint8_t n = size; n != 0; n--) *dest++ = get();
-    describe(event, slot, out);
-    return true;
+    return (uint8_t)(event + 1u);
 }
 
 bool os_event_queue_pop(sys_event_data *out) {
-    uint8_t held = os.held_event;
-    if (held == NOTHING_HELD) return pop_ring(out);
+    uint8_t id_plus_one = os.held_event;
+    if (id_plus_one == NOTHING_HELD && (id_plus_one = pop_ring()) == NOTHING_HELD) return false;
     os.held_event = NOTHING_HELD;
-    sys_event_id event = (sys_event_id)(held - 1u);
+    sys_event_id event = (sys_event_id)(id_plus_one - 1u);
     describe(event, &os_events[event], out);
     return true;
 }

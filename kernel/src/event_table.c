@@ -5,10 +5,11 @@
  * reuses the first such block that is large enough, so registering and
  * unregistering in a loop never exhausts the arena.
  *
- * Subscriptions form one list in subscription order. While handlers run, an
- * unsubscription only marks its entry; the entries are unlinked after the
- * dispatch, so a handler that unsubscribes itself or another never makes
- * the dispatch skip a later handler. */
+ * Subscriptions fill the front of one array, in subscription order: a new
+ * one goes at the end. An unsubscription only marks its entry, which every
+ * walk skips; the array is packed when a new subscription needs the room,
+ * and never while handlers run, so a handler that unsubscribes itself or
+ * another never makes the dispatch skip a later handler. */
 #include "kernel_internal.h"
 
 #include <string.h>
@@ -17,20 +18,23 @@
 #define NOTHING_KEPT OS_EVENT_NOTHING_KEPT
 
 typedef struct subscription {
-    sys_event_handler handler; /* NULL: free, or unsubscribed during dispatch */
+    sys_event_handler handler; /* NULL: unsubscribed (until the array is packed) */
     sys_event_condition condition;
-    struct subscription *next; /* a pointer, not an index: no multiply per step */
     sys_event_id event;
     sys_pid pid;
 } subscription;
 
 os_event_slot os_events[OS_CFG_MAX_EVENTS];
 static uint8_t arena[OS_CFG_EVENT_DATA_BYTES];
-static uint16_t arena_used;
+#if OS_CFG_EVENT_DATA_BYTES > 255
+typedef uint16_t arena_index; /* hosts: a large arena */
+#else
+typedef uint8_t arena_index; /* robots: 8-bit arithmetic */
+#endif
+static arena_index arena_used;
 
 static subscription subs[OS_CFG_MAX_SUBSCRIPTIONS];
-static subscription *subs_head, *subs_tail;
-static bool sweep_needed;
+static subscription *subs_end; /* past the last subscription: the rest is free */
 
 void os_event_table_reset(void) {
     for (os_event_slot *slot = os_events; slot != &os_events[OS_CFG_MAX_EVENTS]; slot++) {
@@ -39,36 +43,46 @@ void os_event_table_reset(void) {
         slot->size = UNREGISTERED;
     }
     arena_used = 0;
-    memset(subs, 0, sizeof subs);
-    subs_head = subs_tail = NULL;
-    sweep_needed = false;
+    subs_end = subs;
 }
 
 bool os_event_registered(sys_event_id event) {
     return event < OS_CFG_MAX_EVENTS && os_events[event].size != UNREGISTERED;
 }
 
-/* Find capacity bytes for slot (unregistered): its own block, a block left
- * by another unregistered event, or new arena. A block of non-zero capacity
- * always has its data, and none is needed for capacity 0. */
+/* Find capacity bytes for slot (unregistered): the first block of an
+ * unregistered event (its own or another's) that is large enough, or new
+ * arena. A block of non-zero capacity always has its data, and none is
+ * needed for capacity 0. */
 static bool take_data_block(os_event_slot *slot, uint8_t capacity) {
-    if (slot->capacity >= capacity) return true;
     for (os_event_slot *other = os_events; other != &os_events[OS_CFG_MAX_EVENTS]; other++) {
         if (other->size == UNREGISTERED && other->capacity >= capacity) {
-            uint8_t *data = slot->data;
+            uint8_t *data = slot->data; /* swap: no block is lost */
             uint8_t cap = slot->capacity;
-            slot->data = other->data; /* swap, so the smaller block stays available */
+            slot->data = other->data;
             slot->capacity = other->capacity;
             other->data = data;
             other->capacity = cap;
             return true;
         }
     }
-    if ((size_t)arena_used + capacity > sizeof arena) return false;
+    if (capacity > (arena_index)(sizeof arena - arena_used)) return false;
     slot->data = &arena[arena_used];
     slot->capacity = capacity;
-    arena_used = (uint16_t)(arena_used + capacity);
+    arena_used = (arena_index)(arena_used + capacity);
     return true;
+}
+
+/* The registration proper, interrupts masked. Out of line, so the slot is
+ * one pointer throughout rather than recomputed from its index. */
+static OS_COLD sys_status register_slot(os_event_slot *slot, uint8_t capacity) {
+    if (slot->size != UNREGISTERED) return SYS_E_EXISTS;
+    if (!take_data_block(slot, capacity)) {
+        os_count(&os.stats.event_data_full);
+        return SYS_E_POOL_FULL;
+    }
+    slot->size = NOTHING_KEPT; /* no listener yet: the clock event's state stays */
+    return SYS_OK;
 }
 
 sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
@@ -78,17 +92,7 @@ sys_status Sys_Register_Event_Sized(sys_event_id event, uint8_t capacity) {
 #endif
     if (os.isr_depth != 0) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
-    sys_status st = SYS_OK;
-    os_event_slot *slot = &os_events[event];
-    if (slot->size != UNREGISTERED) {
-        st = SYS_E_EXISTS;
-    } else if (!take_data_block(slot, capacity)) {
-        os_count(&os.stats.event_data_full);
-        st = SYS_E_POOL_FULL;
-    } else {
-        slot->size = NOTHING_KEPT;
-        os_listeners_changed();
-    }
+    sys_status st = register_slot(&os_events[event], capacity);
     port_irq_restore(s);
     return st;
 }
@@ -97,44 +101,26 @@ sys_status Sys_Register_Event(sys_event_id event) {
     return Sys_Register_Event_Sized(event, OS_CFG_DEFAULT_EVENT_DATA);
 }
 
-static void unlink_dead_subscriptions(void) {
-    subscription **link = &subs_head;
-    subs_tail = NULL;
-    while (*link != NULL) {
-        subscription *sub = *link;
-        if (sub->handler == NULL) {
-            *link = sub->next;
-        } else {
-            subs_tail = sub;
-            link = &sub->next;
-        }
-    }
-    sweep_needed = false;
+/* The marked entries go; the others move up, in their order. */
+static void pack_subscriptions(void) {
+    subscription *kept = subs;
+    for (const subscription *sub = subs; sub != subs_end; sub++)
+        if (sub->handler != NULL) *kept++ = *sub;
+    subs_end = kept;
 }
 
-/* Marked entries are unlinked now, or after the dispatch under way. */
-static void release_marked(void) {
-    if (os.handling_event != 0)
-        sweep_needed = true;
-    else
-        unlink_dead_subscriptions();
-}
-
-/* One subscription ends: marked now, unlinked when no dispatch walks the
- * list. Out of line: os_run_handlers keeps fewer registers across a call. */
-static OS_COLD void unsubscribe(subscription *sub) {
+/* A subscription ends: its entry is marked. */
+static OS_HOT void unsubscribe(subscription *sub) {
     sub->handler = NULL;
     os_listeners_changed();
-    release_marked();
 }
 
 /* Remove the subscriptions matching (event or any, pid or any). */
 static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid, bool any_pid) {
-    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
+    for (subscription *sub = subs; sub != subs_end; sub++) {
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
     os_listeners_changed();
-    release_marked();
 }
 
 sys_status Sys_Unregister_Event(sys_event_id event) {
@@ -162,20 +148,17 @@ bool Sys_IsEventRegistered(sys_event_id event) {
 }
 
 static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_event_handler h) {
-    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
+    for (subscription *sub = subs; sub != subs_end; sub++) {
         if (sub->handler == h && sub->event == event && sub->pid == pid) return sub;
     }
     return NULL;
 }
 
-static subscription *free_subscription(void) {
-    for (subscription *s = subs; s != &subs[OS_CFG_MAX_SUBSCRIPTIONS]; s++) {
-        if (s->handler != NULL) continue;
-        bool linked = false; /* a marked entry awaiting its sweep is not free yet */
-        for (const subscription *l = subs_head; l != NULL; l = l->next) linked |= (l == s);
-        if (!linked) return s;
-    }
-    return NULL;
+/* Is there room for one more subscription? Marked entries make room,
+ * except while handlers run (they walk the array). */
+static bool subscription_room(void) {
+    if (subs_end == &subs[OS_CFG_MAX_SUBSCRIPTIONS] && os.handling_event == 0) pack_subscriptions();
+    return subs_end != &subs[OS_CFG_MAX_SUBSCRIPTIONS];
 }
 
 sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
@@ -183,7 +166,6 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     if (handler == NULL) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
-    subscription *sub;
     if (!os_event_registered(event)) {
         st = SYS_E_NOT_REGISTERED;
     } else if (pid != SYS_PID_SYSTEM &&
@@ -191,20 +173,15 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
         st = SYS_E_INVALID;
     } else if (find_subscription(event, pid, handler) != NULL) {
         st = SYS_E_EXISTS;
-    } else if ((sub = free_subscription()) == NULL) {
+    } else if (!subscription_room()) {
         os_count(&os.stats.subscription_pool_full);
         st = SYS_E_POOL_FULL;
     } else {
+        subscription *sub = subs_end++;
         sub->handler = handler;
         sub->condition = condition;
         sub->event = event;
         sub->pid = pid;
-        sub->next = NULL;
-        if (subs_tail == NULL)
-            subs_head = sub;
-        else
-            subs_tail->next = sub;
-        subs_tail = sub;
         os_listeners_changed();
     }
     port_irq_restore(s);
@@ -213,7 +190,8 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
 
 sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler) {
     port_irq_state_t s = port_irq_save();
-    subscription *sub = find_subscription(event, pid, handler);
+    /* A NULL handler would find a marked entry. */
+    subscription *sub = handler != NULL ? find_subscription(event, pid, handler) : NULL;
     if (sub != NULL) unsubscribe(sub);
     port_irq_restore(s);
     return sub != NULL ? SYS_OK : SYS_E_NOT_FOUND;
@@ -223,7 +201,7 @@ void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true,
 
 #if OS_CFG_CLOCK_EVENT
 bool os_event_has_listeners(sys_event_id event) {
-    for (const subscription *sub = subs_head; sub != NULL; sub = sub->next)
+    for (const subscription *sub = subs; sub != subs_end; sub++)
         if (sub->handler != NULL && sub->event == event) return true;
     for (const sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++)
         if (t->wait != NULL && t->wait->event == event) return true; /* wait: set while blocked */
@@ -240,29 +218,27 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
 
 /* Runs in the system thread with interrupts masked; each handler runs with
  * interrupts enabled. Handlers subscribed during the dispatch wait for the
- * next occurrence. */
+ * next occurrence. The event is read from data and the entry, not kept in
+ * a register across the handler calls: one saved register fewer here and
+ * in the dispatch loop this is inlined into (bench/avr_bench.py). */
 void os_run_handlers(const sys_event_data *data) {
-    sys_event_id event = data->event;
-    const subscription *last = subs_tail;
-    os.handling_event = (uint8_t)(event + 1u);
-    for (subscription *sub = subs_head; sub != NULL; sub = sub->next) {
+    const subscription *end = subs_end; /* later subscriptions wait for the next occurrence */
+    os.handling_event = (uint8_t)(data->event + 1u);
+    for (subscription *sub = subs; sub != end; sub++) {
         sys_event_handler handler = sub->handler;
-        if (handler != NULL && sub->event == event) {
+        if (handler != NULL && sub->event == data->event) {
             sys_event_condition condition = sub->condition;
             bool keep = true;
             port_irq_enable();
-            if (condition == NULL || condition(data)) keep = handler(sub->pid, event, data);
+            if (condition == NULL || condition(data)) keep = handler(sub->pid, sub->event, data);
             port_irq_disable();
             if (os.lock_depth != 0) close_leaked_section(sub->pid);
-            /* Returning false unsubscribes. The entry cannot have been
-             * reused meanwhile: a cleared entry stays linked until the
-             * sweep, and only unlinked entries are free. */
+            /* Returning false unsubscribes. The entry is still this
+             * subscription: the array is never packed while handlers run. */
             if (!keep) unsubscribe(sub);
         }
-        if (sub == last) break;
     }
     os.handling_event = 0;
-    if (sweep_needed) unlink_dead_subscriptions();
 }
 
 sys_status Sys_Get_EventData(sys_event_id event, void *buffer, uint8_t capacity, uint8_t *size) {

@@ -189,9 +189,9 @@ void os_subscriptions_remove_thread(sys_pid pid);
 void os_run_handlers(const sys_event_data *data);
 
 /* event_queue.c */
-void os_event_queue_reset(void);
-/* Queue an occurrence (interrupts masked): SYS_OK, or why not; a full
- * queue is counted. */
+void os_event_queue_reset(void); /* after os is cleared */
+/* Queue an occurrence of event (< OS_CFG_MAX_EVENTS, interrupts masked):
+ * SYS_OK, or why not; a full queue is counted. */
 sys_status os_event_post(sys_event_id event, const void *data, uint8_t size);
 static OS_HOT bool os_event_queue_empty(void) { return (os.queued_bytes | os.held_event) == 0; }
 /* Is the event's occurrence held in its kept data, not yet dispatched? */

@@ -14,30 +14,30 @@ static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
     settle_timeouts(); /* w's may be the nearest deadline now (none is due) */
 }
 
-static sys_status block_current(os_wait *w, uint32_t timeout_ms) {
-    if (w->event != OS_NO_EVENT) { /* a sleep listens to nothing */
+/* The running thread blocks on w until woken: the status it is woken with
+ * (every waker sets one). */
+static sys_status block_current(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
+    if (event != OS_NO_EVENT) { /* a sleep listens to nothing */
         os.event_waiters++;
         os_listeners_changed();
     }
-    os.current->wait = w;
-    if (w->timed) start_timeout(w, timeout_ms);
-    os.current->state = SYS_PROCESS_BLOCKED;
+    w->event = event;
+    w->timed = timed;
+    sys_tcb *cur = os.current;
+    cur->wait = w;
+    cur->state = SYS_PROCESS_BLOCKED;
+    if (timed) start_timeout(w, timeout_ms); /* w is not due: timeout_ms > 0 */
     os_schedule(); /* returns once woken */
     return w->status;
 }
 
-static sys_status wait_for(sys_event_id event, sys_event_condition condition, bool timed,
-                           uint32_t timeout_ms, void *buffer, uint8_t capacity, uint8_t *size) {
-    if (buffer == NULL && capacity != 0) return SYS_E_INVALID;
-    if (!os_in_thread() || os.lock_depth != 0) return SYS_E_CONTEXT;
-    os_wait w;
-    w.buffer = (uint8_t *)buffer;
-    w.condition = condition;
-    w.event = event;
-    w.capacity = capacity;
-    w.size = 0;
-    w.status = SYS_OK;
-    w.timed = timed;
+/* The running thread waits as w says (the caller sets what an event's
+ * waker reads: buffer, condition, capacity, size): the status it is woken
+ * with, or why it cannot wait. The event and the kind of wait come as
+ * arguments, not through w, so a caller's constants fold: a sleep's tests
+ * vanish and it sets only what the tick and the wakers read. */
+static sys_status block(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
+    if ((os.isr_depth | os.lock_depth) != 0 || os.current == OS_SYSTEM) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     sys_status st;
     if (event != OS_NO_EVENT && !os_event_registered(event))
@@ -45,8 +45,20 @@ static sys_status wait_for(sys_event_id event, sys_event_condition condition, bo
     else if (timed && timeout_ms == 0)
         st = SYS_E_TIMEOUT;
     else
-        st = block_current(&w, timeout_ms);
+        st = block_current(w, event, timed, timeout_ms);
     port_irq_restore(s);
+    return st;
+}
+
+static sys_status wait_for(sys_event_id event, sys_event_condition condition, bool timed,
+                           uint32_t timeout_ms, void *buffer, uint8_t capacity, uint8_t *size) {
+    if (buffer == NULL && capacity != 0) return SYS_E_INVALID;
+    os_wait w;
+    w.buffer = (uint8_t *)buffer;
+    w.condition = condition;
+    w.capacity = capacity;
+    w.size = 0;
+    sys_status st = block(&w, event, timed, timeout_ms);
     if (size != NULL) *size = w.size;
     return st;
 }
@@ -76,13 +88,14 @@ sys_status Sys_Wait_for_Condition_Timeout(sys_event_id event, sys_event_conditio
 }
 
 sys_status Sys_Sleep(uint32_t ms) {
-    sys_status st = wait_for(OS_NO_EVENT, NULL, true, ms, NULL, 0, NULL);
+    os_wait w; /* only woken by its timeout: no buffer, condition or size */
+    sys_status st = block(&w, OS_NO_EVENT, true, ms);
     return st == SYS_E_TIMEOUT ? SYS_OK : st;
 }
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */
-static inline void leave_wait(sys_tcb *t) {
-    if (t->wait->event != OS_NO_EVENT) {
+static inline void leave_wait(sys_tcb *t, const os_wait *w) {
+    if (w->event != OS_NO_EVENT) {
         os.event_waiters--;
         os_listeners_changed();
     }
@@ -90,12 +103,16 @@ static inline void leave_wait(sys_tcb *t) {
 }
 
 void os_wait_abandon(sys_tcb *t) {
-    if (t->wait != NULL) leave_wait(t);
+    if (t->wait != NULL) leave_wait(t, t->wait);
 }
 
-static inline void wake(sys_tcb *t, sys_status status) {
-    t->wait->status = status;
-    leave_wait(t);
+/* Out of line: the dispatch and the timeouts share it. The status is
+ * stored last: a byte store may alias t->wait, which would then be read
+ * again. */
+static OS_COLD void wake(sys_tcb *t, sys_status status) {
+    os_wait *w = t->wait;
+    leave_wait(t, w);
+    w->status = status;
     os_make_ready(t);
 }
 
@@ -103,10 +120,9 @@ static inline void wake(sys_tcb *t, sys_status status) {
  * A thread's wait is set exactly while it is blocked. */
 void os_wake_waiters(const sys_event_data *data) {
     if (os.event_waiters == 0) return; /* the common case costs one test */
-    sys_event_id event = data->event;
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait;
-        if (w == NULL || w->event != event) continue;
+        if (w == NULL || w->event != data->event) continue;
         if (w->condition != NULL && !w->condition(data)) continue;
         const uint8_t *src = (const uint8_t *)data->value;
         uint8_t *dst = w->buffer;
@@ -129,17 +145,17 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
  * timeout works; os.timeout_next == now_ms means none is pending (the tick
  * meets that value again only after 2^32 ms, and then finds nothing due). */
 static OS_COLD void settle_timeouts(void) {
-    uint32_t now = os.now_ms, nearest = 0; /* ms from now; 0: none */
+    uint32_t nearest = 0; /* ms from now; 0: none */
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait; /* set exactly while t is blocked */
         if (w == NULL || !w->timed) continue;
-        uint32_t left = w->deadline - now;
+        uint32_t left = w->deadline - os.now_ms;
         if (left == 0)
             wake(t, SYS_E_TIMEOUT);
         else if (left - 1u < nearest - 1u) /* sooner: none (0) wraps to the farthest */
             nearest = left;
     }
-    os.timeout_next = now + nearest;
+    os.timeout_next = os.now_ms + nearest;
 }
 
 /* From the tick, once os.now_ms has advanced. */

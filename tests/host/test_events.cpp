@@ -128,6 +128,45 @@ TEST_F(Events, HandlersOfOneEventRunInSubscriptionOrder) {
     EXPECT_EQ("third h0(0) second", joined());
 }
 
+// Unsubscribing only marks an entry; a subscription that needs its room
+// gets it, and the handlers left keep their order.
+static bool new_handler(sys_pid, sys_event_id, const sys_event_data *) {
+    note("new");
+    return true;
+}
+static bool quiet_handler(sys_pid, sys_event_id, const sys_event_data *) { return true; }
+
+TEST_F(Events, UnsubscribedEntriesMakeRoomAndTheOrderStays) {
+    sys_status fill = SYS_E_INVALID, full = SYS_OK, unsub = SYS_E_INVALID, null_handler = SYS_OK,
+               reuse = SYS_E_INVALID, full_again = SYS_OK;
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, third_handler, nullptr);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, log_handler, nullptr);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, second_handler, nullptr);
+        for (sys_event_id e = EV_B; e < EV_B + OS_CFG_MAX_SUBSCRIPTIONS - 3; e++) {
+            Sys_Register_Event(e);
+            fill = Sys_Subscribe_to_Event(e, SYS_PID_SYSTEM, log_handler, nullptr);
+        }
+        full = Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, new_handler, nullptr);
+        unsub = Sys_Unsubscribe_from_Event(EV_A, SYS_PID_SYSTEM, log_handler);
+        null_handler = Sys_Unsubscribe_from_Event(EV_A, SYS_PID_SYSTEM, nullptr);
+        reuse = Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, new_handler, nullptr);
+        full_again = Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, quiet_handler, nullptr);
+    });
+    settle();
+    irq([] { Sys_Send_Event(EV_A, nullptr, 0); });
+    settle();
+    EXPECT_STATUS(SYS_OK, fill);
+    EXPECT_STATUS(SYS_E_POOL_FULL, full);
+    EXPECT_STATUS(SYS_OK, unsub);
+    EXPECT_STATUS(SYS_E_NOT_FOUND, null_handler) << "a NULL handler names no subscription";
+    EXPECT_STATUS(SYS_OK, reuse) << "the unsubscribed entry makes room";
+    EXPECT_STATUS(SYS_E_POOL_FULL, full_again);
+    EXPECT_EQ("third second new", joined());
+    EXPECT_EQ(2u, stats().subscription_pool_full);
+}
+
 TEST_F(Events, SendCopiesTheData) {
     boot([&] {
         Sys_Register_Event(EV_A);
