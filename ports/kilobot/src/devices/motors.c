@@ -23,14 +23,16 @@ static void pwm_start(void) {
     TCCR2B = _BV(CS21);
 }
 
+/* Both motors change at once: an interrupt between the writes would leave
+ * the robot driving with one new and one old duty for its duration. */
 void kilobot_motors_apply(uint8_t left, uint8_t right) {
+    uint8_t com = (uint8_t)((left != 0 ? _BV(COM2A1) : 0) | (right != 0 ? _BV(COM2B1) : 0));
+    port_irq_state_t s = port_irq_save();
     if (!(TCCR2B & _BV(CS21))) pwm_start();
     OCR2A = left;
     OCR2B = right;
-    uint8_t com = TCCR2A & (uint8_t)~(_BV(COM2A1) | _BV(COM2B1));
-    if (left != 0) com |= _BV(COM2A1);
-    if (right != 0) com |= _BV(COM2B1);
-    TCCR2A = com;
+    TCCR2A = (uint8_t)((TCCR2A & (uint8_t)~(_BV(COM2A1) | _BV(COM2B1))) | com);
+    port_irq_restore(s);
 }
 
 /* Interrupt context, every 1 ms while a limit is armed. */
