@@ -24,7 +24,7 @@ struct PortCosts {
 
 const PortCosts &costs_of(const std::string &port) {
     static const std::vector<PortCosts> all = {
-        {"kilobot", 64, /* C */ 159, /* per thread */ 12, /* per event */ 4},
+        {"kilobot", 64, /* C */ 148, /* per thread */ 12, /* per event */ 4},
     };
     for (const auto &c : all)
         if (c.port == port) return c;
