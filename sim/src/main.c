@@ -64,9 +64,17 @@ static avr_cycle_count_t own_cycles(const robot *r, avr_cycle_count_t c) {
 static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     r->index = index;
     r->state = cpu_Running;
-    r->avr = firmware_load(o->elf);
+    const char *elf = firmware_of(o, index);
+    r->avr = firmware_load(elf);
     if (r->avr == NULL) return -1;
-    nominal_hz = r->avr->frequency;
+    if (index == 0) {
+        nominal_hz = r->avr->frequency;
+    } else if (r->avr->frequency != nominal_hz) {
+        fprintf(stderr, "openswarm-sim: %s runs at %u Hz, %s at %u Hz: robots in lockstep share "
+                        "one clock rate (--clock-spread varies it)\n",
+                elf, (unsigned)r->avr->frequency, o->elf, (unsigned)nominal_hz);
+        return -1;
+    }
     if (o->clock_spread_pct != 0)
         r->avr->frequency = (uint32_t)lround(
             nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
@@ -149,10 +157,25 @@ static int report(int n, const options *o) {
     return status;
 }
 
+/* Which robots run which firmware, when they differ: "robot 0 runs
+ * a.elf; robots 1..3 run b.elf". */
+static void print_firmware_legend(const options *o) {
+    fprintf(stderr, "openswarm-sim: ");
+    for (int i = 0; i < o->n_elves; i++) {
+        int last = i == o->n_elves - 1 ? o->robots - 1 : i;
+        if (last == i)
+            fprintf(stderr, "%srobot %d runs %s", i ? "; " : "", i, o->elves[i]);
+        else
+            fprintf(stderr, "%srobots %d..%d run %s", i ? "; " : "", i, last, o->elves[i]);
+    }
+    fprintf(stderr, "\n");
+}
+
 int main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
-    if (firmware_check(o.elf) != 0) return EXIT_USAGE;
+    for (int i = 0; i < o.n_elves; i++)
+        if (firmware_check(o.elves[i]) != 0) return EXIT_USAGE;
     profiling = o.profile;
     if (profiling && profile_load(o.elf) != 0) return EXIT_USAGE;
     FILE *csv = NULL;
@@ -170,6 +193,7 @@ int main(int argc, char **argv) {
     if (o.robots > 1 && !o.quiet) /* "[robot 0]" is an index; programs see the uid */
         fprintf(stderr, "openswarm-sim: robots 0..%d have uids %d..%d\n", o.robots - 1, o.uid,
                 o.uid + o.robots - 1);
+    if (o.n_elves > 1 && !o.quiet) print_firmware_legend(&o);
     if (o.ir_log) ir_log_enable();
     ohc_attach(robots, o.robots, &o);
 

@@ -20,10 +20,11 @@ typedef struct placement_options {
 
 static void usage(FILE *out) {
     fprintf(out,
-            "usage: openswarm-sim [options] FIRMWARE.elf\n"
-            "Run robots' AVR firmware in simavr, cycle-exactly, and print their consoles.\n\n"
+            "usage: openswarm-sim [options] FIRMWARE.elf [FIRMWARE.elf ...]\n"
+            "Run robots' AVR firmware in simavr, cycle-exactly, and print their consoles.\n"
+            "Robot k runs the k-th FIRMWARE.elf; the last one also runs on the robots after it.\n\n"
             "  -t, --time SECONDS   simulated time to run (default 10)\n"
-            "  -n, --robots N       run N robots with this firmware, in lockstep (default 1)\n"
+            "  -n, --robots N       run N robots in lockstep (default: one per FIRMWARE.elf)\n"
             "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
             "  -q, --quiet          do not print the consoles\n"
             "      --trace          print the robots' LED colour and motor duty changes\n"
@@ -136,6 +137,30 @@ static int place_robots(const placement_options *given, options *o) {
     return 0;
 }
 
+/* The FIRMWARE.elf arguments; several set the default robot count. */
+static int take_firmware(int n, char **paths, placement_options *place, options *o) {
+    if (n == 0) {
+        fprintf(stderr, "openswarm-sim: expected a FIRMWARE.elf (see --help)\n");
+        return -1;
+    }
+    if (n > MAX_ROBOTS) {
+        fprintf(stderr, "openswarm-sim: %d firmware files: openswarm-sim runs at most %d robots\n", n,
+                MAX_ROBOTS);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) o->elves[i] = paths[i];
+    o->n_elves = n;
+    o->elf = paths[0];
+    if (n > 1 && !place->robots_given && place->positions == NULL) o->robots = n;
+    return 0;
+}
+
+static int one_firmware(const options *o) {
+    for (int i = 1; i < o->n_elves; i++)
+        if (strcmp(o->elves[i], o->elves[0]) != 0) return 0;
+    return 1;
+}
+
 int parse_options(int argc, char **argv, options *o) {
     static const struct option longopts[] = {
         {"time", required_argument, 0, 't'},       {"robots", required_argument, 0, 'n'},
@@ -207,11 +232,18 @@ int parse_options(int argc, char **argv, options *o) {
         default: usage(stderr); return -1;
         }
     }
-    if (optind != argc - 1) {
-        fprintf(stderr, "openswarm-sim: expected one FIRMWARE.elf (see --help)\n");
+    if (take_firmware(argc - optind, argv + optind, &place, o) != 0) return -1;
+    if (place_robots(&place, o) != 0) return -1;
+    if (o->n_elves > o->robots) {
+        fprintf(stderr, "openswarm-sim: %d firmware files for %d robots: give at most one per robot "
+                        "(the last one also runs on the robots after it)\n", o->n_elves, o->robots);
         return -1;
     }
-    if (place_robots(&place, o) != 0) return -1;
+    if (o->profile && !one_firmware(o)) {
+        fprintf(stderr, "openswarm-sim: --profile names the functions of one firmware: run one "
+                        "FIRMWARE.elf on every robot\n");
+        return -1;
+    }
     if (o->robots > 1 && (o->gdb_port != 0 || o->vcd != NULL)) {
         fprintf(stderr, "openswarm-sim: --gdb and --vcd follow one robot: drop --robots\n");
         return -1;
@@ -221,6 +253,9 @@ int parse_options(int argc, char **argv, options *o) {
         fprintf(stderr, "openswarm-sim: --uid %d: robot ids would pass 65535\n", o->uid);
         return -1;
     }
-    o->elf = argv[optind];
     return 0;
+}
+
+const char *firmware_of(const options *o, int index) {
+    return o->elves[index < o->n_elves ? index : o->n_elves - 1];
 }

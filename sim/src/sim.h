@@ -48,7 +48,9 @@ typedef struct placement {
 } placement;
 
 typedef struct options {
-    const char *elf;
+    const char *elf;    /* robot 0's firmware */
+    const char *elves[MAX_ROBOTS]; /* robot k runs elves[k], the last one the rest */
+    int n_elves;
     double seconds;
     int robots;
     int quiet;
@@ -76,6 +78,7 @@ typedef struct options {
 
 /* options.c */
 int parse_options(int argc, char **argv, options *o);
+const char *firmware_of(const options *o, int index);
 
 /* placement.c: --distance, --line SPACING, --positions FILE (robots is
  * set to the file's count; it must match when robots_given) */
