@@ -31,6 +31,19 @@ grep -q "led    red 3 green 0 blue 0" air.log || { echo "nobody heard anybody"; 
 "$openswarm" run --time 1.2 --robots 2 --distance 100 --ir-loss 100 --ir-log >lost.log 2>&1
 grep -q " ir     .* crc ok" lost.log
 if grep -q "led    red 3" lost.log; then echo "a robot heard a lost frame"; cat lost.log; exit 1; fi
+# Another app's firmware on robot 0 (--first): the kilolib app, which
+# blinks blue and never talks, stands among two disperse robots; the one it
+# runs on says so, and only the disperse robots hear each other and turn red.
+"$openswarm" run --time 1.2 --robots 3 --first ../app/build/kilobot/app.elf >first.log 2>&1
+grep -q "robot 0 runs .*app/build/kilobot/app.elf; robots 1..2 run .*build/kilobot/talk.elf" first.log \
+    || { echo "the simulator was not given both firmware files"; cat first.log; exit 1; }
+grep -q "^\[robot 0\] .* led    red 0 green 0 blue 3" first.log || { echo "robot 0 does not blink blue"; cat first.log; exit 1; }
+if grep -q "^\[robot 0\] .* led    red 3" first.log; then echo "robot 0 ran the disperse app"; cat first.log; exit 1; fi
+grep -q "^\[robot 1\] .* led    red 3 green 0 blue 0" first.log || { echo "robot 1 heard nobody"; cat first.log; exit 1; }
+if "$openswarm" run --time 1 --first no-such.elf >first_bad.log 2>&1; then
+    echo "a missing --first firmware was accepted"; cat first_bad.log; exit 1
+fi
+grep -q -- "--first: File does not exist: no-such.elf" first_bad.log || { cat first_bad.log; exit 1; }
 # Something the simulator refuses is reported with its own message.
 if "$openswarm" run --time 1 -- --light nonsense >bad.log 2>&1; then
     echo "a bad simulator option was accepted"; cat bad.log; exit 1

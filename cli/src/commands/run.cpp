@@ -24,6 +24,7 @@ struct RunOptions {
     bool ir_log = false;
     std::string clock_spread; // percent; empty: the simulator's default (none)
     std::string ir_loss;      // percent at the range's edge; empty: none
+    std::vector<std::string> first; // firmware robots 0, 1, ... run instead of the app
     std::vector<std::string> simulator_options; // after --, passed as they are
 };
 
@@ -38,9 +39,11 @@ int run_app(const RunOptions &o, const Paths &paths) {
     std::string seconds = o.time;
     if (!seconds.empty() && seconds.back() == 's') seconds.pop_back();
     std::vector<std::string> argv = {paths.simulator.string(), "--trace", "--time", seconds};
-    // With --positions the file's line count is the number of robots.
+    // With --positions the file's line count is the number of robots; with
+    // --first, the app runs on one robot after them unless told otherwise.
+    int robots = o.robots_given || o.first.empty() ? o.robots : (int)o.first.size() + 1;
     if (o.positions.empty() || o.robots_given)
-        argv.insert(argv.end(), {"--robots", std::to_string(o.robots)});
+        argv.insert(argv.end(), {"--robots", std::to_string(robots)});
     if (!o.line.empty()) argv.insert(argv.end(), {"--line", o.line});
     else if (!o.positions.empty()) argv.insert(argv.end(), {"--positions", o.positions});
     else argv.insert(argv.end(), {"--distance", std::to_string(o.distance)});
@@ -53,6 +56,7 @@ int run_app(const RunOptions &o, const Paths &paths) {
     if (!o.clock_spread.empty()) argv.insert(argv.end(), {"--clock-spread", o.clock_spread});
     if (!o.ir_loss.empty()) argv.insert(argv.end(), {"--ir-loss", o.ir_loss});
     argv.insert(argv.end(), o.simulator_options.begin(), o.simulator_options.end());
+    argv.insert(argv.end(), o.first.begin(), o.first.end());
     argv.push_back(built->image.string());
     std::printf("Running %s in the simulator for %s s\n", built->image.filename().string().c_str(),
                 seconds.c_str());
@@ -95,6 +99,12 @@ void add_run_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("--ir-loss", o->ir_loss,
                     "lose PCT percent of the frames at the IR range's edge, fewer closer in")
         ->type_name("PCT");
+    cmd->add_option("--first", o->first,
+                    "robot 0 runs this firmware instead of the app (given twice: robots 0 and 1, "
+                    "...); the app runs on the robots after them, e.g. a seed robot: "
+                    "--first ../seed/build/kilobot/seed.elf")
+        ->type_name("ELF")
+        ->check(CLI::ExistingFile);
     cmd->add_option("simulator-options", o->simulator_options,
                     "after --: more openswarm-sim options, passed as they are (openswarm-sim --help), "
                     "e.g. -- --light 500 --uid 7")
