@@ -136,12 +136,20 @@ sys_status Sys_Set_TxProcessor(sys_device *dev, sys_processor processor) {
     return SYS_OK;
 }
 
-sys_status Sys_Device_Input(sys_device *dev, const void *raw, uint8_t size) {
-    if (dev == NULL || dev->kind == SYS_DEVICE_OUTPUT || (raw == NULL && size != 0))
+sys_status Sys_Device_Read(sys_device *dev, const void *raw, uint8_t size, void *value,
+                           uint8_t capacity, uint8_t *value_size) {
+    if (dev == NULL || dev->kind == SYS_DEVICE_OUTPUT || (raw == NULL && size != 0) ||
+        (value == NULL && capacity != 0))
         return SYS_E_INVALID;
-    uint8_t value[OS_CFG_HAL_MAX_VALUE];
+    uint8_t made[OS_CFG_HAL_MAX_VALUE];
     uint8_t n;
-    if (!process(dev, dev->processor, raw, size, value, &n))
-        return SYS_OK; /* the processor chose to emit nothing (counted) */
-    return Sys_Send_Event(dev->event, value, n);
+    if (!process(dev, dev->processor, raw, size, made, &n)) return SYS_E_NOT_FOUND;
+    if (capacity != 0) memcpy(value, made, n < capacity ? n : capacity);
+    if (value_size != NULL) *value_size = n;
+    return Sys_Send_Event(dev->event, made, n);
+}
+
+sys_status Sys_Device_Input(sys_device *dev, const void *raw, uint8_t size) {
+    sys_status st = Sys_Device_Read(dev, raw, size, NULL, 0, NULL);
+    return st == SYS_E_NOT_FOUND ? SYS_OK : st; /* the processor chose to emit nothing */
 }

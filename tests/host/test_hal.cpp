@@ -574,3 +574,31 @@ TEST_F(Hal, RegistrationFromAnInterruptIsRefused) {
     EXPECT_STATUS(SYS_E_CONTEXT, reg);
     EXPECT_STATUS(SYS_E_CONTEXT, unreg);
 }
+
+TEST_F(Hal, ReadingGivesTheCallerTheValueItSendsAndReportsARejection) {
+    sys_device prox = make_device("prox", SYS_DEVICE_INPUT, EV_A, linearise, &bare_table);
+    int16_t mm = -1, rejected_mm = -1;
+    uint8_t size = 0;
+    uint8_t low_byte = 0;
+    boot([&] {
+        Sys_Register_Device(&prox);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, note_int16, nullptr);
+        spawn([&] {
+            uint16_t raw = 2000, too_far = 100;
+            EXPECT_STATUS(SYS_OK, Sys_Device_Read(&prox, &raw, sizeof raw, &mm, sizeof mm, &size));
+            EXPECT_STATUS(SYS_E_NOT_FOUND,
+                          Sys_Device_Read(&prox, &too_far, sizeof too_far, &rejected_mm, sizeof rejected_mm, nullptr));
+            raw = 1000; // 40 mm: one byte of room gets the first byte, the size says two
+            EXPECT_STATUS(SYS_OK, Sys_Device_Read(&prox, &raw, sizeof raw, &low_byte, 1, &size));
+            EXPECT_STATUS(SYS_E_INVALID, Sys_Device_Read(&prox, &raw, sizeof raw, nullptr, 2, nullptr));
+        });
+    });
+    settle();
+    EXPECT_EQ(20, mm);
+    EXPECT_EQ(-1, rejected_mm) << "a rejected reading leaves the caller's value alone";
+    EXPECT_EQ(2, size);
+    int16_t forty = 40;
+    EXPECT_EQ(reinterpret_cast<const uint8_t *>(&forty)[0], low_byte);
+    EXPECT_EQ("20 40", joined()) << "each value read is also sent";
+    EXPECT_EQ(1, prox.rejected);
+}

@@ -60,6 +60,13 @@ sys_status Sys_Set_TxProcessor(sys_device *dev, sys_processor processor);
  * with a raw reading or a received frame. */
 sys_status Sys_Device_Input(sys_device *dev, const void *raw, uint8_t size);
 
+/* Sys_Device_Input for a lower layer whose caller asked for the reading:
+ * the value the processor made is sent and also copied to value (at most
+ * capacity bytes; *value_size: its whole size, if value_size is not NULL).
+ * SYS_E_NOT_FOUND if the processor emitted nothing (counted). */
+sys_status Sys_Device_Read(sys_device *dev, const void *raw, uint8_t size, void *value,
+                           uint8_t capacity, uint8_t *value_size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -50,12 +50,6 @@ sys_status kilobot_sensors_init(void) {
     return st;
 }
 
-static void count_rejected(sys_device *sensor) {
-    port_irq_state_t s = port_irq_save(); /* 16 bits, and the tick may sample too */
-    sensor->rejected++;
-    port_irq_restore(s);
-}
-
 /* A busy ADC (-1) is tried again: the IR receiver takes it only at a
  * frame's start and decodes the whole frame in its interrupt, so the next
  * try comes after that frame; a conversion running at the try (the IR
@@ -68,21 +62,12 @@ static int16_t read_adc(uint8_t input) {
     return raw;
 }
 
-/* The processor runs here rather than in Sys_Device_Input, so the caller
- * gets the value it made as well as the event. */
+/* The caller gets the value the processor made as well as the event. */
 sys_status kilobot_sense(sys_device *sensor, int16_t *value) {
     uint8_t i = index_of(sensor);
     if (i == SENSORS) return SYS_E_INVALID;
     int16_t raw = read_adc(adc_input_at(i));
-    int16_t processed = raw;
-    sys_processor processor = sensor->processor;
-    if (processor != NULL &&
-        processor(sensor, &raw, sizeof raw, &processed, sizeof processed) != sizeof processed) {
-        count_rejected(sensor);
-        return SYS_E_NOT_FOUND;
-    }
-    if (value != NULL) *value = processed;
-    return Sys_Send_Event(sensor->event, &processed, sizeof processed);
+    return Sys_Device_Read(sensor, &raw, sizeof raw, value, value != NULL ? sizeof *value : 0, NULL);
 }
 
 /* Interrupt context, every 1 ms while any sensor has a period. */
