@@ -159,7 +159,9 @@ sys_pid Sys_Get_ProcessID(void) { return os.current->pid; }
 sys_status Sys_Get_ProcessState(sys_pid pid, sys_process_state *state) {
     port_irq_state_t s = port_irq_save();
     sys_tcb *t = os_thread_of(pid);
-    if (t != NULL && state != NULL) *state = (sys_process_state)t->state;
+    /* The current context runs: the system thread too while its handlers
+     * run on behalf of a thread (its record then says READY). */
+    if (t != NULL && state != NULL) *state = t == os.current ? SYS_PROCESS_RUNNING : (sys_process_state)t->state;
     port_irq_restore(s);
     return t != NULL ? SYS_OK : SYS_E_INVALID;
 }

@@ -48,6 +48,26 @@ TEST_F(Process, NewUntilItFirstRunsThenRunningReadyAndBlocked) {
     EXPECT_EQ(SYS_PROCESS_BLOCKED, state_of(a));
 }
 
+TEST_F(Process, TheSystemThreadIsReadyWhileAThreadRunsAndRunningInItsHandlers) {
+    sys_process_state from_thread = SYS_PROCESS_ZOMBIE, in_handler = SYS_PROCESS_ZOMBIE;
+    static sys_process_state *seen_in_handler;
+    seen_in_handler = &in_handler;
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, [](sys_pid, sys_event_id, const sys_event_data *) {
+            Sys_Get_ProcessState(SYS_PID_SYSTEM, seen_in_handler);
+            return true;
+        }, nullptr);
+        spawn([&] {
+            Sys_Get_ProcessState(SYS_PID_SYSTEM, &from_thread);
+            Sys_Send_Event(EV_A, nullptr, 0);
+        });
+    });
+    settle();
+    EXPECT_EQ(SYS_PROCESS_READY, from_thread) << "only one thread runs at a time";
+    EXPECT_EQ(SYS_PROCESS_RUNNING, in_handler);
+}
+
 TEST_F(Process, PreemptedThreadIsReady) {
     sys_pid a = 0, b = 0;
     boot([&] {
