@@ -79,6 +79,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
         r->avr->frequency = (uint32_t)lround(
             nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
     board_configure(r->avr, o, index);
+    adc_trigger_attach(r->avr);
     char prefix[16] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
     console_attach(r, o->quiet, prefix);

@@ -147,6 +147,9 @@ void trace_flush(robot *r);
 /* kilobot_board.c: what the robot's EEPROM and sensors hold */
 void board_configure(avr_t *avr, const options *o, int index);
 
+/* adc_trigger.c: ADC conversions started by the analog comparator (ADTS 001) */
+void adc_trigger_attach(avr_t *avr);
+
 /* measure.c: markers and interrupt timestamps */
 int measure_attach(robot *r, const options *o);
 
