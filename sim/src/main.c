@@ -17,18 +17,12 @@
 static robot robots[MAX_ROBOTS];
 static int profiling;
 
-#define SLEEP_OPCODE 0x9588
-
-/* simavr 1.6 runs a SLEEP and the sleep it starts in one avr_run. */
-static int is_sleep(const avr_t *avr, avr_flashaddr_t pc) {
-    return (avr->flash[pc] | avr->flash[pc + 1] << 8) == SLEEP_OPCODE;
-}
-
 /* One instruction (or one sleep), its cycles charged to its function. */
 static void step_profiled(robot *r) {
     avr_flashaddr_t pc = r->avr->pc;
     avr_cycle_count_t before = r->avr->cycle;
-    int was_asleep = r->state == cpu_Sleeping || is_sleep(r->avr, pc);
+    /* simavr 1.6 runs a SLEEP and the sleep it starts in one avr_run. */
+    int was_asleep = r->state == cpu_Sleeping || at_sleep_instruction(r->avr);
     r->state = avr_run(r->avr);
     profile_charge(pc, was_asleep, r->avr->cycle - before);
 }
@@ -79,6 +73,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
         r->avr->frequency = (uint32_t)lround(
             nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
     board_configure(r->avr, o, index);
+    adc_trigger_attach(r->avr);
     char prefix[16] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
     console_attach(r, o->quiet, prefix);
@@ -109,10 +104,12 @@ static int run_window(int n, avr_cycle_count_t window_end) {
         if (n > 1 && !finished(r) && r->avr->cycle < end)
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
         while (!finished(r) && r->avr->cycle < end) {
+            power_down_before_step(r);
             if (profiling)
                 step_profiled(r);
             else
                 r->state = avr_run(r->avr);
+            power_down_after_step(r);
             if (at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
         }
         all_finished &= finished(r);

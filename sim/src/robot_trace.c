@@ -3,7 +3,14 @@
  *
  * LED: a channel bit lights when its pin is an output (DDR), PORT low.
  * Red PD5 (bit 0) and PD4 (bit 1), green PC3 and PC2, blue PC5 and PC4.
- * Motors: Timer2 PWM duty, OC2A left, OC2B right.
+ * Motors: Timer2 PWM duty, OC2A left, OC2B right. simavr reports the duty
+ * in fast PWM (our port's mode 3) but runs no PWM at all in phase-correct
+ * mode (mode 1, the classic library's); in mode 1 the duty is read from the
+ * registers instead, whenever one of them is written: OCR2x while COM2x is
+ * non-inverting (10), 255 - OCR2x while inverting (11), 0 while the pin is
+ * disconnected. The chip takes a new OCR2x at the count's top, up to half a
+ * PWM period (255 us at clock / 8) after the write; the trace shows it at
+ * the write.
  *
  * A colour or a duty pair is written one register at a time; what the
  * robot shows is the state once the writes settle, so changes are reported
@@ -16,6 +23,14 @@
 #include "sim.h"
 
 #define SETTLE_CYCLES 200
+
+/* Timer2's registers (data addresses) and its phase-correct mode. */
+#define TCCR2A_ADDR 0xB0
+#define TCCR2B_ADDR 0xB1
+#define OCR2A_ADDR 0xB3
+#define OCR2B_ADDR 0xB4
+#define WGM22_BIT 0x08 /* in TCCR2B; WGM21:0 are TCCR2A's bits 1:0 */
+#define PHASE_CORRECT_PWM 1
 
 static void emit(robot_trace *t, const char *device, int a, int b, int c) {
     double s = (double)t->burst / (double)t->avr->frequency;
@@ -91,6 +106,30 @@ static void right_pwm(struct avr_irq_t *irq, uint32_t value, void *param) {
     changed(t);
 }
 
+/* A pin's duty in phase-correct PWM, by its two COM2x bits. */
+static int phase_correct_duty(uint8_t com, uint8_t ocr) {
+    switch (com) {
+    case 2: return ocr;
+    case 3: return 255 - ocr;
+    default: return 0; /* disconnected: the pin is a plain output */
+    }
+}
+
+static void timer2_written(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    (void)value;
+    robot_trace *t = param;
+    const uint8_t *d = t->avr->data;
+    int mode = (d[TCCR2A_ADDR] & 0x03) | (d[TCCR2B_ADDR] & WGM22_BIT) >> 1;
+    if (mode != PHASE_CORRECT_PWM) return;
+    uint8_t left = (uint8_t)phase_correct_duty(d[TCCR2A_ADDR] >> 6 & 0x03, d[OCR2A_ADDR]);
+    uint8_t right = (uint8_t)phase_correct_duty(d[TCCR2A_ADDR] >> 4 & 0x03, d[OCR2B_ADDR]);
+    if (left == t->pwm[0] && right == t->pwm[1]) return;
+    t->pwm[0] = left;
+    t->pwm[1] = right;
+    changed(t);
+}
+
 void trace_attach(robot *r, int print, FILE *csv) {
     robot_trace *t = &r->trace;
     /* The robot starts dark and still: only changes are reported. */
@@ -108,6 +147,10 @@ void trace_attach(robot *r, int print, FILE *csv) {
                             left_pwm, t);
     avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM1),
                             right_pwm, t);
+    static const avr_io_addr_t timer2_registers[] = {TCCR2A_ADDR, TCCR2B_ADDR, OCR2A_ADDR, OCR2B_ADDR};
+    for (size_t i = 0; i < sizeof timer2_registers / sizeof timer2_registers[0]; i++)
+        avr_irq_register_notify(avr_iomem_getirq(avr, timer2_registers[i], NULL, AVR_IOMEM_IRQ_ALL),
+                                timer2_written, t);
 }
 
 /* A change still settling when the run ends is reported too. */

@@ -117,6 +117,24 @@ typedef struct watched_irq {
     int robot; /* -1 with one robot */
 } watched_irq;
 
+/* A timer's event, out of simavr's schedule while the robot is powered
+ * down, with the cycles it had left. */
+typedef struct frozen_event {
+    avr_cycle_timer_t fn;
+    void *param;
+    avr_cycle_count_t left;
+} frozen_event;
+
+#define MAX_FROZEN_EVENTS 16
+
+/* power_down.c: a robot asleep in power-down mode, its timers stopped. */
+typedef struct power_down {
+    int asleep;
+    avr_cycle_count_t since; /* the cycle it went to sleep */
+    frozen_event events[MAX_FROZEN_EVENTS];
+    int n_events;
+} power_down;
+
 typedef struct robot {
     int index;
     avr_t *avr;
@@ -126,6 +144,7 @@ typedef struct robot {
     avr_vcd_t vcd;
     int vcd_open;
     int state; /* of its last avr_run */
+    power_down power_down;
 } robot;
 
 /* firmware.c: check and load an ELF into a new simulated MCU */
@@ -146,6 +165,14 @@ void trace_flush(robot *r);
 
 /* kilobot_board.c: what the robot's EEPROM and sensors hold */
 void board_configure(avr_t *avr, const options *o, int index);
+
+/* power_down.c: SLEEP in power-down stops Timer0/1/2; call around each avr_run */
+int at_sleep_instruction(const avr_t *avr);
+void power_down_before_step(robot *r);
+void power_down_after_step(robot *r);
+
+/* adc_trigger.c: ADC conversions started by the analog comparator (ADTS 001) */
+void adc_trigger_attach(avr_t *avr);
 
 /* measure.c: markers and interrupt timestamps */
 int measure_attach(robot *r, const options *o);
