@@ -84,9 +84,17 @@ void kilolib_identity_load(void) {
     kilo_uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
 }
 
+/* setup() runs once per power-up or reset, as with the classic library:
+ * RUN after a pause resumes with loop(). A setup() cut short (the thread
+ * killed by another activity) has not run. */
+static bool setup_done;
+
 void kilolib_program(void *arg) {
     (void)arg;
-    user_setup();
+    if (!setup_done) {
+        user_setup();
+        setup_done = true;
+    }
     for (;;) user_loop();
 }
 
@@ -168,7 +176,8 @@ static void transmitter(void *arg) {
     }
 }
 
-/* The robot starts as if the overhead controller had just sent RUN. */
+/* After power-up the robot starts as if the overhead controller had just
+ * sent RUN; after RESET it waits for RUN, as the classic library does. */
 void kilo_start(void (*setup)(void), void (*loop)(void)) {
     user_setup = setup;
     user_loop = loop;
@@ -178,7 +187,10 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
     Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
     Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);
-    kilolib_activity_start(RUN, kilolib_program);
+    if (kilolib_restarted())
+        kilolib_activity_start(WAKEUP, kilolib_status_lights);
+    else
+        kilolib_activity_start(RUN, kilolib_program);
     Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
