@@ -12,7 +12,8 @@
 
 static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
 #define UID_ADDRESS 0xB0
-/* Distance tables: 14 big-endian readings, entry i for 30 + 5 i mm. */
+/* Distance tables: 14 big-endian readings, entry i for 33 + 5 i mm, as
+ * kilolib (classic and ours) reads them. */
 #define LOW_GAIN_TABLE 0x20
 #define HIGH_GAIN_TABLE 0x50
 #define TABLE_ENTRIES 14
@@ -41,7 +42,7 @@ void board_configure(avr_t *avr, const options *o, int index) {
     }
     uint8_t low[2 * TABLE_ENTRIES], high[2 * TABLE_ENTRIES];
     for (int i = 0; i < TABLE_ENTRIES; i++) {
-        int mm = 30 + 5 * i, l = ir_low_gain_reading(mm), h = ir_high_gain_reading(mm);
+        int mm = 33 + 5 * i, l = ir_low_gain_reading(mm), h = ir_high_gain_reading(mm);
         low[2 * i] = (uint8_t)(l >> 8);
         low[2 * i + 1] = (uint8_t)l;
         high[2 * i] = (uint8_t)(h >> 8);

@@ -24,7 +24,7 @@ int16_t light_before, voltage_before;
 
 void setup(void) {
     debug_init();
-    kilo_tx_period = 1; /* one tick: a frame every 32-47 ms */
+    kilo_tx_period = 1; /* a frame every tick (32.8 ms) */
     message.type = NORMAL;
     light_before = get_ambientlight();
     voltage_before = get_voltage();

@@ -1,7 +1,8 @@
 /* A classic Kilobot program on a busy channel: every robot sends about ten
  * times a second. While a frame is sent or received the tick interrupt
- * cannot run; kilo_ticks must still keep up with the clock. Each robot
- * prints its kilo_ticks against what the kernel's system time gives. */
+ * cannot run; kilo_ticks must still keep up with the clock, at the classic
+ * library's rate. Each robot prints its kilo_ticks against what the
+ * kernel's system time gives. */
 #include <kilolib.h>
 #include "debug.h"
 
@@ -12,7 +13,7 @@ uint16_t heard;
 
 void setup(void) {
     debug_init();
-    kilo_tx_period = 3; /* ticks: about 94 ms */
+    kilo_tx_period = 700; /* 128 us steps: every third tick, 98 ms */
     message.type = NORMAL;
     message.data[0] = (uint8_t)kilo_uid;
     message.crc = message_crc(&message);
@@ -21,7 +22,7 @@ void setup(void) {
 void loop(void) {
     if (kilo_ticks < 3 * TICKS_PER_SEC) return;
     uint32_t ticks = kilo_ticks;
-    uint32_t expected = Sys_Get_SystemTime() * TICKS_PER_SEC / 1000u;
+    uint32_t expected = Sys_Get_SystemTime() * 1000u / 32768u; /* a tick is 32.768 ms */
     printf("robot %u heard %u, kilo_ticks %lu, clock says %lu\n", kilo_uid, heard,
            (unsigned long)ticks, (unsigned long)expected);
     delay(5000);

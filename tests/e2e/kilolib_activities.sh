@@ -2,7 +2,8 @@
 # End to end: the kilolib template, with the pools `openswarm build` gives
 # it, answers the overhead controller: WAKEUP replaces the program with the
 # green status flash (a thread in the slot and stack the program's thread
-# leaves), RUN starts the program again.
+# leaves), RUN resumes the program's loop() (setup() ran once, at power-up,
+# as with the classic library).
 #   kilolib_activities.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -15,6 +16,7 @@ after() { # after SECONDS REGEX: a trace line later than SECONDS matches REGEX
         END { exit !found }' run.log
 }
 after 0.6 "led +red 0 green 3 blue 0" || { echo "no green flash after WAKEUP"; cat run.log; exit 1; }
-after 1.0 "motors left 255 right 255" || { echo "the program did not start again after RUN"; cat run.log; exit 1; }
+after 1.0 "led +red 0 green 0 blue 3" || { echo "the program did not run again after RUN"; cat run.log; exit 1; }
+after 1.0 "motors left 255 right 255" && { echo "setup() ran again after RUN"; cat run.log; exit 1; }
 if grep -q "kernel fault" run.log; then echo "a kernel fault"; cat run.log; exit 1; fi
 echo "1 passed, 0 failed"

@@ -34,9 +34,13 @@ typedef void (*message_rx_t)(message_t *, distance_measurement_t *);
 typedef message_t *(*message_tx_t)(void);
 typedef void (*message_tx_success_t)(void);
 
-/* Clock ticks since kilo_start: TICKS_PER_SEC a second. */
+/* Clock ticks since kilo_start: one every 32.768 ms, as with the classic
+ * library (30.52 a second; TICKS_PER_SEC is its rounded figure). */
 extern volatile uint32_t kilo_ticks;
-/* Ticks between two transmissions of kilo_message_tx's message. */
+/* Time between two transmissions of kilo_message_tx's message, in the
+ * classic library's Timer0 steps of 128 us, 255 to a tick: a message goes
+ * out at the first tick after more steps than this since the last one.
+ * Default 3906: every 16 ticks (0.524 s). */
 extern volatile uint16_t kilo_tx_period;
 extern uint16_t kilo_uid;
 /* Motor duties that make this robot turn or go straight (from its EEPROM). */

@@ -5,6 +5,7 @@
 #include <avr/eeprom.h>
 #include <avr/io.h>
 #include <string.h>
+#include <util/atomic.h>
 #include <util/crc16.h>
 
 #include "kilolib_internal.h"
@@ -17,7 +18,7 @@
 #endif
 
 volatile uint32_t kilo_ticks;
-volatile uint16_t kilo_tx_period = TICKS_PER_SEC / 2; /* about half a second */
+volatile uint16_t kilo_tx_period = 3906; /* 128 us steps: about half a second */
 uint16_t kilo_uid;
 uint8_t kilo_turn_left, kilo_turn_right, kilo_straight_left, kilo_straight_right;
 
@@ -35,15 +36,33 @@ message_tx_success_t kilo_message_tx_success = no_tx_success;
 static void (*user_setup)(void);
 static void (*user_loop)(void);
 
-/* kilo_ticks advance TICKS_PER_SEC times a second, from the 1 ms tick:
- * every millisecond adds TICKS_PER_SEC thousandths of a tick. */
+/* kilo_ticks advance as the classic library's do, once per 256 steps of
+ * its Timer0 (8 MHz / 1024): every 32.768 ms, 30.52 a second (its
+ * TICKS_PER_SEC, 31, is rounded). From the 1 ms tick, exactly: 32.768 ms
+ * is 4096 / 125 ms, so every millisecond adds 125 / 4096 of a tick. */
+#define TICK_FRACTION_PER_MS 125u
+#define TICK_FRACTION_WHOLE 4096u
 static uint16_t tick_fraction;
 static void count_kilo_ticks(void) {
-    tick_fraction = (uint16_t)(tick_fraction + TICKS_PER_SEC);
-    if (tick_fraction >= 1000u) {
-        tick_fraction = (uint16_t)(tick_fraction - 1000u);
+    tick_fraction = (uint16_t)(tick_fraction + TICK_FRACTION_PER_MS);
+    if (tick_fraction >= TICK_FRACTION_WHOLE) {
+        tick_fraction = (uint16_t)(tick_fraction - TICK_FRACTION_WHOLE);
         kilo_ticks++;
     }
+}
+
+/* Milliseconds (1 to 33) until kilo_ticks next advances. */
+static uint8_t ms_to_next_kilo_tick(void) {
+    uint16_t fraction;
+    ATOMIC_BLOCK(ATOMIC_RESTORESTATE) { fraction = tick_fraction; }
+    uint16_t missing = (uint16_t)(TICK_FRACTION_WHOLE - fraction);
+    return (uint8_t)((missing + TICK_FRACTION_PER_MS - 1u) / TICK_FRACTION_PER_MS);
+}
+
+static uint32_t kilo_ticks_now(void) {
+    uint32_t t;
+    ATOMIC_BLOCK(ATOMIC_RESTORESTATE) { t = kilo_ticks; }
+    return t;
 }
 
 void kilo_init(void) {
@@ -65,9 +84,17 @@ void kilolib_identity_load(void) {
     kilo_uid = eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID);
 }
 
+/* setup() runs once per power-up or reset, as with the classic library:
+ * RUN after a pause resumes with loop(). A setup() cut short (the thread
+ * killed by another activity) has not run. */
+static bool setup_done;
+
 void kilolib_program(void *arg) {
     (void)arg;
-    user_setup();
+    if (!setup_done) {
+        user_setup();
+        setup_done = true;
+    }
     for (;;) user_loop();
 }
 
@@ -86,10 +113,6 @@ static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d
     distance_measurement_t dist = {rx->low_gain, rx->high_gain};
     kilo_message_rx(&msg, &dist);
     return true;
-}
-
-static uint16_t ms_of_ticks(uint16_t ticks) {
-    return (uint16_t)(((uint32_t)ticks * 1000u + TICKS_PER_SEC - 1u) / TICKS_PER_SEC);
 }
 
 /* kilolib's own work runs as an event handler, on the system (main)
@@ -113,23 +136,48 @@ static bool run_call(sys_pid pid, sys_event_id event, const sys_event_data *call
 
 bool kilolib_call(uint8_t what) { return Sys_Send_Event(KILOLIB_EVENT_CALL, &what, 1) == SYS_OK; }
 
-/* Every kilo_tx_period (give or take a random 0-15 ms, so robots that
- * started together drift apart), kilo_message_tx's message (its crc set by
- * the program, as with the classic library) goes out while the program
- * runs; a busy channel is tried again after a random few milliseconds. */
+/* kilo_tx_period counts the classic library's Timer0 steps (128 us), of
+ * which each kilo tick adds 255 (saturating: no period is ever too long).
+ * At each kilo tick once more steps than kilo_tx_period have passed since
+ * the last message went out, kilo_message_tx's message (its crc set by the
+ * program, as with the classic library) is sent while the program runs:
+ * with the default 3906, every 16 ticks (0.524 s). The transmitter looks a
+ * random 0-15 ms into each tick, so robots started together drift apart;
+ * a busy channel is tried again after a random few milliseconds. */
+#define STEPS_PER_KILO_TICK 255u
+
+static uint16_t steps_after(uint16_t steps, uint32_t ticks) {
+    if (ticks > (uint16_t)(0xFFFFu - steps) / STEPS_PER_KILO_TICK) return 0xFFFFu;
+    return (uint16_t)(steps + ticks * STEPS_PER_KILO_TICK);
+}
+
+/* Whether kilo_message_tx's message went out. */
+static bool send_message(void) {
+    outgoing = 0;
+    if (!kilolib_call(KILOLIB_TX_DUE) || outgoing == 0) return false;
+    while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
+    kilolib_call(KILOLIB_TX_SENT);
+    return true;
+}
+
 static void transmitter(void *arg) {
     (void)arg;
+    uint16_t steps = 0;
+    uint32_t seen = kilo_ticks_now();
     for (;;) {
-        Sys_Sleep(ms_of_ticks(kilo_tx_period) + (rand_soft() & 15u));
-        if (kilolib_activity() != RUN) continue;
-        outgoing = 0;
-        if (!kilolib_call(KILOLIB_TX_DUE) || outgoing == 0) continue;
-        while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
-        kilolib_call(KILOLIB_TX_SENT);
+        uint32_t now = kilo_ticks_now();
+        if (now == seen) { /* ticks that pass during a send count at once */
+            Sys_Sleep(ms_to_next_kilo_tick() + (rand_soft() & 15u));
+            continue;
+        }
+        steps = steps_after(steps, now - seen);
+        seen = now;
+        if (steps > kilo_tx_period && kilolib_activity() == RUN && send_message()) steps = 0;
     }
 }
 
-/* The robot starts as if the overhead controller had just sent RUN. */
+/* After power-up the robot starts as if the overhead controller had just
+ * sent RUN; after RESET it waits for RUN, as the classic library does. */
 void kilo_start(void (*setup)(void), void (*loop)(void)) {
     user_setup = setup;
     user_loop = loop;
@@ -139,7 +187,10 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
     Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
     Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);
-    kilolib_activity_start(RUN, kilolib_program);
+    if (kilolib_restarted())
+        kilolib_activity_start(WAKEUP, kilolib_status_lights);
+    else
+        kilolib_activity_start(RUN, kilolib_program);
     Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();

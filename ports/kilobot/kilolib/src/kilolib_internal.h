@@ -18,7 +18,7 @@ enum kilolib_call {
 };
 /* Queue one (from a thread it runs before the call returns). */
 bool kilolib_call(uint8_t what);
-void kilolib_program(void *arg); /* the program: setup(), then loop() for ever */
+void kilolib_program(void *arg); /* the program: setup() the first time, then loop() for ever */
 /* kilo_uid and the motor calibration (kilo_turn_left, ... and the motors'
  * kilobot_calib) as the EEPROM holds them. */
 void kilolib_identity_load(void);
@@ -27,6 +27,8 @@ void kilolib_identity_load(void);
  * system message that asked for it: RUN (the program), CALIB (a calibration
  * motion), VOLTAGE, CHARGE or WAKEUP (a status on the LED), SLEEP (nothing). */
 void kilolib_system_message(const message_t *msg);
+/* Whether this run began with RESET (asked once: the answer is then false). */
+bool kilolib_restarted(void);
 uint8_t kilolib_activity(void);
 /* The current activity ends (its thread killed, motors off, LED dark) and
  * fn, if any, starts in a thread of its own once the old thread is reaped

@@ -67,14 +67,58 @@ static void __attribute__((noreturn)) bootloader_jump(void) {
     __builtin_unreachable();
 }
 
+/* RESET: the program starts over from scratch, as the classic library's
+ * jump to address 0 does: the C runtime sets the stack and every static
+ * afresh (the kernel's state, kilo_ticks, the program's own), main() runs
+ * kilo_init and kilo_start, and the robot waits for RUN, which runs setup().
+ * A jump leaves the peripherals as they were, so first each one the port
+ * or a program may use goes back to its power-up state (datasheet reset
+ * values: stopped, interrupts masked, flags cleared, pins inputs): the
+ * kernel and the devices then start as after a reset, and no interrupt
+ * of the old run fires before its driver is ready for it. */
+#define RESTART_MARK 0x5A3Cu
+static uint16_t restart_mark __attribute__((section(".noinit"))); /* kept by the jump */
+
+bool kilolib_restarted(void) {
+    bool restarted = restart_mark == RESTART_MARK;
+    restart_mark = 0;
+    return restarted;
+}
+
+static void peripherals_as_at_power_up(void) {
+    TIMSK0 = TIMSK1 = TIMSK2 = 0;
+    TCCR0A = TCCR0B = TCCR1A = TCCR1B = TCCR1C = TCCR2A = TCCR2B = ASSR = 0;
+    TCNT0 = OCR0A = OCR0B = TCNT2 = OCR2A = OCR2B = 0;
+    TCNT1 = OCR1A = OCR1B = ICR1 = 0;
+    TIFR0 = TIFR1 = TIFR2 = 0xFF; /* flags clear when written 1 */
+    ADCSRA = _BV(ADIF);           /* off, its flag cleared */
+    ADCSRB = ADMUX = DIDR0 = DIDR1 = 0;
+    ACSR = _BV(ACI);
+    /* The serial port's interrupts only: debug_init sets the rest again, and
+     * a transmitter disabled mid-byte never shows an empty buffer again in
+     * simavr 1.6 (printf would wait for ever). */
+    UCSR0B &= (uint8_t) ~(_BV(RXCIE0) | _BV(TXCIE0) | _BV(UDRIE0));
+    SPCR = TWCR = 0;
+    EIMSK = EICRA = PCICR = PCMSK0 = PCMSK1 = PCMSK2 = 0;
+    EIFR = PCIFR = 0xFF;
+    SMCR = PRR = 0;
+    DDRB = DDRC = DDRD = PORTB = PORTC = PORTD = 0;
+}
+
+static void __attribute__((noreturn)) restart(void) {
+    cli();
+    peripherals_as_at_power_up();
+    restart_mark = RESTART_MARK;
+    __asm__ __volatile__("jmp 0");
+    __builtin_unreachable();
+}
+
 void kilolib_system_message(const message_t *msg) {
     switch (msg->type) {
     case BOOT:
         bootloader_jump();
-    case RESET: /* the classic library restarts: calibration reread, waiting for RUN */
-        kilolib_identity_load();
-        activity_switch(WAKEUP, kilolib_status_lights);
-        break;
+    case RESET:
+        restart();
     case SLEEP:
         activity_switch(SLEEP, 0);
         break;
