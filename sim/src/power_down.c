@@ -23,10 +23,6 @@
 
 #include "sim.h"
 
-#define SMCR_ADDR 0x53
-#define SMCR_MODE_MASK 0x0F      /* SM2:0 and SE */
-#define SMCR_POWER_DOWN_ENABLED 0x05 /* SM = 010, SE = 1 */
-#define SLEEP_OPCODE 0x9588
 
 /* Does this module's memory hold param? Timers pass themselves, or a part
  * of themselves (a comparator), to their scheduled events. */
@@ -43,7 +39,7 @@ static int scheduled_by_timer(const avr_t *avr, const void *param) {
     return 0;
 }
 
-static void freeze(robot *r) {
+void power_down_freeze(robot *r) {
     power_down *pd = &r->power_down;
     avr_t *avr = r->avr;
     pd->asleep = 1;
@@ -59,7 +55,7 @@ static void freeze(robot *r) {
     for (int i = 0; i < pd->n_events; i++) avr_cycle_timer_cancel(avr, pd->events[i].fn, pd->events[i].param);
 }
 
-static void thaw(robot *r) {
+void power_down_thaw(robot *r) {
     power_down *pd = &r->power_down;
     avr_t *avr = r->avr;
     avr_cycle_count_t slept = avr->cycle - pd->since;
@@ -68,18 +64,4 @@ static void thaw(robot *r) {
     for (int i = 0; i < pd->n_events; i++)
         avr_cycle_timer_register(avr, pd->events[i].left, pd->events[i].fn, pd->events[i].param);
     pd->asleep = 0;
-}
-
-int at_sleep_instruction(const avr_t *avr) {
-    return (avr->flash[avr->pc] | avr->flash[avr->pc + 1] << 8) == SLEEP_OPCODE;
-}
-
-void power_down_before_step(robot *r) {
-    avr_t *avr = r->avr;
-    if (r->power_down.asleep || (avr->data[SMCR_ADDR] & SMCR_MODE_MASK) != SMCR_POWER_DOWN_ENABLED) return;
-    if (r->state == cpu_Running && at_sleep_instruction(avr)) freeze(r);
-}
-
-void power_down_after_step(robot *r) {
-    if (r->power_down.asleep && r->state != cpu_Sleeping) thaw(r);
 }
