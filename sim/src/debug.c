@@ -29,7 +29,7 @@ int debug_attach(robot *r, const options *o) {
         r->avr->state = cpu_Stopped;
         avr_gdb_init(r->avr);
         fprintf(stderr, "openswarm-sim: waiting for avr-gdb: avr-gdb -ex 'target remote :%d' %s\n",
-                o->gdb_port, o->elf);
+                o->gdb_port, o->elves[0]);
     }
     return 0;
 }

@@ -66,7 +66,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     } else if (r->avr->frequency != nominal_hz) {
         fprintf(stderr, "openswarm-sim: %s runs at %u Hz, %s at %u Hz: robots in lockstep share "
                         "one clock rate (--clock-spread varies it)\n",
-                elf, (unsigned)r->avr->frequency, o->elf, (unsigned)nominal_hz);
+                elf, (unsigned)r->avr->frequency, o->elves[0], (unsigned)nominal_hz);
         return -1;
     }
     if (o->clock_spread_pct != 0)
@@ -174,7 +174,7 @@ int main(int argc, char **argv) {
     for (int i = 0; i < o.n_elves; i++)
         if (firmware_check(o.elves[i]) != 0) return EXIT_USAGE;
     profiling = o.profile;
-    if (profiling && profile_load(o.elf) != 0) return EXIT_USAGE;
+    if (profiling && profile_load(o.elves[0]) != 0) return EXIT_USAGE;
     FILE *csv = NULL;
     if (o.trace_csv != NULL) {
         csv = fopen(o.trace_csv, "w");

@@ -151,7 +151,6 @@ static int take_firmware(int n, char **paths, placement_options *place, options 
     }
     for (int i = 0; i < n; i++) o->elves[i] = paths[i];
     o->n_elves = n;
-    o->elf = paths[0];
     if (n > 1 && !place->robots_given && place->positions == NULL) o->robots = n;
     return 0;
 }

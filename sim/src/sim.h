@@ -48,7 +48,6 @@ typedef struct placement {
 } placement;
 
 typedef struct options {
-    const char *elf;    /* robot 0's firmware */
     const char *elves[MAX_ROBOTS]; /* robot k runs elves[k], the last one the rest */
     int n_elves;
     double seconds;
