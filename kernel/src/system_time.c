@@ -9,11 +9,11 @@ void os_tick(void) {
     }
     os_check_stack(os.current);
 #if OS_CFG_CLOCK_EVENT
+    /* An unregistered event has none: unregistering ends its subscriptions
+     * and wakes its waiters. */
     if (os.clock_listeners == OS_CLOCK_UNKNOWN)
-        os.clock_listeners = os_event_registered(SYS_EVENT_1MS_TIMER) &&
-                                     os_event_has_listeners(SYS_EVENT_1MS_TIMER)
-                                 ? OS_CLOCK_HEARD
-                                 : OS_CLOCK_UNHEARD;
+        os.clock_listeners =
+            os_event_has_listeners(SYS_EVENT_1MS_TIMER) ? OS_CLOCK_HEARD : OS_CLOCK_UNHEARD;
     /* The tick runs with interrupts masked: now_ms cannot change while it
      * is copied, so it needs no copy on the interrupt's stack. */
     if (os.clock_listeners == OS_CLOCK_HEARD)

@@ -231,6 +231,37 @@ TEST_F(Time, TimerEventIsNotQueuedWhileNobodyListens) {
     EXPECT_STATUS(SYS_OK, st);
     EXPECT_EQ(302u, kept);
 }
+
+// Unregistering the clock event ends its subscriptions: registered again,
+// it has no listener, so the tick sends it no more.
+TEST_F(Time, TimerEventRegisteredAgainHasNoListenerLeft) {
+    static int heard;
+    heard = 0;
+    sys_status reregistered = SYS_E_INVALID;
+    boot([&] {
+        Sys_Subscribe_to_Event(SYS_EVENT_1MS_TIMER, SYS_PID_SYSTEM,
+                               [](sys_pid, sys_event_id, const sys_event_data *) {
+                                   heard++;
+                                   return true;
+                               },
+                               nullptr);
+        spawn([&] {
+            Sys_Sleep(5);
+            Sys_Unregister_Event(SYS_EVENT_1MS_TIMER);
+            reregistered = Sys_Register_Event_Sized(SYS_EVENT_1MS_TIMER, sizeof(uint32_t));
+        });
+    });
+    settle();
+    ticks(50);
+    int heard_after_reregistering = heard;
+    ticks(50);
+    EXPECT_STATUS(SYS_OK, reregistered);
+    EXPECT_GE(heard_after_reregistering, 4) << "the listener heard the clock before";
+    EXPECT_EQ(heard_after_reregistering, heard) << "and nothing once it was unregistered";
+    sys_status st = SYS_OK;
+    irq([&] { st = Sys_Get_EventData(SYS_EVENT_1MS_TIMER, nullptr, 0, nullptr); });
+    EXPECT_STATUS(SYS_E_NOT_FOUND, st) << "never sent since it was registered again";
+}
 #else
 TEST_F(Time, WithoutTheClockEventItCannotBeRegisteredSubscribedToOrAwaited) {
     // OS_CFG_CLOCK_EVENT 0 (config.h): time goes on, but SYS_EVENT_1MS_TIMER
