@@ -8,7 +8,9 @@ packages=(
   googletest libgtest-dev                   # host test suites
   gcc-avr avr-libc binutils-avr             # Kilobot (ATmega328P) firmware
   simavr libsimavr-dev libelf-dev          # running firmware cycle-exactly
-  libcli11-dev nlohmann-json3-dev           # the openswarm command-line tool
+  libcli11-dev nlohmann-json3-dev           # the openswarm command-line tool, world.json
+  libbox2d-dev libcairo2-dev               # the world: physics, pictures
+  ffmpeg chromium fonts-dejavu-core        # the world: video; the viewer's browser test
 )
 
 missing=()

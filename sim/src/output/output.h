@@ -1,0 +1,48 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* What a run in a world leaves in --out DIR: trajectories.csv, objects.csv,
+ * final.png (a top view at the end), viewer.html (the run played back in a
+ * browser, one file, no network) and, when asked, video.mp4 (Cairo frames
+ * piped to ffmpeg). The simulator hands over one sample per sample period. */
+#ifndef OPENSWARM_OUTPUT_H
+#define OPENSWARM_OUTPUT_H
+
+#include <stdint.h>
+
+#include "world/world_spec.h"
+
+/* A robot at one sample: where it is and what its LED shows (each channel
+ * 0..3, as the Kilobot's 2-bit colour). */
+typedef struct output_robot {
+    double x_mm, y_mm, heading_deg;
+    uint8_t led_r, led_g, led_b;
+} output_robot;
+
+/* An IR link: receiver hears sender (they are within IR range). */
+typedef struct output_link {
+    int sender, receiver;
+} output_link;
+
+typedef struct output_sample {
+    double time_s;
+    const output_robot *robots; /* world_spec.n_robots of them */
+    const world_point *objects; /* world_spec.n_objects centres */
+    const output_link *links;
+    int n_links;
+} output_sample;
+
+typedef struct output_options {
+    const char *dir;      /* created if missing */
+    int video;            /* also write video.mp4 (needs ffmpeg on the PATH) */
+    int quiet;            /* no list of written files at the end */
+} output_options;
+
+/* Open the outputs; -1 with a message naming the path and the fix. The
+ * world is kept by reference until output_close. */
+int output_open(const output_options *o, const world_spec *w);
+/* One sample, in time order. -1 on a write error (reported). */
+int output_sample_add(const output_sample *s);
+/* Write what is written at the end (final.png, viewer.html), finish the
+ * video, close the files; -1 if any of it failed (reported). */
+int output_close(void);
+
+#endif

@@ -1,0 +1,86 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* A world as world.json declares it, once checked: the arena, what stands
+ * and lies in it, its lights, and every robot with its pose, firmware, id
+ * and calibration. world_file.cpp reads and checks it; the physics
+ * (world.cpp) and the outputs (output/) read it. Lengths are millimetres,
+ * angles degrees counter-clockwise from the x axis; the arena spans
+ * (0, 0) to (width_mm, height_mm), y up. */
+#ifndef OPENSWARM_WORLD_SPEC_H
+#define OPENSWARM_WORLD_SPEC_H
+
+#include <stdint.h>
+
+#define WORLD_MAX_VERTICES 32
+#define KILOBOT_RADIUS_MM 16.5 /* a Kilobot is a disc 33 mm across */
+
+typedef struct world_point {
+    double x, y;
+} world_point;
+
+/* A fixed obstacle: a simple polygon (rectangles become four corners),
+ * vertices in order, either way round. */
+typedef struct world_obstacle {
+    int n;
+    world_point v[WORLD_MAX_VERTICES];
+} world_obstacle;
+
+/* A movable round object that robots push. */
+typedef struct world_object {
+    world_point at;
+    double radius_mm;
+    double mass_g;
+    double friction; /* ground friction coefficient, 0..2 */
+} world_object;
+
+/* A light source: it adds intensity_mv to a light sensor 100 mm away,
+ * falling with the square of the distance beyond that. */
+typedef struct world_light {
+    world_point at;
+    double intensity_mv;
+} world_light;
+
+typedef struct world_robot {
+    world_point at;
+    double heading_deg;
+    int uid;            /* 0..65535 */
+    int firmware;       /* index into world_spec.firmware; -1: the command line's */
+    int calibration[4]; /* EEPROM: turn left, turn right, straight left, straight right;
+                           -2: the robot's own (factory) duties; -1: erased */
+} world_robot;
+
+typedef struct world_spec {
+    const char *path; /* the file, for messages */
+    double width_mm, height_mm;
+    world_obstacle *obstacles;
+    int n_obstacles;
+    world_object *objects;
+    int n_objects;
+    world_light *lights;
+    int n_lights;
+    double ambient_light_mv; /* the light sensor's input with no source near */
+    world_robot *robots;
+    int n_robots;
+    char **firmware; /* ELF paths named in the file, relative to the file resolved */
+    int n_firmware;
+    int ir_range_mm;         /* -1: not given (the simulator's default) */
+    double ir_loss_pct;      /* -1: not given */
+    double clock_spread_pct; /* -1: not given */
+    uint32_t seed;           /* motion noise, motor variation, analog noise, placement */
+    double duration_s;       /* -1: not given (--time or its default) */
+    double sample_period_s;  /* trajectories.csv's period; default 0.1 */
+} world_spec;
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Read and check path; on any mistake print "path:line:column: what is
+ * wrong; what to do" on stderr and return -1 (nothing else is touched). */
+int world_spec_load(const char *path, world_spec *out);
+void world_spec_free(world_spec *w);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
