@@ -8,13 +8,15 @@
 #include <sim_cycle_timers.h>
 
 #include "sim.h"
+#include "progress.h"
+#include "world/world_run.h"
 
-/* Robots advance together in windows this many cycles long, so what one
- * does is seen by the others within a window. */
-#define LOCKSTEP_CYCLES 64
-#define LOCKSTEP_CYCLES_ON_AIR 8 /* while a frame may be on the air */
+/* Robots advance together in windows this many cycles long; what one
+ * sends in a window reaches the others, exactly one window later, in the
+ * next (air/ir_channel.c). */
+#define LOCKSTEP_CYCLES IR_LATENCY_CYCLES
 
-static robot robots[MAX_ROBOTS];
+static robot *robots;
 static int profiling;
 
 /* One instruction (or one sleep), its cycles charged to its function. */
@@ -72,12 +74,15 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     if (o->clock_spread_pct != 0)
         r->avr->frequency = (uint32_t)lround(
             nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
-    board_configure(r->avr, o, index);
+    int uid = o->uid >= 0 ? o->uid + index : -1, calibration[4];
+    memcpy(calibration, o->calibration, sizeof calibration);
+    if (o->world != NULL) world_robot_identity(index, &uid, calibration);
+    board_configure(r->avr, o, uid, calibration);
     adc_trigger_attach(r->avr);
-    char prefix[16] = "";
+    char prefix[sizeof r->console.prefix] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
     console_attach(r, o->quiet, prefix);
-    if (o->trace || csv != NULL) trace_attach(r, o->trace, csv);
+    if (o->trace || csv != NULL || o->world != NULL) trace_attach(r, o->trace, csv);
     if (measure_attach(r, o) != 0) return -1;
     return debug_attach(r, o);
 }
@@ -93,6 +98,18 @@ static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void
     return when + 1;
 }
 
+/* A robot asleep until a timer past this window's end cannot act in it:
+ * it stays behind until the window its next timer falls in. An IR edge
+ * for it is one of its timers (air/ir_channel.c), so nothing reaches it
+ * late. This keeps a sleeping swarm cheap: a robot sleeping between 1 ms
+ * ticks is run in one window of 125. */
+static int dozing_through(robot *r, avr_cycle_count_t end) {
+    if (r->state != cpu_Sleeping) return 0;
+    avr_cycle_timer_cancel(r->avr, wake_up, NULL);
+    const avr_cycle_timer_slot_t *next = r->avr->cycle_timers.timer;
+    return next != NULL && next->when > end;
+}
+
 /* Run every robot up to the nominal clock's cycle window_end (or until it
  * stops); 1 when all stopped. With several robots a sleeping one is woken
  * at the window's end, so it never skips past what the others do. */
@@ -101,8 +118,13 @@ static int run_window(int n, avr_cycle_count_t window_end) {
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         avr_cycle_count_t end = own_cycles(r, window_end);
-        if (n > 1 && !finished(r) && r->avr->cycle < end)
+        if (n > 1 && !finished(r) && r->avr->cycle < end) {
+            if (dozing_through(r, end)) {
+                all_finished = 0;
+                continue;
+            }
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
+        }
         while (!finished(r) && r->avr->cycle < end) {
             power_down_before_step(r);
             if (profiling)
@@ -148,9 +170,7 @@ static int report(int n, const options *o) {
     if (crashed) return EXIT_CRASH;
     if (booted) return EXIT_BOOTLOADER;
     if (running && o->expect_stop) return EXIT_TIMEOUT;
-    if (running && !o->quiet)
-        fprintf(stderr, "openswarm-sim: ran %.3f s of simulated time (%d robot%s)\n", o->seconds,
-                n, n > 1 ? "s" : "");
+    if (running && !o->quiet) progress_summary(o->seconds, n);
     return status;
 }
 
@@ -168,13 +188,45 @@ static void print_firmware_legend(const options *o) {
     fprintf(stderr, "\n");
 }
 
+static int load_robots(const options *o, FILE *csv) {
+    robots = calloc((size_t)o->robots, sizeof *robots);
+    if (robots == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", o->robots);
+        return -1;
+    }
+    for (int i = 0; i < o->robots; i++)
+        if (setup_robot(&robots[i], i, o, csv) != 0) return -1;
+    ir_channel_attach(robots, o->robots, o->ir_range_mm, o->ir_loss_pct);
+    if (o->world == NULL) ir_channel_place(placement_distance_of, (void *)&o->place);
+    else if (world_run_start(robots, o->robots, o) != 0) return -1;
+    return 0;
+}
+
+/* The robots in lockstep windows until the time is up or all stopped. */
+static void run(const options *o) {
+    avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
+    progress_start(o->progress, o->robots, nominal_hz);
+    for (avr_cycle_count_t end = 0;;) {
+        end += LOCKSTEP_CYCLES;
+        if (end > limit) end = limit;
+        int all_stopped = run_window(o->robots, end);
+        ir_channel_hand_over(LOCKSTEP_CYCLES);
+        if (o->world != NULL) world_run_after_window(end, nominal_hz);
+        progress_update(end);
+        if (all_stopped || end == limit) break;
+    }
+    progress_end();
+}
+
 int main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
-    for (int i = 0; i < o.n_elves; i++)
-        if (firmware_check(o.elves[i]) != 0) return EXIT_USAGE;
+    for (int i = 0; i < o.robots; i++)
+        if ((i == 0 || firmware_of(&o, i) != firmware_of(&o, i - 1)) &&
+            firmware_check(firmware_of(&o, i)) != 0)
+            return EXIT_USAGE;
     profiling = o.profile;
-    if (profiling && profile_load(o.elves[0]) != 0) return EXIT_USAGE;
+    if (profiling && profile_load(firmware_of(&o, 0)) != 0) return EXIT_USAGE;
     FILE *csv = NULL;
     if (o.trace_csv != NULL) {
         csv = fopen(o.trace_csv, "w");
@@ -184,27 +236,22 @@ int main(int argc, char **argv) {
         }
         fprintf(csv, "time_s,cycle,robot,device,a,b,c\n");
     }
-    for (int i = 0; i < o.robots; i++)
-        if (setup_robot(&robots[i], i, &o, csv) != 0) return EXIT_USAGE;
-    ir_channel_attach(robots, o.robots, &o.place, o.ir_range_mm, o.ir_loss_pct);
-    if (o.robots > 1 && !o.quiet) /* "[robot 0]" is an index; programs see the uid */
+    if (load_robots(&o, csv) != 0) return EXIT_USAGE;
+    if (o.robots > 1 && !o.quiet && o.uid >= 0) /* "[robot 0]" is an index; programs see the uid */
         fprintf(stderr, "openswarm-sim: robots 0..%d have uids %d..%d\n", o.robots - 1, o.uid,
                 o.uid + o.robots - 1);
-    if (o.n_elves > 1 && !o.quiet) print_firmware_legend(&o);
-    if (o.ir_log) ir_log_enable();
+    if (o.n_elves > 1 && !o.quiet && o.world == NULL) print_firmware_legend(&o);
+    if (o.ir_log) ir_log_enable(o.robots);
     ohc_attach(robots, o.robots, &o);
 
-    avr_cycle_count_t limit = (avr_cycle_count_t)(o.seconds * (double)nominal_hz);
-    for (avr_cycle_count_t end = 0;;) {
-        end += end < ir_channel_busy_until() ? LOCKSTEP_CYCLES_ON_AIR : LOCKSTEP_CYCLES;
-        if (end > limit) end = limit;
-        if (run_window(o.robots, end) || end == limit) break;
-    }
+    run(&o);
     for (int i = 0; i < o.robots; i++) {
         if (csv != NULL || o.trace) trace_flush(&robots[i]);
         debug_detach(&robots[i]);
     }
     if (csv != NULL) fclose(csv);
     if (profiling) profile_print(o.robots);
-    return report(o.robots, &o);
+    int written = o.world != NULL ? world_run_finish(o.seconds) : 0;
+    int status = report(o.robots, &o);
+    return status == 0 && written != 0 ? EXIT_USAGE : status;
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sim.h"
+#include "world/world_run.h"
 
 #define DEFAULT_DISTANCE_MM 50
 #define DEFAULT_IR_RANGE_MM 100 /* a Kilobot hears neighbours up to about 10 cm away */
@@ -63,6 +64,14 @@ static void usage(FILE *out) {
             "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
             "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
             "      --profile        print where the CPU cycles went, by function (all robots)\n"
+            "      --world FILE     robots move in the world FILE describes (docs/world.md):\n"
+            "                       arena, obstacles, objects, lights and the robots, which it\n"
+            "                       places; FIRMWARE.elf runs on robots the file names none for\n"
+            "      --out DIR        with --world: write trajectories.csv, objects.csv,\n"
+            "                       final.png and viewer.html into DIR\n"
+            "      --video          with --out: also video.mp4 (needs ffmpeg)\n"
+            "      --progress       a status line on stderr while it runs (default: when\n"
+            "                       stderr is a terminal); --no-progress never\n"
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
@@ -140,13 +149,14 @@ static int place_robots(const placement_options *given, options *o) {
 
 /* The FIRMWARE.elf arguments; several set the default robot count. */
 static int take_firmware(int n, char **paths, placement_options *place, options *o) {
+    if (n == 0 && o->world != NULL) return 0; /* the world may name every robot's */
     if (n == 0) {
         fprintf(stderr, "openswarm-sim: expected a FIRMWARE.elf (see --help)\n");
         return -1;
     }
-    if (n > MAX_ROBOTS) {
-        fprintf(stderr, "openswarm-sim: %d firmware files: openswarm-sim runs at most %d robots\n", n,
-                MAX_ROBOTS);
+    if (n > MAX_FIRMWARE) {
+        fprintf(stderr, "openswarm-sim: %d firmware files: give at most %d (the last one runs on "
+                        "the robots after it)\n", n, MAX_FIRMWARE);
         return -1;
     }
     for (int i = 0; i < n; i++) o->elves[i] = paths[i];
@@ -156,8 +166,8 @@ static int take_firmware(int n, char **paths, placement_options *place, options 
 }
 
 static int one_firmware(const options *o) {
-    for (int i = 1; i < o->n_elves; i++)
-        if (strcmp(o->elves[i], o->elves[0]) != 0) return 0;
+    for (int i = 1; i < o->robots; i++)
+        if (strcmp(firmware_of(o, i), firmware_of(o, 0)) != 0) return 0;
     return 1;
 }
 
@@ -177,6 +187,9 @@ int parse_options(int argc, char **argv, options *o) {
         {"ir-range", required_argument, 0, 'I'},   {"charging", no_argument, 0, 'H'},
         {"ir-log", no_argument, 0, 'R'},           {"clock-spread", required_argument, 0, 'S'},
         {"ir-loss", required_argument, 0, 'X'},
+        {"world", required_argument, 0, 'w'},      {"out", required_argument, 0, 'o'},
+        {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
+        {"no-progress", no_argument, 0, 'P' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -184,22 +197,23 @@ int parse_options(int argc, char **argv, options *o) {
     o->ir_range_mm = DEFAULT_IR_RANGE_MM;
     placement_options place = {-1, NULL, NULL, 0};
     o->uid = -1;
+    o->progress = -1;
     o->light_mv = o->voltage_mv = o->temperature_mv = -1;
     for (int i = 0; i < 4; i++) o->calibration[i] = -1;
     int c;
     long v = 0;
     while ((c = getopt_long(argc, argv, "t:n:d:sqmi:h", longopts, NULL)) != -1) {
         switch (c) {
-        case 't': if (parse_time(optarg, o) != 0) return -1; break;
-        case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; place.robots_given = 1; break;
+        case 't': if (parse_time(optarg, o) != 0) return -1; o->given |= GIVEN_TIME; break;
+        case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; place.robots_given = 1; o->given |= GIVEN_ROBOTS; break;
         case 's': o->expect_stop = 1; break;
-        case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; break;
-        case 'N': place.line = optarg; break;
-        case 'P': place.positions = optarg; break;
-        case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; break;
+        case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
+        case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
+        case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;
+        case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; o->given |= GIVEN_IR_RANGE; break;
         case 'R': o->ir_log = 1; break;
-        case 'S': if (percentage("--clock-spread", optarg, 5, "1", &o->clock_spread_pct) != 0) return -1; break;
-        case 'X': if (percentage("--ir-loss", optarg, 100, "20", &o->ir_loss_pct) != 0) return -1; break;
+        case 'S': if (percentage("--clock-spread", optarg, 5, "1", &o->clock_spread_pct) != 0) return -1; o->given |= GIVEN_CLOCK_SPREAD; break;
+        case 'X': if (percentage("--ir-loss", optarg, 100, "20", &o->ir_loss_pct) != 0) return -1; o->given |= GIVEN_IR_LOSS; break;
         case 'q': o->quiet = 1; break;
         case 'm': o->marks = 1; break;
         case 'F': o->profile = 1; break;
@@ -213,14 +227,19 @@ int parse_options(int argc, char **argv, options *o) {
             break;
         case 'T': o->trace = 1; break;
         case 'C': o->trace_csv = optarg; break;
-        case 'U': if ((v = number("--uid", optarg, 0, 65535, "42")) < 0) return -1; o->uid = (int)v; break;
-        case 'K': if (parse_calibration(optarg, o) != 0) return -1; break;
-        case 'L': if ((v = number("--light", optarg, 0, 5000, "1650")) < 0) return -1; o->light_mv = (int)v; break;
+        case 'U': if ((v = number("--uid", optarg, 0, 65535, "42")) < 0) return -1; o->uid = (int)v; o->given |= GIVEN_UID; break;
+        case 'K': if (parse_calibration(optarg, o) != 0) return -1; o->given |= GIVEN_CALIBRATION; break;
+        case 'L': if ((v = number("--light", optarg, 0, 5000, "1650")) < 0) return -1; o->light_mv = (int)v; o->given |= GIVEN_LIGHT; break;
         case 'V': if ((v = number("--voltage", optarg, 0, 5000, "3000")) < 0) return -1; o->voltage_mv = (int)v; break;
         case 'E': if ((v = number("--temperature", optarg, 0, 5000, "330")) < 0) return -1; o->temperature_mv = (int)v; break;
         case 'G': if ((v = number("--gdb", optarg, 1, 65535, "1234")) < 0) return -1; o->gdb_port = (int)v; break;
         case 'W': o->vcd = optarg; break;
         case 'H': o->charging = 1; break;
+        case 'w': o->world = optarg; break;
+        case 'o': o->out_dir = optarg; break;
+        case 'v': o->video = 1; break;
+        case 'p': o->progress = 1; break;
+        case 'P' + 256: o->progress = 0; break;
         case 'O':
             if (o->n_ohc == MAX_OHC_MESSAGES) {
                 fprintf(stderr, "openswarm-sim: at most %d --ohc messages\n", MAX_OHC_MESSAGES);
@@ -233,7 +252,19 @@ int parse_options(int argc, char **argv, options *o) {
         }
     }
     if (take_firmware(argc - optind, argv + optind, &place, o) != 0) return -1;
+    if (o->world != NULL) return world_options_check(o);
+    if (o->out_dir != NULL || o->video) {
+        fprintf(stderr, "openswarm-sim: --out and --video record robots moving in a world: give "
+                        "--world FILE too (docs/world.md)\n");
+        return -1;
+    }
     if (place_robots(&place, o) != 0) return -1;
+    return options_check_robots(o);
+}
+
+/* The checks that need the robots' count: after a placement option or a
+ * world file set it. */
+int options_check_robots(options *o) {
     if (o->n_elves > o->robots) {
         fprintf(stderr, "openswarm-sim: %d firmware files for %d robots: give at most one per robot "
                         "(the last one also runs on the robots after it)\n", o->n_elves, o->robots);
@@ -245,7 +276,8 @@ int parse_options(int argc, char **argv, options *o) {
         return -1;
     }
     if (o->robots > 1 && (o->gdb_port != 0 || o->vcd != NULL)) {
-        fprintf(stderr, "openswarm-sim: --gdb and --vcd follow one robot: drop --robots\n");
+        fprintf(stderr, "openswarm-sim: --gdb and --vcd follow one robot: drop --robots (or "
+                        "use a world of one robot)\n");
         return -1;
     }
     if (o->robots > 1 && o->uid < 0) o->uid = 1;
@@ -257,5 +289,8 @@ int parse_options(int argc, char **argv, options *o) {
 }
 
 const char *firmware_of(const options *o, int index) {
-    return o->elves[index < o->n_elves ? index : o->n_elves - 1];
+    if (o->robot_elf != NULL) return o->robot_elf[index];
+    if (o->n_elves <= 0) return NULL;
+    int k = index < o->n_elves ? index : o->n_elves - 1;
+    return o->elves[k < 0 ? 0 : k];
 }

@@ -24,7 +24,11 @@
 #define GPIOR1_ADDR 0x4A
 #define GPIOR2_ADDR 0x4B
 #define MAX_WATCHED_IRQS 8
-#define MAX_ROBOTS 64
+#define MAX_ROBOTS 10000 /* more is likely a typo; memory is the only limit */
+#define MAX_FIRMWARE 64
+/* Robots run in lockstep windows this many cycles long; an IR edge reaches
+ * its receivers exactly this long after it left (air/ir_channel.c). */
+#define IR_LATENCY_CYCLES 64
 #define MAX_OHC_MESSAGES 16
 
 enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5 };
@@ -44,11 +48,11 @@ typedef struct ohc_message {
 typedef struct placement {
     int has_positions; /* 0: every pair distance_mm apart */
     int distance_mm;
-    double x_mm[MAX_ROBOTS], y_mm[MAX_ROBOTS];
+    double *x_mm, *y_mm; /* has_positions: one per robot */
 } placement;
 
 typedef struct options {
-    const char *elves[MAX_ROBOTS]; /* robot k runs elves[k], the last one the rest */
+    const char *elves[MAX_FIRMWARE]; /* robot k runs elves[k], the last one the rest */
     int n_elves;
     double seconds;
     int robots;
@@ -73,10 +77,23 @@ typedef struct options {
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
+    const char **robot_elf; /* per robot, when a world names firmware (else elves) */
+    unsigned given;     /* GIVEN_* bits: what the command line set */
+    const char *world;  /* --world FILE: robots move in it (world/) */
+    const char *out_dir; /* --out DIR: what a run in a world leaves (output/) */
+    int video;          /* --video: also video.mp4 */
+    int progress;       /* a status line on stderr while it runs: -1 auto, 0 no, 1 yes */
 } options;
+
+/* What the command line set, for what a world file may also set. */
+enum {
+    GIVEN_TIME = 1, GIVEN_ROBOTS = 2, GIVEN_PLACEMENT = 4, GIVEN_UID = 8, GIVEN_CALIBRATION = 16,
+    GIVEN_IR_RANGE = 32, GIVEN_IR_LOSS = 64, GIVEN_CLOCK_SPREAD = 128, GIVEN_LIGHT = 256
+};
 
 /* options.c */
 int parse_options(int argc, char **argv, options *o);
+int options_check_robots(options *o);
 const char *firmware_of(const options *o, int index);
 
 /* placement.c: --distance, --line SPACING, --positions FILE (robots is
@@ -85,10 +102,12 @@ void placement_all_at(placement *p, int distance_mm);
 int placement_line(placement *p, int robots, const char *spacing_text);
 int placement_file(placement *p, const char *path, int *robots, int robots_given);
 double placement_distance(const placement *p, int a, int b);
+/* The same, as the IR channel asks it (ctx: the placement). */
+double placement_distance_of(int a, int b, void *ctx);
 
 /* A line-buffered text output of one robot (its console or serial port). */
 typedef struct console {
-    char prefix[16];
+    char prefix[24];
     char line[256];
     size_t len;
     int quiet;            /* lines dropped; kernel faults still reported */
@@ -96,8 +115,14 @@ typedef struct console {
     int record_left;      /* its bytes still to come */
 } console;
 
+/* Told of every motor duty change at its cycle (the world moves the robot). */
+typedef void (*motors_changed_fn)(void *ctx, int robot, uint8_t left, uint8_t right,
+                                  avr_cycle_count_t cycle);
+
 /* What the robot shows: LED colour and motor duty, reported once settled. */
 typedef struct robot_trace {
+    motors_changed_fn on_motors;
+    void *on_motors_ctx;
     avr_t *avr;
     int index;
     const char *prefix;
@@ -161,9 +186,15 @@ void console_attach(robot *r, int quiet, const char *prefix);
 /* robot_trace.c */
 void trace_attach(robot *r, int print, FILE *csv);
 void trace_flush(robot *r);
+/* The LED's colour now, each channel 0..3. */
+void trace_led(const robot *r, uint8_t rgb[3]);
 
-/* kilobot_board.c: what the robot's EEPROM and sensors hold */
-void board_configure(avr_t *avr, const options *o, int index);
+/* The Kilobot's analog inputs: simavr converts millivolts against AVcc. */
+#define KILOBOT_AVCC_MV 3300
+
+/* kilobot_board.c: what the robot's EEPROM and sensors hold: uid -1
+ * leaves the EEPROM's uid erased, a calibration duty -1 its byte. */
+void board_configure(avr_t *avr, const options *o, int uid, const int calibration[4]);
 
 /* power_down.c: SLEEP in power-down stops Timer0/1/2; call around each avr_run.
  * The tests are inline: they run at every instruction, and a call each
@@ -214,13 +245,18 @@ uint16_t ir_frame_crc(const uint8_t *bytes);
 /* ir_channel.c: every robot hears the IR LED of every other within range */
 /* loss_pct: the chance, in percent, that a frame is lost to a receiver at
  * the range's edge; closer, it falls with the distance squared. */
-void ir_channel_attach(robot *all, int n, const placement *p, int range_mm, double loss_pct);
-/* The cycle until which a frame may be on the air: the robots run in finer
- * lockstep meanwhile, so a flash reaches a receiver at most a few cycles
- * late (a receiver times each bit; Timer1 stamps the edges). */
-avr_cycle_count_t ir_channel_busy_until(void);
+void ir_channel_attach(robot *all, int n, int range_mm, double loss_pct);
+/* How far apart robots a and b are, in mm. */
+typedef double (*ir_distance_fn)(int a, int b, void *ctx);
+/* Who reaches whom, from where the robots are now; again when they move. */
+void ir_channel_place(ir_distance_fn distance, void *ctx);
+/* Between two lockstep windows: the edges sent in the last one go to their
+ * receivers, due latency_cycles (nominal clock) after they left. */
+void ir_channel_hand_over(uint32_t latency_cycles);
+/* The receivers sender reaches (up to room of them), and their count. */
+int ir_channel_links(int sender, int *receivers, int room);
 /* ir_log.c: --ir-log, the frames on the air decoded by the wire format */
-void ir_log_enable(void);
+void ir_log_enable(int robots);
 /* A rising flash of from's IR LED; in_range names the robots it reaches. */
 void ir_log_flash(const robot *from, avr_cycle_count_t cycle, const char *in_range);
 

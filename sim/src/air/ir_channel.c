@@ -2,26 +2,38 @@
 /* The IR channel between robots: a robot hears every other within range.
  *
  * A flash of a robot's IR LED (PB0 high) drives the analog comparator of
- * every other robot within --ir-range (AIN0 above AIN1) at the same cycle;
- * robots farther away see nothing, so they neither receive the frame nor
- * sense it as carrier, and frames collide only where both senders reach.
- * The pairs in range are listed once, when the robots are placed: a flash
- * costs one step per receiver in range, nothing per cycle. If the receiver is
- * behind in its lockstep window the edge is scheduled at that cycle,
- * otherwise as soon as it can be (at most a window late, a quarter bit).
- * Edges to one receiver stay at least EDGE_GAP cycles apart: simavr 1.6
- * updates the comparator a cycle after its input changes, and a second
- * change before that update (two edges closer than the instruction being
- * executed) replaces the first: the pulse would vanish.
+ * every other robot within --ir-range (AIN0 above AIN1); robots farther
+ * away see nothing, so they neither receive the frame nor sense it as
+ * carrier, and frames collide only where both senders reach.
+ *
+ * Every edge reaches its receivers exactly IR_LATENCY_CYCLES after it left
+ * (on the receiver's clock): the robots run in lockstep windows that long,
+ * so an edge sent in one window is handed over between the windows and
+ * lands in the next, at its exact cycle, whatever order the robots ran in
+ * (or on which thread). The 8 us delay is far below anything the wire
+ * format times (a bit is 33 us) and the same for every edge, so bit
+ * timing is exact.
+ *
+ * Each receiver keeps its own queue of edges, served by one cycle timer:
+ * simavr 1.6 has a pool of 64 timers per MCU, so one timer per sender and
+ * edge ran out in swarms of 64. Edges to one receiver stay at least
+ * EDGE_GAP cycles apart: simavr 1.6 updates the comparator a cycle after
+ * its input changes, and a second change before that update replaces the
+ * first: the pulse would vanish.
+ *
  * The distance sensors (ADC0 high gain, ADC1 low gain) read what the
- * sender of the last flash would give at its distance: the firmware samples
- * them during a frame (after its start and stop pulses, ports/kilobot/src/
- * devices/ir.c), so they show the robot whose frame is being received.
- * Before the first flash they read 0 V, as in the dark. */
+ * sender of the last flash gives at its distance: the firmware samples
+ * them during a frame (ports/kilobot/src/devices/ir.c), so they show the
+ * robot whose frame is being received. Before the first flash they read
+ * 0 V, as in the dark.
+ *
+ * Who reaches whom is worked out again whenever the robots move
+ * (ir_channel_place): a flash costs one step per receiver in range. */
 #include <avr_acomp.h>
 #include <avr_adc.h>
 #include <avr_ioport.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sim_cycle_timers.h>
 #include <sim_io.h>
@@ -31,65 +43,95 @@
 #define AIN1_MV 500 /* the comparator's threshold */
 #define EDGE_GAP 8
 
-typedef struct ir_link ir_link;
+/* A sender and one receiver in its range. */
+typedef struct ir_link {
+    int to;
+    uint32_t high_gain_mv, low_gain_mv; /* the receiver's distance sensors, from this sender */
+    double loss;                        /* chance that a frame does not reach it (--ir-loss) */
+    avr_cycle_count_t lost_until;       /* sender cycle: the current frame is lost here */
+} ir_link;
 
-/* One edge on its way from a sender to a receiver; rises and falls have
- * their own, so a pending rise is never replaced by its fall. */
+/* An edge on its way to a receiver, at a cycle of the receiver's clock. */
 typedef struct ir_edge {
-    ir_link *link;
-    uint32_t level; /* AIN0 millivolts to apply */
+    avr_cycle_count_t at;
+    uint32_t level; /* AIN0 millivolts */
+    uint32_t high_gain_mv, low_gain_mv;
+    int from, to;
 } ir_edge;
 
-/* A sender and one receiver in its range. */
-struct ir_link {
-    robot *to;
-    uint32_t high_gain_mv, low_gain_mv; /* the receiver's distance sensors, from this sender */
-    ir_edge edge[2];                    /* [0] fall, [1] rise */
-    avr_cycle_count_t next_free;        /* earliest receiver cycle for the next edge */
-    double loss;                        /* chance that a frame does not reach it (--ir-loss) */
-    avr_cycle_count_t lost_until;       /* sender cycle: the current frame's edges are lost */
-};
+/* A flash or its end, as the sender's LED did it. */
+typedef struct ir_sent {
+    avr_cycle_count_t cycle;
+    int lit;
+} ir_sent;
 
-/* links[s][0 .. n_links[s] - 1]: the receivers sender s reaches. */
-static ir_link links[MAX_ROBOTS][MAX_ROBOTS - 1];
-static int n_links[MAX_ROBOTS];
-/* The same, as text for --ir-log: "1, 2"; and for the frame on the air,
- * with the receivers --ir-loss took it from: "1, 2; lost at 2". */
-static char in_range[MAX_ROBOTS][MAX_ROBOTS * 4];
-static char frame_reach[MAX_ROBOTS][MAX_ROBOTS * 8 + 16];
-/* Until about this cycle a frame may be on the air (a flash plus two frame
- * times: the sender's cycles are within a few percent of the others'). */
-static avr_cycle_count_t busy_until;
+typedef struct ir_station {
+    robot *robot;
+    /* As sender: the receivers in range, by index, and this window's edges. */
+    ir_link *links;
+    int n_links, links_room;
+    ir_sent *outbox;
+    int n_out, out_room;
+    avr_cycle_count_t last_flash;
+    char *in_range;    /* "1, 2" for --ir-log */
+    char *frame_reach; /* "1, 2; lost at 2" */
+    size_t text_room;
+    /* As receiver: edges due, in time order, from head on. */
+    ir_edge *queue;
+    int head, tail, queue_room;
+    avr_cycle_count_t next_free;
+    uint32_t sensed_high, sensed_low; /* last applied to ADC0 / ADC1 */
+} ir_station;
+
+static ir_station *stations;
+static int n_stations;
+static int range_mm;
+static double loss_pct;
+static uint32_t loss_random = 0x2545F491u; /* fixed: every run loses the same frames */
+
 #define FRAME_CYCLES ((IR_FRAME_SLOTS + 1) * IR_BIT_CYCLES)
 /* A sender's flash this long after its last starts a new frame (within a
  * frame, pulses are at most 9 slots apart). */
 #define FRAME_GAP_CYCLES (12 * IR_BIT_CYCLES)
-static avr_cycle_count_t last_flash[MAX_ROBOTS];
-static uint32_t loss_random = 0x2545F491u; /* fixed: every run loses the same frames */
 
-avr_cycle_count_t ir_channel_busy_until(void) { return busy_until; }
-/* The link each robot's distance sensors read now, NULL before any. */
-static const ir_link *sensed[MAX_ROBOTS];
+static void *grow(void *items, int *room, int needed, size_t size) {
+    if (needed <= *room) return items;
+    int more = *room ? *room * 2 : 16;
+    while (more < needed) more *= 2;
+    void *bigger = realloc(items, (size_t)more * size);
+    if (bigger == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for the IR channel\n");
+        exit(EXIT_CRASH);
+    }
+    *room = more;
+    return bigger;
+}
 
 static void set_input(avr_t *avr, uint32_t ioctl, int irq, uint32_t millivolts) {
     avr_raise_irq(avr_io_getirq(avr, ioctl, irq), millivolts);
 }
 
-static void sense(const ir_link *l) {
-    if (sensed[l->to->index] == l) return;
-    sensed[l->to->index] = l;
-    avr_t *avr = l->to->avr;
-    set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0, l->high_gain_mv);
-    set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1, l->low_gain_mv);
+static void apply(ir_station *s, const ir_edge *e) {
+    avr_t *avr = s->robot->avr;
+    if (e->level != 0 && (s->sensed_high != e->high_gain_mv || s->sensed_low != e->low_gain_mv)) {
+        s->sensed_high = e->high_gain_mv;
+        s->sensed_low = e->low_gain_mv;
+        set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0, e->high_gain_mv);
+        set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1, e->low_gain_mv);
+    }
+    set_input(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, e->level);
 }
 
+/* The receiver's timer: every edge due by now, then wait for the next. */
 static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void *param) {
-    (void)avr;
     (void)when;
-    ir_edge *e = param;
-    if (e->level != 0) sense(e->link);
-    set_input(e->link->to->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, e->level);
-    return 0;
+    ir_station *s = param;
+    while (s->head < s->tail && s->queue[s->head].at <= avr->cycle) apply(s, &s->queue[s->head++]);
+    if (s->head == s->tail) {
+        s->head = s->tail = 0;
+        return 0;
+    }
+    return s->queue[s->head].at; /* the same timer, again then */
 }
 
 /* A number in [0, 1) from a fixed xorshift sequence. */
@@ -102,21 +144,34 @@ static double next_random(void) {
 
 /* At a frame's start pulse, each receiver in range loses the whole frame
  * or none of it. */
-static void draw_losses(robot *from, avr_cycle_count_t sent) {
-    int starts = last_flash[from->index] == 0 || sent - last_flash[from->index] > FRAME_GAP_CYCLES;
-    last_flash[from->index] = sent;
+static void draw_losses(ir_station *from, avr_cycle_count_t sent) {
+    int starts = from->last_flash == 0 || sent - from->last_flash > FRAME_GAP_CYCLES;
+    from->last_flash = sent;
     if (!starts) return;
-    char *lost = frame_reach[from->index];
-    strcpy(lost, in_range[from->index]);
+    strcpy(from->frame_reach, from->in_range);
     const char *sep = "; lost at ";
-    for (int k = 0; k < n_links[from->index]; k++) {
-        ir_link *l = &links[from->index][k];
+    for (int k = 0; k < from->n_links; k++) {
+        ir_link *l = &from->links[k];
         l->lost_until = l->loss > 0 && next_random() < l->loss ? sent + FRAME_CYCLES : 0;
         if (l->lost_until == 0) continue;
-        size_t used = strlen(lost);
-        snprintf(lost + used, sizeof frame_reach[0] - used, "%s%d", sep, l->to->index);
+        size_t used = strlen(from->frame_reach);
+        snprintf(from->frame_reach + used, from->text_room - used, "%s%d", sep, l->to);
         sep = ", ";
     }
+}
+
+/* The LED's pin: noted in the sender's outbox, handed over after the window. */
+static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
+    (void)irq;
+    ir_station *from = param;
+    avr_cycle_count_t sent = from->robot->avr->cycle;
+    if (value) {
+        ir_log_flash(from->robot, sent, from->frame_reach); /* ends a frame, or starts one */
+        draw_losses(from, sent);
+    }
+    if (from->n_links == 0) return;
+    from->outbox = grow(from->outbox, &from->out_room, from->n_out + 1, sizeof(ir_sent));
+    from->outbox[from->n_out++] = (ir_sent){sent, value != 0};
 }
 
 /* Cycle c of robot from's clock on robot to's (--clock-spread). */
@@ -125,28 +180,51 @@ static avr_cycle_count_t on_clock_of(const robot *to, const robot *from, avr_cyc
     return f_to == f_from ? c : c * f_to / f_from;
 }
 
-static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
-    (void)irq;
-    robot *from = param;
-    avr_cycle_count_t sent = from->avr->cycle;
-    if (value) {
-        ir_log_flash(from, sent, frame_reach[from->index]); /* ends a frame, or starts one */
-        draw_losses(from, sent);
+static ir_edge *window_edges;
+static int n_window_edges, window_edges_room;
+
+static int by_receiver_then_time(const void *a, const void *b) {
+    const ir_edge *x = a, *y = b;
+    if (x->to != y->to) return x->to < y->to ? -1 : 1;
+    if (x->at != y->at) return x->at < y->at ? -1 : 1;
+    return x->from < y->from ? -1 : x->from > y->from;
+}
+
+static void collect(ir_station *from, uint32_t latency) {
+    for (int e = 0; e < from->n_out; e++) {
+        const ir_sent *sent = &from->outbox[e];
+        for (int k = 0; k < from->n_links; k++) {
+            const ir_link *l = &from->links[k];
+            if (sent->cycle < l->lost_until) continue; /* neither heard nor sensed as carrier */
+            const robot *to = stations[l->to].robot;
+            window_edges = grow(window_edges, &window_edges_room, n_window_edges + 1, sizeof(ir_edge));
+            window_edges[n_window_edges++] = (ir_edge){
+                on_clock_of(to, from->robot, sent->cycle) + on_clock_of(to, stations[0].robot, latency),
+                sent->lit ? IR_LIT_MV : 0, l->high_gain_mv, l->low_gain_mv,
+                (int)(from - stations), l->to};
+        }
     }
-    if (n_links[from->index] != 0 && sent + 2 * FRAME_CYCLES > busy_until)
-        busy_until = sent + 2 * FRAME_CYCLES;
-    for (int k = 0; k < n_links[from->index]; k++) {
-        ir_link *l = &links[from->index][k];
-        if (sent < l->lost_until) continue; /* neither heard nor sensed as carrier */
-        ir_edge *e = &l->edge[value ? 1 : 0];
-        robot *to = l->to;
-        avr_cycle_count_t now = to->avr->cycle;
-        avr_cycle_count_t heard = on_clock_of(to, from, sent);
-        avr_cycle_count_t at = heard > now ? heard : now;
-        if (at < l->next_free) at = l->next_free;
-        l->next_free = at + EDGE_GAP;
-        avr_cycle_timer_register(to->avr, at - now + 1, deliver, e);
-    }
+    from->n_out = 0;
+}
+
+static void enqueue(ir_station *s, ir_edge e) {
+    avr_t *avr = s->robot->avr;
+    if (e.at <= avr->cycle) e.at = avr->cycle + 1;
+    if (e.at < s->next_free) e.at = s->next_free;
+    s->next_free = e.at + EDGE_GAP;
+    int idle = s->head == s->tail;
+    s->queue = grow(s->queue, &s->queue_room, s->tail + 1, sizeof(ir_edge));
+    s->queue[s->tail++] = e;
+    if (idle) avr_cycle_timer_register(avr, e.at - avr->cycle, deliver, s);
+}
+
+void ir_channel_hand_over(uint32_t latency_cycles) {
+    n_window_edges = 0;
+    for (int i = 0; i < n_stations; i++)
+        if (stations[i].n_out != 0) collect(&stations[i], latency_cycles);
+    if (n_window_edges == 0) return;
+    qsort(window_edges, (size_t)n_window_edges, sizeof(ir_edge), by_receiver_then_time);
+    for (int e = 0; e < n_window_edges; e++) enqueue(&stations[window_edges[e].to], window_edges[e]);
 }
 
 /* ADC readings (0..1023) a receiver gets from a sender d mm away: the high
@@ -164,30 +242,68 @@ static uint32_t millivolts_of(const robot *r, int reading) {
     return (uint32_t)reading * r->avr->avcc / 1024u;
 }
 
-/* List the receivers sender s reaches, with what their sensors read. */
-static void link_sender(robot *all, int n, int s, const placement *p, int range_mm, double loss_pct) {
-    for (int j = 0; j < n; j++) {
-        double mm = placement_distance(p, s, j);
-        if (j == s || mm > range_mm) continue;
-        ir_link *l = &links[s][n_links[s]++];
-        l->to = &all[j];
-        l->edge[0] = (ir_edge){l, 0};
-        l->edge[1] = (ir_edge){l, IR_LIT_MV};
-        l->high_gain_mv = millivolts_of(l->to, ir_high_gain_reading((int)lround(mm)));
-        l->low_gain_mv = millivolts_of(l->to, ir_low_gain_reading((int)lround(mm)));
+/* The receivers sender s reaches now. A receiver still in range keeps the
+ * loss drawn for the frame on the air. */
+static void link_sender(int s, ir_distance_fn distance, void *ctx) {
+    ir_station *from = &stations[s];
+    ir_link *old = from->links;
+    int n_old = from->n_links, o = 0;
+    from->links = NULL;
+    from->n_links = from->links_room = 0;
+    from->in_range[0] = '\0';
+    for (int j = 0; j < n_stations; j++) {
+        if (j == s) continue;
+        double mm = distance(s, j, ctx);
+        if (mm > range_mm) continue;
+        from->links = grow(from->links, &from->links_room, from->n_links + 1, sizeof(ir_link));
+        ir_link *l = &from->links[from->n_links++];
+        const robot *to = stations[j].robot;
+        l->to = j;
+        l->high_gain_mv = millivolts_of(to, ir_high_gain_reading((int)lround(mm)));
+        l->low_gain_mv = millivolts_of(to, ir_low_gain_reading((int)lround(mm)));
         l->loss = loss_pct / 100.0 * (mm / range_mm) * (mm / range_mm);
-        size_t used = strlen(in_range[s]);
-        snprintf(in_range[s] + used, sizeof in_range[s] - used, "%s%d", used ? ", " : "", j);
+        while (o < n_old && old[o].to < j) o++;
+        l->lost_until = o < n_old && old[o].to == j ? old[o].lost_until : 0;
+        size_t used = strlen(from->in_range);
+        snprintf(from->in_range + used, from->text_room - used, "%s%d", used ? ", " : "", j);
     }
+    free(old);
 }
 
-void ir_channel_attach(robot *all, int n, const placement *p, int range_mm, double loss_pct) {
+void ir_channel_place(ir_distance_fn distance, void *ctx) {
+    for (int s = 0; s < n_stations; s++) link_sender(s, distance, ctx);
+}
+
+int ir_channel_links(int sender, int *receivers, int room) {
+    const ir_station *from = &stations[sender];
+    int n = from->n_links < room ? from->n_links : room;
+    for (int k = 0; k < n; k++) receivers[k] = from->links[k].to;
+    return from->n_links;
+}
+
+void ir_channel_attach(robot *all, int n, int range, double loss) {
+    stations = calloc((size_t)n, sizeof *stations);
+    if (stations == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", n);
+        exit(EXIT_CRASH);
+    }
+    n_stations = n;
+    range_mm = range;
+    loss_pct = loss;
     for (int i = 0; i < n; i++) {
-        robot *r = &all[i];
-        avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
-                                tx_pin, r);
-        set_input(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1, AIN1_MV);
-        set_input(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, 0);
-        link_sender(all, n, i, p, range_mm, loss_pct);
+        ir_station *s = &stations[i];
+        s->robot = &all[i];
+        s->text_room = (size_t)n * 8 + 32;
+        s->in_range = calloc(s->text_room, 1);
+        s->frame_reach = calloc(s->text_room, 1);
+        if (s->in_range == NULL || s->frame_reach == NULL) {
+            fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", n);
+            exit(EXIT_CRASH);
+        }
+        avr_t *avr = all[i].avr;
+        avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
+                                tx_pin, s);
+        set_input(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1, AIN1_MV);
+        set_input(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, 0);
     }
 }

@@ -38,10 +38,17 @@ typedef struct air_frame {
     const char *broken; /* what was wrong, NULL: nothing yet */
 } air_frame;
 
-static air_frame frames[MAX_ROBOTS];
+static air_frame *frames; /* one per robot */
 static int enabled;
 
-void ir_log_enable(void) { enabled = 1; }
+void ir_log_enable(int robots) {
+    frames = calloc((size_t)robots, sizeof *frames);
+    if (frames == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for --ir-log's %d robots\n", robots);
+        exit(EXIT_CRASH);
+    }
+    enabled = 1;
+}
 
 /* The format's slot of the last pulse, from the start pulse: where a
  * broken frame stopped making sense. */

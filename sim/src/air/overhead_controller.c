@@ -150,10 +150,15 @@ static avr_cycle_count_t step(struct avr_t *avr, avr_cycle_count_t when, void *p
     return when + FLASH_CYCLES;
 }
 
-static broadcast broadcasts[MAX_OHC_MESSAGES][MAX_ROBOTS];
+static broadcast *broadcasts[MAX_OHC_MESSAGES]; /* one per robot */
 
 void ohc_attach(robot *all, int n, const options *o) {
     for (int k = 0; k < o->n_ohc; k++) {
+        broadcasts[k] = calloc((size_t)n, sizeof(broadcast));
+        if (broadcasts[k] == NULL) {
+            fprintf(stderr, "openswarm-sim: out of memory for --ohc on %d robots\n", n);
+            exit(EXIT_CRASH);
+        }
         uint8_t frame[IR_FRAME_BYTES] = {0};
         memcpy(frame, o->ohc[k].data, sizeof o->ohc[k].data);
         frame[9] = o->ohc[k].type;

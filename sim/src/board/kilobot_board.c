@@ -2,13 +2,11 @@
 /* What a Kilobot's EEPROM and analog inputs hold, set before it runs. */
 #include <avr_adc.h>
 #include <avr_eeprom.h>
+#include <avr_extint.h>
 #include <avr_ioport.h>
 #include <sim_io.h>
 
 #include "sim.h"
-
-/* The Kilobot's analog inputs: simavr converts millivolts against AVcc. */
-#define KILOBOT_AVCC_MV 3300
 
 static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
 #define UID_ADDRESS 0xB0
@@ -28,16 +26,22 @@ static void set_analog(avr_t *avr, int channel, int millivolts) {
         avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, channel), (uint32_t)millivolts);
 }
 
-void board_configure(avr_t *avr, const options *o, int index) {
+void board_configure(avr_t *avr, const options *o, int uid, const int calibration[4]) {
     avr->vcc = avr->avcc = avr->aref = KILOBOT_AVCC_MV;
+    /* simavr 1.6 polls INT0/INT1 pins held low every cycle, enabled or not,
+     * to repeat a level-triggered interrupt; PD3 (INT1) is the right motor's
+     * PWM output, so a robot whose right motor ran cost three times as much
+     * to simulate. A Kilobot uses neither interrupt: one trigger per fall. */
+    avr_extint_set_strict_lvl_trig(avr, 0, 0);
+    avr_extint_set_strict_lvl_trig(avr, 1, 0);
     set_analog(avr, ADC_IRQ_ADC7, o->light_mv);
     set_analog(avr, ADC_IRQ_ADC6, o->voltage_mv);
     set_analog(avr, ADC_IRQ_TEMP, o->temperature_mv);
     /* The charger's status output holds PD0 high, low while it charges. */
     avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN0), !o->charging);
     for (int i = 0; i < 4; i++) {
-        if (o->calibration[i] < 0) continue;
-        uint8_t v = (uint8_t)o->calibration[i];
+        if (calibration[i] < 0) continue;
+        uint8_t v = (uint8_t)calibration[i];
         write_eeprom(avr, calibration_address[i], &v, 1);
     }
     uint8_t low[2 * TABLE_ENTRIES], high[2 * TABLE_ENTRIES];
@@ -50,8 +54,7 @@ void board_configure(avr_t *avr, const options *o, int index) {
     }
     write_eeprom(avr, LOW_GAIN_TABLE, low, sizeof low);
     write_eeprom(avr, HIGH_GAIN_TABLE, high, sizeof high);
-    if (o->uid >= 0) {
-        int uid = o->uid + index;
+    if (uid >= 0) {
         uint8_t bytes[2] = {(uint8_t)(uid & 0xFF), (uint8_t)(uid >> 8)}; /* little-endian */
         write_eeprom(avr, UID_ADDRESS, bytes, 2);
     }

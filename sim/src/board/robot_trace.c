@@ -72,6 +72,10 @@ static avr_cycle_count_t settled(struct avr_t *avr, avr_cycle_count_t when, void
     return 0;
 }
 
+static void motors_changed(robot_trace *t) {
+    if (t->on_motors) t->on_motors(t->on_motors_ctx, t->index, t->pwm[0], t->pwm[1], t->avr->cycle);
+}
+
 static void changed(robot_trace *t) {
     if (t->burst == 0) t->burst = t->avr->cycle;
     avr_cycle_timer_cancel(t->avr, settled, t);
@@ -96,6 +100,7 @@ static void left_pwm(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     robot_trace *t = param;
     t->pwm[0] = (uint8_t)value;
+    motors_changed(t);
     changed(t);
 }
 
@@ -103,6 +108,7 @@ static void right_pwm(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     robot_trace *t = param;
     t->pwm[1] = (uint8_t)value;
+    motors_changed(t);
     changed(t);
 }
 
@@ -127,6 +133,7 @@ static void timer2_written(struct avr_irq_t *irq, uint32_t value, void *param) {
     if (left == t->pwm[0] && right == t->pwm[1]) return;
     t->pwm[0] = left;
     t->pwm[1] = right;
+    motors_changed(t);
     changed(t);
 }
 
@@ -151,6 +158,14 @@ void trace_attach(robot *r, int print, FILE *csv) {
     for (size_t i = 0; i < sizeof timer2_registers / sizeof timer2_registers[0]; i++)
         avr_irq_register_notify(avr_iomem_getirq(avr, timer2_registers[i], NULL, AVR_IOMEM_IRQ_ALL),
                                 timer2_written, t);
+}
+
+void trace_led(const robot *r, uint8_t rgb[3]) {
+    int red, green, blue;
+    led_rgb(&r->trace, &red, &green, &blue);
+    rgb[0] = (uint8_t)red;
+    rgb[1] = (uint8_t)green;
+    rgb[2] = (uint8_t)blue;
 }
 
 /* A change still settling when the run ends is reported too. */

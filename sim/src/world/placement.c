@@ -20,6 +20,17 @@ void placement_all_at(placement *p, int distance_mm) {
     p->distance_mm = distance_mm;
 }
 
+/* Room for robots positions, zeroed; -1 when memory runs out. */
+static int positions_for(placement *p, int robots) {
+    memset(p, 0, sizeof *p);
+    p->has_positions = 1;
+    p->x_mm = calloc((size_t)robots, sizeof(double));
+    p->y_mm = calloc((size_t)robots, sizeof(double));
+    if (p->x_mm != NULL && p->y_mm != NULL) return 0;
+    fprintf(stderr, "openswarm-sim: out of memory for %d robots' positions\n", robots);
+    return -1;
+}
+
 int placement_line(placement *p, int robots, const char *spacing_text) {
     char *end;
     double spacing = strtod(spacing_text, &end);
@@ -29,8 +40,7 @@ int placement_line(placement *p, int robots, const char *spacing_text) {
                 spacing_text, BODY_MM, BODY_MM);
         return -1;
     }
-    memset(p, 0, sizeof *p);
-    p->has_positions = 1;
+    if (positions_for(p, robots) != 0) return -1;
     for (int i = 0; i < robots; i++) p->x_mm[i] = spacing * i;
     return 0;
 }
@@ -39,6 +49,8 @@ double placement_distance(const placement *p, int a, int b) {
     if (!p->has_positions) return p->distance_mm;
     return hypot(p->x_mm[a] - p->x_mm[b], p->y_mm[a] - p->y_mm[b]);
 }
+
+double placement_distance_of(int a, int b, void *ctx) { return placement_distance(ctx, a, b); }
 
 /* Reads "x y" from one line of the file; 0 for a blank or comment line,
  * 1 for a position, -1 for anything else. */
@@ -118,10 +130,10 @@ int placement_file(placement *p, const char *path, int *robots, int robots_given
                         "(millimetres) per robot\n", path, strerror(errno));
         return -1;
     }
-    memset(p, 0, sizeof *p);
-    p->has_positions = 1;
-    int count, line_of[MAX_ROBOTS];
-    int status = read_positions(p, path, f, &count, line_of);
+    int count, *line_of = calloc(MAX_ROBOTS, sizeof(int)), status = -1;
+    if (line_of != NULL && positions_for(p, MAX_ROBOTS) == 0)
+        status = read_positions(p, path, f, &count, line_of);
+    free(line_of);
     fclose(f);
     if (status != 0) return -1;
     if (count == 0) {

@@ -1,0 +1,178 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The world's physics on Box2D (world.h).
+ *
+ * Units: Box2D is tuned for bodies of 0.1 to 10 units, so one unit is a
+ * centimetre here (a Kilobot 1.65 units across in radius, an arena 50 to
+ * 200), masses in kilograms, time in seconds. The floor is seen from
+ * above: no gravity in the plane; ground friction is a force that the
+ * robots' legs and the objects' friction joints apply. A robot drives by
+ * the force its legs can put on the floor (its weight times the leg
+ * friction): enough to reach its walking speed within a step in free
+ * space, but a wall stops it and a heavy object may not budge. */
+#include "world/world.h"
+
+#include <box2d/box2d.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace {
+
+constexpr double MM_PER_UNIT = 10.0;
+constexpr double GRAVITY = 981.0;        /* cm / s^2 */
+constexpr double KILOBOT_MASS_KG = 0.016; /* 16 g */
+constexpr double LEG_FRICTION = 0.5;
+constexpr double CONTACT_FRICTION = 0.3; /* body against body */
+constexpr int VELOCITY_ITERATIONS = 8, POSITION_ITERATIONS = 3;
+constexpr double PI = 3.14159265358979323846;
+
+b2Vec2 to_units(world_point p) { return b2Vec2(float(p.x / MM_PER_UNIT), float(p.y / MM_PER_UNIT)); }
+
+struct Robot {
+    b2Body *body = nullptr;
+    kilobot_motors_model motors{};
+    kilobot_motor motor[2]{};
+    uint64_t rng = 0;
+};
+
+}  // namespace
+
+struct world {
+    const world_spec *spec = nullptr;
+    b2World physics{b2Vec2(0.0f, 0.0f)};
+    b2Body *ground = nullptr;
+    std::vector<Robot> robots;
+    std::vector<b2Body *> objects;
+};
+
+namespace {
+
+/* A fixed outline: two-sided edges, so nothing passes from either side. */
+void add_outline(b2Body *ground, const world_point *v, int n) {
+    for (int i = 0; i < n; i++) {
+        b2EdgeShape edge;
+        edge.SetTwoSided(to_units(v[i]), to_units(v[(i + 1) % n]));
+        b2FixtureDef f;
+        f.shape = &edge;
+        f.friction = float(CONTACT_FRICTION);
+        ground->CreateFixture(&f);
+    }
+}
+
+void build_walls(world &w) {
+    b2BodyDef def;
+    w.ground = w.physics.CreateBody(&def);
+    const world_spec &s = *w.spec;
+    world_point arena[4] = {{0, 0}, {s.width_mm, 0}, {s.width_mm, s.height_mm}, {0, s.height_mm}};
+    add_outline(w.ground, arena, 4);
+    for (int i = 0; i < s.n_obstacles; i++) add_outline(w.ground, s.obstacles[i].v, s.obstacles[i].n);
+}
+
+b2Body *add_disc(world &w, world_point at, double angle_deg, double radius_mm, double mass_kg) {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position = to_units(at);
+    def.angle = float(angle_deg * PI / 180.0);
+    def.bullet = false;
+    b2Body *body = w.physics.CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = float(radius_mm / MM_PER_UNIT);
+    b2FixtureDef f;
+    f.shape = &circle;
+    f.density = float(mass_kg / (PI * circle.m_radius * circle.m_radius));
+    f.friction = float(CONTACT_FRICTION);
+    f.restitution = 0.0f;
+    body->CreateFixture(&f);
+    return body;
+}
+
+/* An object slides on the floor against its friction: a friction joint to
+ * the ground brakes it with at most friction x weight. */
+void add_object(world &w, const world_object &o) {
+    double mass = o.mass_g / 1000.0;
+    b2Body *body = add_disc(w, o.at, 0.0, o.radius_mm, mass);
+    b2FrictionJointDef joint;
+    joint.Initialize(body, w.ground, body->GetPosition());
+    joint.maxForce = float(o.friction * mass * GRAVITY);
+    joint.maxTorque = float(o.friction * mass * GRAVITY * o.radius_mm / MM_PER_UNIT / 2.0);
+    w.physics.CreateJoint(&joint);
+    w.objects.push_back(body);
+}
+
+/* Drive a body toward a velocity with at most the force its legs give. */
+void drive(b2Body *body, b2Vec2 velocity, double turn_rad_s, double dt) {
+    double max_force = LEG_FRICTION * KILOBOT_MASS_KG * GRAVITY;
+    b2Vec2 dv = velocity - body->GetLinearVelocity();
+    b2Vec2 force = float(body->GetMass() / dt) * dv;
+    if (force.Length() > max_force) force *= float(max_force / force.Length());
+    body->ApplyForceToCenter(force, true);
+    double max_torque = max_force * KILOBOT_RADIUS_MM / MM_PER_UNIT;
+    double torque = body->GetInertia() * (turn_rad_s - body->GetAngularVelocity()) / dt;
+    if (std::fabs(torque) > max_torque) torque = torque > 0 ? max_torque : -max_torque;
+    body->ApplyTorque(float(torque), true);
+}
+
+}  // namespace
+
+extern "C" {
+
+world *world_create(const world_spec *spec) {
+    auto w = std::make_unique<world>();
+    w->spec = spec;
+    build_walls(*w);
+    for (int k = 0; k < spec->n_objects; k++) add_object(*w, spec->objects[k]);
+    uint64_t seed = spec->seed;
+    w->robots.resize(size_t(spec->n_robots));
+    for (int i = 0; i < spec->n_robots; i++) {
+        Robot &r = w->robots[size_t(i)];
+        /* Each robot its own stream, from the seed and its index alone. */
+        r.rng = seed * 0x100000001B3ull + uint64_t(i) * 0x9E3779B97F4A7C15ull;
+        world_random_next(&r.rng);
+        kilobot_motors_draw(&r.motors, &r.rng);
+        const world_robot &spec_robot = spec->robots[i];
+        r.body = add_disc(*w, spec_robot.at, spec_robot.heading_deg, KILOBOT_RADIUS_MM, KILOBOT_MASS_KG);
+    }
+    return w.release();
+}
+
+void world_destroy(world *w) { delete w; }
+
+const kilobot_motors_model *world_robot_motors(const world *w, int i) {
+    return &w->robots[size_t(i)].motors;
+}
+
+void world_motor_duty(world *w, int i, int side, uint8_t duty, double t) {
+    Robot &r = w->robots[size_t(i)];
+    kilobot_motor_set(&r.motor[side], &r.motors, side, duty, t);
+}
+
+void world_step(world *w, double t) {
+    for (Robot &r : w->robots) {
+        for (int side = 0; side < 2; side++) kilobot_motor_advance(&r.motor[side], &r.motors, side, t);
+        kilobot_twist twist = kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng);
+        double angle = r.body->GetAngle();
+        double c = std::cos(angle), s = std::sin(angle);
+        b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
+                 float((twist.forward_mm_s * s + twist.left_mm_s * c) / MM_PER_UNIT));
+        drive(r.body, v, twist.turn_rad_s, WORLD_STEP_S);
+    }
+    w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+}
+
+void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg) {
+    const b2Body *body = w->robots[size_t(i)].body;
+    b2Vec2 p = body->GetPosition();
+    *x_mm = p.x * MM_PER_UNIT;
+    *y_mm = p.y * MM_PER_UNIT;
+    double deg = std::fmod(body->GetAngle() * 180.0 / PI, 360.0);
+    *heading_deg = deg < 0 ? deg + 360.0 : deg;
+}
+
+void world_object_position(const world *w, int k, double *x_mm, double *y_mm) {
+    b2Vec2 p = w->objects[size_t(k)]->GetPosition();
+    *x_mm = p.x * MM_PER_UNIT;
+    *y_mm = p.y * MM_PER_UNIT;
+}
+
+}  // extern "C"

@@ -1,0 +1,39 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The physical world robots move in: Box2D bodies for the arena's walls,
+ * the obstacles, the movable objects and the robots, stepped between the
+ * robots' lockstep windows. Motion comes from each robot's motor duties
+ * (kilobot_motion.h); the firmware's duty changes are reported as they
+ * happen, the physics reads them at each step. */
+#ifndef OPENSWARM_WORLD_H
+#define OPENSWARM_WORLD_H
+
+#include <stdint.h>
+
+#include "world/kilobot_motion.h"
+#include "world/world_spec.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct world world;
+
+#define WORLD_STEP_S 0.01 /* physics at 100 Hz: a Kilobot walks 0.1 mm a step */
+
+/* The bodies of spec, each robot's motors drawn from the seed. */
+world *world_create(const world_spec *spec);
+void world_destroy(world *w);
+/* Robot i's own motors (its factory calibration comes from them). */
+const kilobot_motors_model *world_robot_motors(const world *w, int i);
+/* The firmware of robot i set a motor (0 left, 1 right) at time t (s). */
+void world_motor_duty(world *w, int i, int side, uint8_t duty, double t);
+/* Advance the physics by one WORLD_STEP_S, ending at time t. */
+void world_step(world *w, double t);
+void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg);
+void world_object_position(const world *w, int k, double *x_mm, double *y_mm);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,237 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* A run in a world (world_run.h). The physics steps every WORLD_STEP_S of
+ * simulated time, between two lockstep windows; the firmware's motor
+ * changes reach it at their exact time, so a 15 ms spin-up pulse counts
+ * as 15 ms. After each step the IR channel learns the new distances and
+ * the light sensors the new light. */
+#include "world/world_run.h"
+
+#include <avr_adc.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sim_io.h>
+
+#include "output/output.h"
+#include "world/world.h"
+
+#define LIGHT_REFERENCE_MM 100.0 /* a source adds its intensity at this distance */
+#define LIGHT_SENSOR_BACK_MM 15.5 /* the sensor looks up from the robot's back */
+
+static world_spec spec;
+static world *physics;
+static robot *robots;
+static int n_robots;
+static avr_cycle_count_t step_cycles, next_step;
+static double next_sample_s;
+static int recording;
+static output_robot *poses;
+static world_point *object_centres;
+static output_link *links;
+static int links_room;
+static int *light_mv; /* last applied to each robot's ADC7, -1 none */
+
+static void *allocate(size_t n, size_t size) {
+    void *p = calloc(n ? n : 1, size);
+    if (p == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for the world's %zu items\n", n);
+        exit(EXIT_CRASH);
+    }
+    return p;
+}
+
+/* Options a world sets itself: refused beside it, with where to set them. */
+static int refuse_beside_world(const options *o) {
+    static const struct {
+        unsigned bit;
+        const char *option, *instead;
+    } owned[] = {
+        {GIVEN_ROBOTS, "--robots", "robots[] (count, poses, grid)"},
+        {GIVEN_PLACEMENT, "--distance, --line and --positions", "robots[] (poses, region, grid)"},
+        {GIVEN_UID, "--uid", "robots[].uid"},
+        {GIVEN_CALIBRATION, "--calibration", "robots[].calibration"},
+        {GIVEN_LIGHT, "--light", "light.ambient_mv and light.sources"},
+    };
+    for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++) {
+        if (!(o->given & owned[i].bit)) continue;
+        fprintf(stderr, "openswarm-sim: %s: the world file %s sets this; drop the option and set "
+                        "%s there (docs/world.md)\n", owned[i].option, o->world, owned[i].instead);
+        return -1;
+    }
+    return 0;
+}
+
+/* Robots whose group names no firmware run the command line's ELFs: the
+ * k-th such robot the k-th ELF, the last ELF the rest. */
+static int assign_firmware(options *o) {
+    const char **elf = allocate((size_t)spec.n_robots, sizeof *elf);
+    int unnamed = 0;
+    for (int i = 0; i < spec.n_robots; i++) {
+        int f = spec.robots[i].firmware;
+        if (f >= 0) {
+            elf[i] = spec.firmware[f];
+            continue;
+        }
+        if (o->n_elves == 0) {
+            fprintf(stderr, "%s: robot %d (uid %d) has no firmware: give FIRMWARE.elf on the command "
+                            "line, or \"firmware\" in its group of robots[]\n",
+                    spec.path, i, spec.robots[i].uid);
+            free(elf);
+            return -1;
+        }
+        elf[i] = o->elves[unnamed < o->n_elves ? unnamed : o->n_elves - 1];
+        unnamed++;
+    }
+    if (o->n_elves > unnamed) {
+        fprintf(stderr, "openswarm-sim: %d firmware files for the %d robots of %s that name none: "
+                        "give at most one per such robot\n", o->n_elves, unnamed, spec.path);
+        free(elf);
+        return -1;
+    }
+    o->robot_elf = elf;
+    return 0;
+}
+
+int world_options_check(options *o) {
+    if (refuse_beside_world(o) != 0 || world_spec_load(o->world, &spec) != 0) return -1;
+    o->robots = spec.n_robots;
+    if (!(o->given & GIVEN_TIME) && spec.duration_s > 0) o->seconds = spec.duration_s;
+    if (!(o->given & GIVEN_IR_RANGE) && spec.ir_range_mm > 0) o->ir_range_mm = spec.ir_range_mm;
+    if (!(o->given & GIVEN_IR_LOSS) && spec.ir_loss_pct >= 0) o->ir_loss_pct = spec.ir_loss_pct;
+    if (!(o->given & GIVEN_CLOCK_SPREAD) && spec.clock_spread_pct >= 0)
+        o->clock_spread_pct = spec.clock_spread_pct;
+    if (assign_firmware(o) != 0) return -1;
+    int status = options_check_robots(o);
+    o->uid = -1; /* each robot's comes from the world */
+    if (status != 0) return -1;
+    physics = world_create(&spec);
+    return 0;
+}
+
+void world_robot_identity(int index, int *uid, int calibration[4]) {
+    const world_robot *r = &spec.robots[index];
+    *uid = r->uid;
+    int own[4];
+    kilobot_motors_calibration(world_robot_motors(physics, index), own);
+    for (int i = 0; i < 4; i++) calibration[i] = r->calibration[i] == -2 ? own[i] : r->calibration[i];
+}
+
+static void motors_changed(void *ctx, int index, uint8_t left, uint8_t right, avr_cycle_count_t cycle) {
+    (void)ctx;
+    double t = (double)cycle / robots[index].avr->frequency;
+    world_motor_duty(physics, index, 0, left, t);
+    world_motor_duty(physics, index, 1, right, t);
+}
+
+static double distance_between(int a, int b, void *ctx) {
+    (void)ctx;
+    return hypot(poses[a].x_mm - poses[b].x_mm, poses[a].y_mm - poses[b].y_mm);
+}
+
+/* Ambient light plus each source's, falling with the square of the
+ * distance past LIGHT_REFERENCE_MM. */
+static double light_at(double x, double y) {
+    double mv = spec.ambient_light_mv;
+    for (int k = 0; k < spec.n_lights; k++) {
+        double d = hypot(x - spec.lights[k].at.x, y - spec.lights[k].at.y);
+        double fall = d > LIGHT_REFERENCE_MM ? (LIGHT_REFERENCE_MM / d) * (LIGHT_REFERENCE_MM / d) : 1.0;
+        mv += spec.lights[k].intensity_mv * fall;
+    }
+    return mv;
+}
+
+static void sense_light(int i) {
+    const output_robot *p = &poses[i];
+    double h = p->heading_deg * M_PI / 180.0;
+    int mv = (int)lround(light_at(p->x_mm - LIGHT_SENSOR_BACK_MM * cos(h),
+                                  p->y_mm - LIGHT_SENSOR_BACK_MM * sin(h)));
+    if (mv > KILOBOT_AVCC_MV) mv = KILOBOT_AVCC_MV; /* the input clips at the supply */
+    if (mv == light_mv[i]) return;
+    light_mv[i] = mv;
+    avr_raise_irq(avr_io_getirq(robots[i].avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC7), (uint32_t)mv);
+}
+
+/* Where everything is now, for the channel, the sensors and the outputs. */
+static void observe(void) {
+    for (int i = 0; i < n_robots; i++) {
+        output_robot *p = &poses[i];
+        world_robot_pose(physics, i, &p->x_mm, &p->y_mm, &p->heading_deg);
+        if (spec.n_lights > 0 || spec.ambient_light_mv > 0) sense_light(i);
+    }
+    ir_channel_place(distance_between, NULL);
+}
+
+static int *reached_by; /* scratch: the receivers one sender reaches */
+
+/* Every pair in IR range now, sender first. */
+static int collect_links(void) {
+    int n_links = 0;
+    for (int i = 0; i < n_robots; i++) {
+        int reached = ir_channel_links(i, reached_by, n_robots);
+        if (n_links + reached > links_room) {
+            links_room = (n_links + reached) * 2;
+            links = realloc(links, (size_t)links_room * sizeof *links);
+            if (links == NULL) exit(EXIT_CRASH);
+        }
+        for (int k = 0; k < reached; k++) links[n_links++] = (output_link){i, reached_by[k]};
+    }
+    return n_links;
+}
+
+static int sample(double t) {
+    for (int i = 0; i < n_robots; i++) {
+        uint8_t rgb[3];
+        trace_led(&robots[i], rgb);
+        poses[i].led_r = rgb[0];
+        poses[i].led_g = rgb[1];
+        poses[i].led_b = rgb[2];
+    }
+    for (int k = 0; k < spec.n_objects; k++)
+        world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
+    int n_links = collect_links();
+    output_sample s = {t, poses, object_centres, links, n_links};
+    return output_sample_add(&s);
+}
+
+int world_run_start(robot *all, int n, const options *o) {
+    robots = all;
+    n_robots = n;
+    poses = allocate((size_t)n, sizeof *poses);
+    object_centres = allocate((size_t)spec.n_objects, sizeof *object_centres);
+    light_mv = allocate((size_t)n, sizeof *light_mv);
+    reached_by = allocate((size_t)n, sizeof *reached_by);
+    for (int i = 0; i < n; i++) {
+        light_mv[i] = -1;
+        all[i].trace.on_motors = motors_changed;
+    }
+    step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * all[0].avr->frequency);
+    next_step = step_cycles;
+    observe();
+    if (o->out_dir == NULL) return 0;
+    output_options out = {o->out_dir, o->video, o->quiet};
+    if (output_open(&out, &spec) != 0) return -1;
+    recording = 1;
+    next_sample_s = spec.sample_period_s;
+    return sample(0.0);
+}
+
+void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
+    while (end >= next_step) {
+        double t = (double)next_step / nominal_hz;
+        world_step(physics, t);
+        next_step += step_cycles;
+        observe();
+        if (recording && t + 1e-9 >= next_sample_s) {
+            sample(t);
+            next_sample_s += spec.sample_period_s;
+        }
+    }
+}
+
+int world_run_finish(double seconds) {
+    (void)seconds;
+    int status = recording ? output_close() : 0;
+    world_destroy(physics);
+    world_spec_free(&spec);
+    return status;
+}
