@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sim.h"
+#include "world/world_spec.h"
 
 #define DEFAULT_DISTANCE_MM 50
 #define DEFAULT_IR_RANGE_MM 100 /* a Kilobot hears neighbours up to about 10 cm away */
@@ -54,6 +55,8 @@ static void usage(FILE *out) {
             "                       readuid:BIT), e.g. --ohc calib-left:70@1; repeatable.\n"
             "                       OpenSwarm firmware starts as if it had just sent run;\n"
             "                       classic-library firmware waits, idle, for --ohc run@T.\n"
+            "      --world FILE     the arena, obstacles, objects, lights and robots as\n"
+            "                       FILE (world.json, docs/world.md) says; checked first\n"
             "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
             "      --voltage MV     battery sense (ADC6) input, millivolts\n"
             "      --temperature MV internal temperature sensor input, millivolts\n"
@@ -176,7 +179,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"line", required_argument, 0, 'N'},       {"positions", required_argument, 0, 'P'},
         {"ir-range", required_argument, 0, 'I'},   {"charging", no_argument, 0, 'H'},
         {"ir-log", no_argument, 0, 'R'},           {"clock-spread", required_argument, 0, 'S'},
-        {"ir-loss", required_argument, 0, 'X'},
+        {"ir-loss", required_argument, 0, 'X'},     {"world", required_argument, 0, 'w'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -228,6 +231,13 @@ int parse_options(int argc, char **argv, options *o) {
             }
             if (ohc_parse(optarg, &o->ohc[o->n_ohc++]) != 0) return -1;
             break;
+        case 'w': {
+            /* Checked only, for now: the world runs once world.cpp lands. */
+            world_spec w;
+            if (world_spec_load(optarg, &w) != 0) return -1;
+            world_spec_free(&w);
+            break;
+        }
         case 'h': usage(stdout); exit(0);
         default: usage(stderr); return -1;
         }
