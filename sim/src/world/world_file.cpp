@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -374,6 +375,18 @@ struct Draws {
     }
 };
 
+/* Whether a suggested key shares most of its letters with the mistyped
+ * one: the nearest by edit distance may be no kin at all ("colour" and
+ * "robots"), and then the list of keys helps more. */
+bool alike(const std::string &typed, const std::string &hint) {
+    if (hint.empty()) return false;
+    std::string a = typed, b = hint, common;
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+    return (double)common.size() >= 0.6 * (double)std::max(a.size(), b.size());
+}
+
 /* ---- The document, walked with names and positions ------------------- */
 
 /* A value in the document: its key path for messages ("robots[1].region")
@@ -405,7 +418,7 @@ T *c_array(const std::vector<T> &v) {
 /* Where a robot came from, to name it in messages. */
 struct Origin {
     int group, k;        /* robots[group], its k-th robot */
-    std::string how;     /* "poses[3]", "grid column 1 row 0", "at random" */
+    std::string how;     /* ".poses[3]", ".grid column 1 row 0", ", placed at random" */
 };
 
 class Reader {
@@ -416,9 +429,10 @@ class Reader {
         auto at = s_.value_at.find(n.ptr);
         throw Mistake{at == s_.value_at.end() ? 0 : at->second, (n.name.empty() ? "" : n.name + ": ") + message};
     }
-    [[noreturn]] void fail_key(const Node &n, const std::string &message) const {
+    /* At n's key; the message names the object holding it (parent). */
+    [[noreturn]] void fail_key(const Node &n, const std::string &parent, const std::string &message) const {
         auto at = s_.key_at.find(n.ptr);
-        throw Mistake{at == s_.key_at.end() ? 0 : at->second, n.name + ": " + message};
+        throw Mistake{at == s_.key_at.end() ? 0 : at->second, (parent.empty() ? "" : parent + ": ") + message};
     }
 
     Node child(const Node &n, const std::string &key) const {
@@ -435,7 +449,8 @@ class Reader {
             const std::string &key = entry.key();
             if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
             std::string hint = openswarm::nearest(key, allowed);
-            fail_key(child(n, key), "unknown key \"" + key + "\"; " +
+            if (!alike(key, hint)) hint.clear();
+            fail_key(child(n, key), n.name, "unknown key \"" + key + "\"; " +
                                         (hint.empty() ? "the keys here are " + openswarm::join(allowed)
                                                       : "did you mean \"" + hint + "\"?"));
         }
@@ -519,7 +534,7 @@ class Reader {
     std::string robot_name(int r) const {
         const Origin &o = origins_[(size_t)r];
         const world_robot &b = robots_[(size_t)r];
-        return "robot " + std::to_string(r) + " (robots[" + std::to_string(o.group) + "] " + o.how + ", at " +
+        return "robot " + std::to_string(r) + " (robots[" + std::to_string(o.group) + "]" + o.how + ", at " +
                at_text(b.at.x, b.at.y) + ")";
     }
 
@@ -789,14 +804,14 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
     for (const char *way : ways) {
         if (!n->contains(way)) continue;
         if (first != nullptr)
-            fail_key(child(n, way), "\"" + std::string(first) + "\" and \"" + way +
+            fail_key(child(n, way), n.name, "\"" + std::string(first) + "\" and \"" + way +
                                         "\" each place the group's robots: give one of them, and put "
                                         "the other robots in a group of their own");
         first = way;
     }
     std::optional<Node> count_node = get(n, "count");
     if (count_node && first != nullptr && std::string(first) != "region")
-        fail_key(*count_node, std::string("\"count\" goes with \"region\" or alone; \"") + first +
+        fail_key(*count_node, n.name, std::string("\"count\" goes with \"region\" or alone; \"") + first +
                                   "\" already says how many robots: remove \"count\"");
     if (!count_node && first == nullptr)
         fail(n, "where do its robots stand? give \"poses\" (a list), a \"grid\", \"count\" with a \"region\" "
@@ -828,7 +843,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
                                           "degrees counter-clockwise from the x axis", "\"heading_deg\": 90")
                                  : 0;
             if (auto c = robot_conflict(at)) fail(p, "this robot " + c->what + ": " + c->fix);
-            place(at, std::fmod(heading + 360, 360), "poses[" + std::to_string(k) + "]");
+            place(at, std::fmod(heading + 360, 360), ".poses[" + std::to_string(k) + "]");
         }
     } else if (first != nullptr && std::string(first) == "grid") {
         Node grid = child(n, "grid");
@@ -852,7 +867,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
                     fail(grid, "its robot at column " + std::to_string(col) + ", row " + std::to_string(row) + " " +
                                    at_text(at.x, at.y) + " " + c->what + ": " + c->fix +
                                    " (or move the grid, or change its columns, rows or spacing)");
-                place(at, 0, "grid column " + std::to_string(col) + " row " + std::to_string(row));
+                place(at, 0, ".grid column " + std::to_string(col) + " row " + std::to_string(row));
             }
     } else {
         long count = whole(*count_node, 1, MAX_COUNT, "how many robots",
@@ -894,7 +909,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
                 P at{x0 + draws.next() * (x1 - x0), y0 + draws.next() * (y1 - y0)};
                 double heading = draws.next() * 360;
                 if (robot_conflict(at)) continue;
-                place(at, heading, "at random, its robot " + std::to_string(k));
+                place(at, heading, ", placed at random");
                 break;
             }
         }
