@@ -224,6 +224,14 @@ TEST_F(WorldFile, UnknownKeyPointsAtTheKey) {
               "                     ^\n");
 }
 
+// Of several unknown keys, the first in the file is named (nlohmann keeps
+// keys sorted).
+TEST_F(WorldFile, FirstUnknownKeyInTheFile) {
+    std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400, "zz": 1, "aa": 2}})");
+    EXPECT_EQ(err.substr(0, err.find('\n')),
+              "world.json:1:47: arena: unknown key \"zz\"; the keys here are width_mm, height_mm");
+}
+
 TEST_F(WorldFile, ColumnsCountCharactersAndTabs) {
     // "é" is two bytes, one column; a tab is one column and the caret line
     // keeps it, so the caret stands under the value in any tab width.

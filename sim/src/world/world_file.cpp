@@ -162,8 +162,8 @@ class Scanner {
             auto before = seen.find(key);
             if (before != seen.end())
                 throw Mistake{key_start, "\"" + key + "\" is given twice in this object (also on line " +
-                                             std::to_string(before->second) + "): keep one"};
-            seen[key] = line_of(key_start);
+                                             std::to_string(line_of(before->second)) + "): keep one"};
+            seen[key] = key_start;
             std::string child = pointer_child(ptr, key);
             key_at[child] = key_start;
             skip();
@@ -445,9 +445,20 @@ class Reader {
     /* An object with only these keys. */
     void object(const Node &n, const std::vector<std::string> &allowed, const std::string &example) const {
         if (!n->is_object()) fail(n, "expected an object, found " + found(*n) + "; e.g. " + example);
+        /* The first unknown key in the file, not in nlohmann's (sorted) order. */
+        std::optional<std::string> unknown;
+        size_t unknown_at = 0;
         for (const auto &entry : n->items()) {
-            const std::string &key = entry.key();
-            if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+            if (std::find(allowed.begin(), allowed.end(), entry.key()) != allowed.end()) continue;
+            auto at = s_.key_at.find(pointer_child(n.ptr, entry.key()));
+            size_t byte = at == s_.key_at.end() ? 0 : at->second;
+            if (!unknown || byte < unknown_at) {
+                unknown = entry.key();
+                unknown_at = byte;
+            }
+        }
+        if (unknown) {
+            const std::string &key = *unknown;
             std::string hint = openswarm::nearest(key, allowed);
             if (!alike(key, hint)) hint.clear();
             fail_key(child(n, key), n.name, "unknown key \"" + key + "\"; " +
