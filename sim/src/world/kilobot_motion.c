@@ -6,7 +6,7 @@
 
 #define PI 3.14159265358979323846
 /* Past this multiple of its calibrated drive a motor gives no more: the
- * legs slip rather than walk faster (a robot at 255 hops in place). */
+ * legs slip rather than walk faster. */
 #define MAX_DRIVE 2.5
 /* Unequal drive curves the path: a 10% difference turns it at a twentieth
  * of the calibrated turn rate (about 2 deg/s, a 25 cm circle at 1 cm/s). */
@@ -76,7 +76,7 @@ void kilobot_motor_set(kilobot_motor *motor, const kilobot_motors_model *m, int 
  * calibrated point (0 below the stall duty). */
 static double drive(const kilobot_motor *motor, const kilobot_motors_model *m, int side,
                     double calibrated) {
-    if (!motor->running || motor->duty < m->stall[side]) return 0.0;
+    if (!motor->running || motor->duty < m->stall[side] || motor->duty >= KILOBOT_SLIP_DUTY) return 0.0;
     double d = (motor->duty - m->stall[side]) / (calibrated - m->stall[side]);
     return d > MAX_DRIVE ? MAX_DRIVE : d;
 }

@@ -7,7 +7,8 @@
  * ms at 255), then it runs at any duty from the stall duty up. Alone, a
  * motor pivots the robot about the rear leg on its own side: the left one
  * turns it left (counter-clockwise), at TURN_DEG_S at that robot's
- * calibrated turn duty. Together they walk it forward, at FORWARD_MM_S at
+ * calibrated turn duty. Held at KILOBOT_SLIP_DUTY or more a motor only
+ * shakes the robot. Together they walk it forward, at FORWARD_MM_S at
  * its calibrated straight duties; unequal drive curves the path. Each
  * robot's motors differ (stall and calibrated duties, drawn per robot), and
  * every step adds noise to the speeds, as the slip-stick gait does. */
@@ -19,6 +20,9 @@
 #define KILOBOT_FORWARD_MM_S 10.0 /* Rubenstein et al. 2012: about 1 cm/s */
 #define KILOBOT_TURN_DEG_S 45.0   /* and about 45 deg/s turning */
 #define KILOBOT_SPINUP_DUTY 200
+/* From this duty on the legs slip: the robot hops in place (a robot whose
+ * EEPROM was never calibrated reads 255 and goes nowhere). */
+#define KILOBOT_SLIP_DUTY 180
 #define KILOBOT_SPINUP_MS 10.0
 /* The rear legs, from the centre: 9 mm back, 13 mm to each side. */
 #define KILOBOT_LEG_BACK_MM 9.0
