@@ -1,0 +1,197 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The outputs of a run in a world (output.h): the folder, and which part
+ * writes what when. The CSV files and the video take each sample as it
+ * comes; final.png and viewer.html are written at the end, from the run
+ * kept in memory. */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "output/output_parts.h"
+
+static struct {
+    int open;
+    output_options options;
+    const world_spec *world;
+    char *dir;
+    output_tables tables;
+    output_history history;
+    picture picture;
+    video video;
+    int failed;
+} out;
+
+/* dir/name, or NULL when out of memory. */
+static char *path_in(const char *dir, const char *name)
+{
+    size_t n = strlen(dir) + strlen(name) + 2;
+    char *p = malloc(n);
+    if (p)
+        snprintf(p, n, "%s%s%s", dir, dir[0] && dir[strlen(dir) - 1] == '/' ? "" : "/", name);
+    return p;
+}
+
+/* mkdir -p: each missing folder of the path, in turn. */
+static int make_folder(const char *dir)
+{
+    char *p = strdup(dir);
+    if (!p)
+        return -1;
+    int rc = 0;
+    for (char *c = p + 1;; c++) {
+        if (*c == '/' || *c == 0) {
+            char was = *c;
+            *c = 0;
+            struct stat st;
+            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+                fprintf(stderr, "openswarm-sim: cannot create the output folder %s: %s; choose "
+                                "another --out folder or fix its permissions\n",
+                        p, strerror(errno));
+                rc = -1;
+                break;
+            }
+            if (stat(p, &st) != 0 || !S_ISDIR(st.st_mode)) {
+                fprintf(stderr, "openswarm-sim: cannot create the output folder %s: a file of "
+                                "that name is in the way; choose another --out folder\n",
+                        p);
+                rc = -1;
+                break;
+            }
+            *c = was;
+            if (!was)
+                break;
+            while (c[1] == '/')
+                c++;
+        }
+    }
+    free(p);
+    return rc;
+}
+
+static void close_all(void)
+{
+    tables_close(&out.tables);
+    video_close(&out.video);
+    picture_free(&out.picture);
+    history_free(&out.history);
+    free(out.dir);
+    memset(&out, 0, sizeof out);
+}
+
+int output_open(const output_options *o, const world_spec *w)
+{
+    if (out.open)
+        close_all();
+    memset(&out, 0, sizeof out);
+    out.options = *o;
+    out.world = w;
+    const char *dir = o->dir && o->dir[0] ? o->dir : ".";
+    out.dir = strdup(dir);
+    if (!out.dir || make_folder(dir))
+        goto fail;
+    char *robots = path_in(dir, "trajectories.csv"), *objects = path_in(dir, "objects.csv");
+    int rc = robots && objects ? tables_open(&out.tables, robots, objects) : -1;
+    free(robots);
+    free(objects);
+    if (rc)
+        goto fail;
+    history_init(&out.history, w);
+    if (picture_init(&out.picture, w))
+        goto fail;
+    if (o->video) {
+        char *mp4 = path_in(dir, "video.mp4");
+        rc = mp4 ? video_open(&out.video, mp4, out.picture.width, out.picture.height) : -1;
+        free(mp4);
+        if (rc)
+            goto fail;
+    }
+    out.open = 1;
+    return 0;
+fail:
+    close_all();
+    return -1;
+}
+
+int output_sample_add(const output_sample *s)
+{
+    if (!out.open)
+        return -1;
+    int rc = 0;
+    if (tables_add(&out.tables, out.world, s))
+        rc = -1;
+    if (history_add(&out.history, s)) {
+        fprintf(stderr, "openswarm-sim: out of memory keeping the run for %s/viewer.html at "
+                        "%.3f s; give a longer sample period\n",
+                out.dir, s->time_s);
+        rc = -1;
+    }
+    if (rc == 0 && out.options.video) {
+        picture_draw(&out.picture, &out.history, out.history.n - 1);
+        if (video_frame(&out.video, out.picture.surface))
+            rc = -1;
+    }
+    if (rc)
+        out.failed = 1;
+    return rc;
+}
+
+/* Appends ", name" (or "name" first) to the list of written files. */
+static void list_add(char *list, size_t size, const char *path)
+{
+    size_t n = strlen(list);
+    snprintf(list + n, size - n, "%s%s", n ? ", " : "", path);
+}
+
+int output_close(void)
+{
+    if (!out.open)
+        return -1;
+    int rc = out.failed ? -1 : 0;
+    char written[4096] = "";
+    char *path;
+
+    if (tables_close(&out.tables) == 0) {
+        path = path_in(out.dir, "trajectories.csv");
+        list_add(written, sizeof written, path);
+        free(path);
+        path = path_in(out.dir, "objects.csv");
+        list_add(written, sizeof written, path);
+        free(path);
+    } else {
+        rc = -1;
+    }
+
+    picture_draw(&out.picture, &out.history, out.history.n - 1);
+    path = path_in(out.dir, "final.png");
+    if (path && picture_write_png(&out.picture, path) == 0)
+        list_add(written, sizeof written, path);
+    else
+        rc = -1;
+    free(path);
+
+    if (out.options.video) {
+        /* ffmpeg makes no file of no frames: a run without samples shows the
+         * start. */
+        if (out.history.n == 0)
+            video_frame(&out.video, out.picture.surface);
+        path = path_in(out.dir, "video.mp4");
+        if (video_close(&out.video) == 0 && path)
+            list_add(written, sizeof written, path);
+        else
+            rc = -1;
+        free(path);
+    }
+
+    path = path_in(out.dir, "viewer.html");
+    if (path && viewer_write(path, &out.history) == 0)
+        list_add(written, sizeof written, path);
+    else
+        rc = -1;
+    free(path);
+
+    if (!out.options.quiet && written[0])
+        fprintf(stderr, "openswarm-sim: wrote %s\n", written);
+    close_all();
+    return rc;
+}

@@ -1,0 +1,91 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The parts output.c puts together, one file each: the run kept so far
+ * (history.c), the CSV files (trajectories.c), one frame drawn with Cairo
+ * (picture.c), the ffmpeg pipe (video.c) and the browser player
+ * (viewer.c). Each reports its own errors on stderr, naming the path. */
+#ifndef OPENSWARM_OUTPUT_PARTS_H
+#define OPENSWARM_OUTPUT_PARTS_H
+
+#include <stdio.h>
+
+#include <cairo.h>
+
+#include "output/output.h"
+
+/* ---- history.c: every sample so far, copied (final.png's trails and
+ * viewer.html need the whole run; 100 robots x 6000 samples is ~10 MB). */
+typedef struct output_history {
+    const world_spec *world;
+    int n, capacity;        /* samples */
+    double *time_s;         /* [n] */
+    output_robot *robots;   /* [n * world->n_robots] */
+    world_point *objects;   /* [n * world->n_objects] */
+    int *link_start;        /* [n + 1]: sample k's links are links[link_start[k] ..] */
+    output_link *links;
+    int n_links, links_capacity;
+} output_history;
+
+void history_init(output_history *h, const world_spec *w);
+int history_add(output_history *h, const output_sample *s); /* -1: out of memory */
+void history_free(output_history *h);
+static inline const output_robot *history_robots(const output_history *h, int k)
+{
+    return h->robots + (size_t)k * (size_t)h->world->n_robots;
+}
+static inline const world_point *history_objects(const output_history *h, int k)
+{
+    return h->objects + (size_t)k * (size_t)h->world->n_objects;
+}
+
+/* ---- trajectories.c: trajectories.csv and objects.csv, row by row. */
+typedef struct output_tables {
+    FILE *robots, *objects;
+    char *robots_path, *objects_path;
+} output_tables;
+
+int tables_open(output_tables *t, const char *robots_path, const char *objects_path);
+int tables_add(output_tables *t, const world_spec *w, const output_sample *s);
+int tables_close(output_tables *t);
+
+/* ---- picture.c: a top view of the world at one sample. The image fits
+ * the arena in about 800 pixels on its long side; its width and height are
+ * even (what yuv420p video needs). */
+typedef struct picture {
+    cairo_surface_t *surface;
+    cairo_t *cr;
+    int width, height;
+    double scale;              /* pixels per mm */
+    double origin_x, origin_y; /* pixel of the arena's (0, 0) corner */
+} picture;
+
+int picture_init(picture *p, const world_spec *w);
+/* Sample k of h (with the trails leading to it); k < 0: the world as
+ * world.json sets it up, before any sample. */
+void picture_draw(picture *p, const output_history *h, int k);
+void picture_to_pixel(const picture *p, double x_mm, double y_mm, double *px, double *py);
+int picture_write_png(picture *p, const char *path);
+void picture_free(picture *p);
+/* A Kilobot LED channel (0..3) as an 8-bit intensity. */
+static inline int led_level_8bit(int level)
+{
+    return (level < 0 ? 0 : level > 3 ? 3 : level) * 85;
+}
+
+/* ---- video.c: frames piped to ffmpeg, no files in between. */
+typedef struct video {
+    FILE *pipe;
+    char *path;
+    int width, height;
+    long frames;
+    int failed;
+} video;
+
+/* Fails (with the fix) when ffmpeg is not on the PATH. */
+int video_open(video *v, const char *path, int width, int height);
+int video_frame(video *v, cairo_surface_t *frame);
+int video_close(video *v); /* ffmpeg's exit status checked */
+
+/* ---- viewer.c: viewer.html, the run and its player in one file. */
+int viewer_write(const char *path, const output_history *h);
+
+#endif

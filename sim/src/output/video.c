@@ -1,0 +1,165 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* video.mp4: every sample's picture piped raw to ffmpeg (popen), one frame
+ * per sample at 30 frames a second, so no frame ever lands on the disk.
+ * H.264 (libx264) when this ffmpeg has it, MPEG-4 part 2 otherwise;
+ * yuv420p so that every player plays it. */
+#include <errno.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "output/output_parts.h"
+
+/* Whether `program` is an executable file in one of PATH's folders. */
+static int on_path(const char *program)
+{
+    const char *path = getenv("PATH");
+    if (!path)
+        return 0;
+    char candidate[4096];
+    while (*path) {
+        size_t len = strcspn(path, ":");
+        snprintf(candidate, sizeof candidate, "%.*s/%s", (int)(len ? len : 1),
+                 len ? path : ".", program);
+        if (access(candidate, X_OK) == 0)
+            return 1;
+        path += len;
+        if (*path == ':')
+            path++;
+    }
+    return 0;
+}
+
+static int has_libx264(void)
+{
+    FILE *f = popen("ffmpeg -hide_banner -loglevel error -encoders 2>/dev/null", "r");
+    if (!f)
+        return 0;
+    char line[256];
+    int found = 0;
+    while (fgets(line, sizeof line, f))
+        if (strstr(line, " libx264 "))
+            found = 1;
+    pclose(f);
+    return found;
+}
+
+/* `path` in single quotes for the shell popen runs. */
+static char *shell_quoted(const char *path)
+{
+    size_t n = 3;
+    for (const char *c = path; *c; c++)
+        n += *c == '\'' ? 4 : 1;
+    char *q = malloc(n), *o = q;
+    if (!q)
+        return NULL;
+    *o++ = '\'';
+    for (const char *c = path; *c; c++) {
+        if (*c == '\'') {
+            memcpy(o, "'\\''", 4);
+            o += 4;
+        } else {
+            *o++ = *c;
+        }
+    }
+    *o++ = '\'';
+    *o = 0;
+    return q;
+}
+
+/* Cairo's RGB24 pixels are 32-bit words 0xXXRRGGBB in the host's order. */
+static const char *cairo_pixel_format(void)
+{
+    const uint32_t one = 1;
+    return *(const uint8_t *)&one ? "bgr0" : "0rgb";
+}
+
+/* While frames are written, a dead ffmpeg must give a write error, not a
+ * SIGPIPE that ends the simulator. */
+static struct sigaction previous_sigpipe;
+
+int video_open(video *v, const char *path, int width, int height)
+{
+    memset(v, 0, sizeof *v);
+    if (!on_path("ffmpeg")) {
+        fprintf(stderr, "openswarm-sim: --video needs ffmpeg: apt-get install ffmpeg, or drop "
+                        "--video\n");
+        return -1;
+    }
+    char *quoted = shell_quoted(path);
+    v->path = strdup(path);
+    if (!quoted || !v->path) {
+        free(quoted);
+        free(v->path);
+        return -1;
+    }
+    char command[8192];
+    snprintf(command, sizeof command,
+             "ffmpeg -hide_banner -loglevel error -nostdin -y -f rawvideo -pix_fmt %s -s %dx%d "
+             "-r 30 -i - -c:v %s -pix_fmt yuv420p %s",
+             cairo_pixel_format(), width, height, has_libx264() ? "libx264 -preset veryfast -crf 20" : "mpeg4 -q:v 3",
+             quoted);
+    free(quoted);
+    struct sigaction ignore;
+    memset(&ignore, 0, sizeof ignore);
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &ignore, &previous_sigpipe);
+    fflush(NULL); /* the child must not inherit unwritten output */
+    v->pipe = popen(command, "w");
+    if (!v->pipe) {
+        fprintf(stderr, "openswarm-sim: cannot start ffmpeg for %s: %s\n", path, strerror(errno));
+        sigaction(SIGPIPE, &previous_sigpipe, NULL);
+        free(v->path);
+        v->path = NULL;
+        return -1;
+    }
+    v->width = width;
+    v->height = height;
+    return 0;
+}
+
+int video_frame(video *v, cairo_surface_t *frame)
+{
+    if (!v->pipe || v->failed)
+        return -1;
+    const unsigned char *data = cairo_image_surface_get_data(frame);
+    const int stride = cairo_image_surface_get_stride(frame);
+    for (int y = 0; y < v->height; y++) {
+        if (fwrite(data + (size_t)y * (size_t)stride, 4, (size_t)v->width, v->pipe) !=
+            (size_t)v->width) {
+            fprintf(stderr, "openswarm-sim: ffmpeg stopped taking frames for %s (%s); its "
+                            "message is above\n",
+                    v->path, strerror(errno));
+            v->failed = 1;
+            return -1;
+        }
+    }
+    v->frames++;
+    return 0;
+}
+
+int video_close(video *v)
+{
+    if (!v->pipe)
+        return 0;
+    int status = pclose(v->pipe);
+    sigaction(SIGPIPE, &previous_sigpipe, NULL);
+    int rc = v->failed ? -1 : 0;
+    if (status == -1) {
+        fprintf(stderr, "openswarm-sim: ffmpeg writing %s: %s\n", v->path, strerror(errno));
+        rc = -1;
+    } else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        if (WIFEXITED(status))
+            fprintf(stderr, "openswarm-sim: ffmpeg failed (exit status %d) writing %s after %ld "
+                            "frames; its message is above\n",
+                    WEXITSTATUS(status), v->path, v->frames);
+        else
+            fprintf(stderr, "openswarm-sim: ffmpeg was killed writing %s\n", v->path);
+        rc = -1;
+    }
+    free(v->path);
+    memset(v, 0, sizeof *v);
+    return rc;
+}

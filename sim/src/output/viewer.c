@@ -1,0 +1,144 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* viewer.html: the player (viewer_page.html, built into the simulator as
+ * output_viewer_page) with the run put in place of its RUN marker, as
+ * compact JSON: per sample [time, [x, y, heading, led, ...], [object x, y,
+ * ...], [sender, receiver, ...]], positions to 0.1 mm, headings to the
+ * degree, the LED as r * 16 + g * 4 + b. 100 robots for 1200 samples make
+ * about 3 MB. */
+#include <errno.h>
+#include <math.h>
+#include <string.h>
+
+#include "output/output_parts.h"
+
+extern const char output_viewer_page[]; /* generated from viewer_page.html */
+
+static const char marker[] = "/*OPENSWARM_RUN*/";
+
+/* A number to `decimals` places, without a sign on zero. */
+static void number(FILE *f, double v, int decimals)
+{
+    const double half = 0.5 * pow(10, -decimals);
+    if (!isfinite(v))
+        v = 0;
+    if (v < 0 && v > -half)
+        v = 0;
+    fprintf(f, "%.*f", decimals, v);
+}
+
+static void write_world(FILE *f, const world_spec *w)
+{
+    fputs("{\"arena\":[", f);
+    number(f, w->width_mm, 1);
+    fputc(',', f);
+    number(f, w->height_mm, 1);
+    fputs("],\"radius\":", f);
+    number(f, KILOBOT_RADIUS_MM, 1);
+    fputs(",\"obstacles\":[", f);
+    for (int i = 0; i < w->n_obstacles; i++) {
+        fputs(i ? ",[" : "[", f);
+        for (int k = 0; k < w->obstacles[i].n; k++) {
+            if (k)
+                fputc(',', f);
+            number(f, w->obstacles[i].v[k].x, 1);
+            fputc(',', f);
+            number(f, w->obstacles[i].v[k].y, 1);
+        }
+        fputc(']', f);
+    }
+    fputs("],\"objects\":[", f);
+    for (int i = 0; i < w->n_objects; i++) {
+        fputs(i ? ",[" : "[", f);
+        number(f, w->objects[i].at.x, 1);
+        fputc(',', f);
+        number(f, w->objects[i].at.y, 1);
+        fputc(',', f);
+        number(f, w->objects[i].radius_mm, 1);
+        fputc(']', f);
+    }
+    fputs("],\"lights\":[", f);
+    for (int i = 0; i < w->n_lights; i++) {
+        fputs(i ? ",[" : "[", f);
+        number(f, w->lights[i].at.x, 1);
+        fputc(',', f);
+        number(f, w->lights[i].at.y, 1);
+        fputc(',', f);
+        number(f, w->lights[i].intensity_mv, 1);
+        fputc(']', f);
+    }
+    fprintf(f, "],\"robots\":%d,\"start\":[", w->n_robots);
+    for (int i = 0; i < w->n_robots; i++) {
+        fputs(i ? ",[" : "[", f);
+        number(f, w->robots[i].at.x, 1);
+        fputc(',', f);
+        number(f, w->robots[i].at.y, 1);
+        fputc(',', f);
+        number(f, w->robots[i].heading_deg, 0);
+        fputc(']', f);
+    }
+    fputc(']', f);
+}
+
+static void write_samples(FILE *f, const output_history *h)
+{
+    const world_spec *w = h->world;
+    fputs(",\"samples\":[", f);
+    for (int k = 0; k < h->n; k++) {
+        fputs(k ? ",\n[" : "\n[", f);
+        number(f, h->time_s[k], 3);
+        fputs(",[", f);
+        const output_robot *r = history_robots(h, k);
+        for (int i = 0; i < w->n_robots; i++) {
+            if (i)
+                fputc(',', f);
+            number(f, r[i].x_mm, 1);
+            fputc(',', f);
+            number(f, r[i].y_mm, 1);
+            fputc(',', f);
+            number(f, r[i].heading_deg, 0);
+            fprintf(f, ",%d", (r[i].led_r & 3) * 16 + (r[i].led_g & 3) * 4 + (r[i].led_b & 3));
+        }
+        fputs("],[", f);
+        const world_point *o = history_objects(h, k);
+        for (int i = 0; i < w->n_objects; i++) {
+            if (i)
+                fputc(',', f);
+            number(f, o[i].x, 1);
+            fputc(',', f);
+            number(f, o[i].y, 1);
+        }
+        fputs("],[", f);
+        for (int l = h->link_start[k]; l < h->link_start[k + 1]; l++)
+            fprintf(f, "%s%d,%d", l > h->link_start[k] ? "," : "", h->links[l].sender,
+                    h->links[l].receiver);
+        fputs("]]", f);
+    }
+    fputs("]}", f);
+}
+
+int viewer_write(const char *path, const output_history *h)
+{
+    const char *at = strstr(output_viewer_page, marker);
+    if (!at) {
+        fprintf(stderr, "openswarm-sim: the viewer page built in has no %s marker (a bug)\n",
+                marker);
+        return -1;
+    }
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "openswarm-sim: cannot write %s: %s; choose another --out folder\n", path,
+                strerror(errno));
+        return -1;
+    }
+    fwrite(output_viewer_page, 1, (size_t)(at - output_viewer_page), f);
+    write_world(f, h->world);
+    write_samples(f, h);
+    fputs(at + strlen(marker), f);
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        fprintf(stderr, "openswarm-sim: cannot write %s: %s; is the disk full?\n", path,
+                strerror(errno));
+        return -1;
+    }
+    return 0;
+}
