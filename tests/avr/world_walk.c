@@ -23,7 +23,7 @@ void setup(void) {
     }
 }
 
-void loop(void) {}
+void loop(void) { delay(1000); } /* asleep: the tests run fast */
 
 int main(void) {
     kilo_init();

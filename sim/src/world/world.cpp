@@ -5,10 +5,13 @@
  * centimetre here (a Kilobot 1.65 units across in radius, an arena 50 to
  * 200), masses in kilograms, time in seconds. The floor is seen from
  * above: no gravity in the plane; ground friction is a force that the
- * robots' legs and the objects' friction joints apply. A robot drives by
- * the force its legs can put on the floor (its weight times the leg
- * friction): enough to reach its walking speed within a step in free
- * space, but a wall stops it and a heavy object may not budge. */
+ * robots' legs and the objects' friction joints apply. A robot's legs are a
+ * friction joint to a massless carrier that moves as the motors would walk
+ * the robot: the joint pulls the robot along with at most the force its
+ * legs can put on the floor (its weight times the leg friction), in the
+ * same solver as the contacts. In free space it walks at the motors'
+ * speed; a wall stops it, a light object is pushed at nearly its speed, a
+ * heavy one may not budge. */
 #include "world/world.h"
 
 #include <box2d/box2d.h>
@@ -31,6 +34,7 @@ b2Vec2 to_units(world_point p) { return b2Vec2(float(p.x / MM_PER_UNIT), float(p
 
 struct Robot {
     b2Body *body = nullptr;
+    b2Body *carrier = nullptr; /* kinematic, no shape: where the legs would take it */
     kilobot_motors_model motors{};
     kilobot_motor motor[2]{};
     uint64_t rng = 0;
@@ -100,17 +104,31 @@ void add_object(world &w, const world_object &o) {
     w.objects.push_back(body);
 }
 
-/* Drive a body toward a velocity with at most the force its legs give. */
-void drive(b2Body *body, b2Vec2 velocity, double turn_rad_s, double dt) {
-    double max_force = LEG_FRICTION * KILOBOT_MASS_KG * GRAVITY;
-    b2Vec2 dv = velocity - body->GetLinearVelocity();
-    b2Vec2 force = float(body->GetMass() / dt) * dv;
-    if (force.Length() > max_force) force *= float(max_force / force.Length());
-    body->ApplyForceToCenter(force, true);
-    double max_torque = max_force * KILOBOT_RADIUS_MM / MM_PER_UNIT;
-    double torque = body->GetInertia() * (turn_rad_s - body->GetAngularVelocity()) / dt;
-    if (std::fabs(torque) > max_torque) torque = torque > 0 ? max_torque : -max_torque;
-    body->ApplyTorque(float(torque), true);
+/* The legs: a friction joint between the robot and its carrier. */
+void add_legs(world &w, Robot &r) {
+    b2BodyDef def;
+    def.type = b2_kinematicBody;
+    def.position = r.body->GetPosition();
+    def.angle = r.body->GetAngle();
+    r.carrier = w.physics.CreateBody(&def);
+    double force = LEG_FRICTION * KILOBOT_MASS_KG * GRAVITY;
+    b2FrictionJointDef legs;
+    legs.Initialize(r.body, r.carrier, r.body->GetPosition());
+    legs.maxForce = float(force);
+    legs.maxTorque = float(force * KILOBOT_RADIUS_MM / MM_PER_UNIT);
+    w.physics.CreateJoint(&legs);
+}
+
+/* Put the carrier on the robot, moving as the motors would move it. */
+void walk(Robot &r, const kilobot_twist &twist) {
+    double angle = r.body->GetAngle();
+    double c = std::cos(angle), s = std::sin(angle);
+    b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
+             float((twist.forward_mm_s * s + twist.left_mm_s * c) / MM_PER_UNIT));
+    r.carrier->SetTransform(r.body->GetPosition(), float(angle));
+    r.carrier->SetLinearVelocity(v);
+    r.carrier->SetAngularVelocity(float(twist.turn_rad_s));
+    r.body->SetAwake(true);
 }
 
 }  // namespace
@@ -132,6 +150,7 @@ world *world_create(const world_spec *spec) {
         kilobot_motors_draw(&r.motors, &r.rng);
         const world_robot &spec_robot = spec->robots[i];
         r.body = add_disc(*w, spec_robot.at, spec_robot.heading_deg, KILOBOT_RADIUS_MM, KILOBOT_MASS_KG);
+        add_legs(*w, r);
     }
     return w.release();
 }
@@ -150,12 +169,7 @@ void world_motor_duty(world *w, int i, int side, uint8_t duty, double t) {
 void world_step(world *w, double t) {
     for (Robot &r : w->robots) {
         for (int side = 0; side < 2; side++) kilobot_motor_advance(&r.motor[side], &r.motors, side, t);
-        kilobot_twist twist = kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng);
-        double angle = r.body->GetAngle();
-        double c = std::cos(angle), s = std::sin(angle);
-        b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
-                 float((twist.forward_mm_s * s + twist.left_mm_s * c) / MM_PER_UNIT));
-        drive(r.body, v, twist.turn_rad_s, WORLD_STEP_S);
+        walk(r, kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng));
     }
     w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);
 }
