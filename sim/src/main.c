@@ -76,7 +76,10 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
             nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
     int uid = o->uid >= 0 ? o->uid + index : -1, calibration[4];
     memcpy(calibration, o->calibration, sizeof calibration);
-    if (o->world != NULL) world_robot_identity(index, &uid, calibration);
+    if (o->world != NULL) {
+        world_robot_identity(index, &uid, calibration);
+        world_robot_noise(r, index);
+    }
     board_configure(r->avr, o, uid, calibration);
     adc_trigger_attach(r->avr);
     char prefix[sizeof r->console.prefix] = "";

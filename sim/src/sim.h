@@ -220,6 +220,10 @@ static inline void power_down_after_step(robot *r) {
     if (r->power_down.asleep && r->state != cpu_Sleeping) power_down_thaw(r);
 }
 
+/* analog_noise.c: every conversion reads its input plus gaussian noise of
+ * sd_counts ADC counts, from the robot's own sequence (seed). */
+void analog_noise_attach(robot *r, uint64_t seed, double sd_counts);
+
 /* adc_trigger.c: ADC conversions started by the analog comparator (ADTS 001) */
 void adc_trigger_attach(avr_t *avr);
 

@@ -15,6 +15,8 @@
 #include "output/output.h"
 #include "world/world.h"
 
+#define ANALOG_NOISE_COUNTS 1.0 /* sd of a reading, ADC counts */
+#define ROOM_TEMPERATURE_MV 314   /* the ATmega328P's sensor at 25 C (datasheet) */
 #define LIGHT_REFERENCE_MM 100.0 /* a source adds its intensity at this distance */
 #define LIGHT_SENSOR_BACK_MM 15.5 /* the sensor looks up from the robot's back */
 
@@ -100,12 +102,19 @@ int world_options_check(options *o) {
     if (!(o->given & GIVEN_IR_LOSS) && spec.ir_loss_pct >= 0) o->ir_loss_pct = spec.ir_loss_pct;
     if (!(o->given & GIVEN_CLOCK_SPREAD) && spec.clock_spread_pct >= 0)
         o->clock_spread_pct = spec.clock_spread_pct;
+    if (o->temperature_mv < 0) o->temperature_mv = ROOM_TEMPERATURE_MV;
     if (assign_firmware(o) != 0) return -1;
     int status = options_check_robots(o);
     o->uid = -1; /* each robot's comes from the world */
     if (status != 0) return -1;
     physics = world_create(&spec);
     return 0;
+}
+
+void world_robot_noise(robot *r, int index) {
+    uint64_t seed = (uint64_t)spec.seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)index << 32 | 0xA5A5u);
+    world_random_next(&seed);
+    analog_noise_attach(r, seed, ANALOG_NOISE_COUNTS);
 }
 
 void world_robot_identity(int index, int *uid, int calibration[4]) {

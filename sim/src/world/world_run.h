@@ -11,6 +11,8 @@
  * the channel from it (the command line's --time, --ir-range, --ir-loss and
  * --clock-spread win); -1 after a message. */
 int world_options_check(options *o);
+/* Robot index's analog inputs carry its own noise (before they are set). */
+void world_robot_noise(robot *r, int index);
 /* Robot index's uid and EEPROM calibration (-1: erased). */
 void world_robot_identity(int index, int *uid, int calibration[4]);
 /* The robots are loaded: follow their motors, place them on the IR
