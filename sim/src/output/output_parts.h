@@ -53,6 +53,7 @@ int tables_close(output_tables *t);
 typedef struct picture {
     cairo_surface_t *surface;
     cairo_t *cr;
+    cairo_surface_t *background; /* what never moves, drawn at the first frame */
     int width, height;
     double scale;              /* pixels per mm */
     double origin_x, origin_y; /* pixel of the arena's (0, 0) corner */

@@ -308,13 +308,45 @@ static void draw_footer(picture *p, const world_spec *w, double time_s)
     cairo_stroke(cr);
 }
 
+/* What never moves (floor, grid, the lights' glow, obstacles) is drawn
+ * once and painted under every frame: a video redraws it 30 times a second
+ * of output, and the glow's gradient alone is a large share of a frame. */
+static int draw_background(picture *p, const world_spec *w)
+{
+    if (p->background)
+        return 0;
+    cairo_t *frame_cr = p->cr;
+    cairo_surface_t *bg = cairo_image_surface_create(CAIRO_FORMAT_RGB24, p->width, p->height);
+    if (cairo_surface_status(bg) != CAIRO_STATUS_SUCCESS) {
+        cairo_surface_destroy(bg);
+        return -1;
+    }
+    p->cr = cairo_create(bg);
+    draw_floor(p, w);
+    draw_light_glows(p, w);
+    draw_obstacles(p, w);
+    cairo_destroy(p->cr);
+    p->cr = frame_cr;
+    cairo_surface_flush(bg);
+    p->background = bg;
+    return 0;
+}
+
 void picture_draw(picture *p, const output_history *h, int k)
 {
     const world_spec *w = h->world;
     cairo_save(p->cr);
-    draw_floor(p, w);
-    draw_light_glows(p, w);
-    draw_obstacles(p, w);
+    if (draw_background(p, w) == 0) {
+        cairo_identity_matrix(p->cr);
+        cairo_set_source_surface(p->cr, p->background, 0, 0);
+        cairo_set_operator(p->cr, CAIRO_OPERATOR_SOURCE);
+        cairo_paint(p->cr);
+        cairo_set_operator(p->cr, CAIRO_OPERATOR_OVER);
+    } else {
+        draw_floor(p, w);
+        draw_light_glows(p, w);
+        draw_obstacles(p, w);
+    }
     if (k >= 0)
         draw_trails(p, h, k);
     draw_light_marks(p, w);
@@ -342,6 +374,8 @@ void picture_free(picture *p)
 {
     if (p->cr)
         cairo_destroy(p->cr);
+    if (p->background)
+        cairo_surface_destroy(p->background);
     if (p->surface)
         cairo_surface_destroy(p->surface);
     memset(p, 0, sizeof *p);
