@@ -103,14 +103,21 @@ static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void
 
 /* A robot asleep until a timer past this window's end cannot act in it:
  * it stays behind until the window its next timer falls in. An IR edge
- * for it is one of its timers (air/ir_channel.c), so nothing reaches it
- * late. This keeps a sleeping swarm cheap: a robot sleeping between 1 ms
- * ticks is run in one window of 125. */
-static int dozing_through(robot *r, avr_cycle_count_t end) {
+ * for it is one of its timers (air/ir_channel.c, which wakes it up here),
+ * so nothing reaches it late. This keeps a sleeping swarm cheap: a robot
+ * sleeping between 1 ms ticks is run in one window of 125. */
+static int dozing_through(robot *r, avr_cycle_count_t own_end, avr_cycle_count_t window_end) {
     if (r->state != cpu_Sleeping) return 0;
-    avr_cycle_timer_cancel(r->avr, wake_up, NULL);
+    if (r->wake_registered) {
+        avr_cycle_timer_cancel(r->avr, wake_up, NULL);
+        r->wake_registered = 0;
+    }
     const avr_cycle_timer_slot_t *next = r->avr->cycle_timers.timer;
-    return next != NULL && next->when > end;
+    if (next == NULL || next->when <= own_end) return 0;
+    avr_cycle_count_t due = r->avr->frequency == nominal_hz ? next->when
+                                                             : next->when * nominal_hz / r->avr->frequency;
+    r->doze_until = due > window_end ? due : window_end + 1;
+    return 1;
 }
 
 /* Run every robot up to the nominal clock's cycle window_end (or until it
@@ -120,13 +127,18 @@ static int run_window(int n, avr_cycle_count_t window_end) {
     int all_finished = 1;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
+        if (r->doze_until > window_end) {
+            all_finished = 0;
+            continue;
+        }
         avr_cycle_count_t end = own_cycles(r, window_end);
         if (n > 1 && !finished(r) && r->avr->cycle < end) {
-            if (dozing_through(r, end)) {
+            if (dozing_through(r, end, window_end)) {
                 all_finished = 0;
                 continue;
             }
             avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
+            r->wake_registered = 1;
         }
         while (!finished(r) && r->avr->cycle < end) {
             power_down_before_step(r);

@@ -169,6 +169,11 @@ typedef struct robot {
     int vcd_open;
     int state; /* of its last avr_run */
     power_down power_down;
+    /* Asleep with nothing due before this cycle of the nominal clock: not
+     * run in windows that end earlier. 0: run it. Whatever registers a timer
+     * on a sleeping robot from outside (an IR edge) sets it back to 0. */
+    avr_cycle_count_t doze_until;
+    int wake_registered; /* its window-end timer is set */
 } robot;
 
 /* firmware.c: check and load an ELF into a new simulated MCU */

@@ -216,6 +216,7 @@ static void enqueue(ir_station *s, ir_edge e) {
     s->queue = grow(s->queue, &s->queue_room, s->tail + 1, sizeof(ir_edge));
     s->queue[s->tail++] = e;
     if (idle) avr_cycle_timer_register(avr, e.at - avr->cycle, deliver, s);
+    s->robot->doze_until = 0; /* a new timer: look at it again */
 }
 
 void ir_channel_hand_over(uint32_t latency_cycles) {
