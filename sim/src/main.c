@@ -8,6 +8,7 @@
 #include <sim_cycle_timers.h>
 
 #include "sim.h"
+#include "lockstep.h"
 #include "progress.h"
 #include "world/world_run.h"
 
@@ -17,23 +18,6 @@
 #define LOCKSTEP_CYCLES IR_LATENCY_CYCLES
 
 static robot *robots;
-static int profiling;
-
-/* One instruction (or one sleep), its cycles charged to its function. */
-static void step_profiled(robot *r) {
-    avr_flashaddr_t pc = r->avr->pc;
-    avr_cycle_count_t before = r->avr->cycle;
-    /* simavr 1.6 runs a SLEEP and the sleep it starts in one avr_run. */
-    int was_asleep = r->state == cpu_Sleeping || at_sleep_instruction(r->avr);
-    r->state = avr_run(r->avr);
-    profile_charge(pc, was_asleep, r->avr->cycle - before);
-}
-
-static int finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
-
-/* A robot that jumped to its bootloader (a BOOT message asks for it). The
- * simulated flash is erased there: simavr 1.6 would run through it. */
-static int at_bootloader(const robot *r) { return r->avr->pc == KILOBOT_BOOTLOADER_ADDRESS; }
 
 /* The ELF's clock: the lockstep windows count its cycles. */
 static uint32_t nominal_hz;
@@ -50,11 +34,6 @@ static double clock_error(int index, int n) {
         if (other < mine || (other == mine && j < index)) rank++;
     }
     return 2.0 * rank / (n - 1) - 1.0;
-}
-
-/* Cycle c of the nominal clock, in robot r's own cycles. */
-static avr_cycle_count_t own_cycles(const robot *r, avr_cycle_count_t c) {
-    return r->avr->frequency == nominal_hz ? c : c * r->avr->frequency / nominal_hz;
 }
 
 static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
@@ -90,76 +69,12 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     return debug_attach(r, o);
 }
 
-/* Fires again a cycle later until the next window re-registers it: simavr
- * 1.6 fires due timers before it computes how long a sleeping robot
- * sleeps, so a robot whose SLEEP ended right at the window's end would
- * otherwise find this timer spent and sleep on to its next tick, thousands
- * of cycles past the others (and hear their IR edges merged into one). */
-static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void *param) {
-    (void)avr;
-    (void)param;
-    return when + 1;
-}
-
-/* A robot asleep until a timer past this window's end cannot act in it:
- * it stays behind until the window its next timer falls in. An IR edge
- * for it is one of its timers (air/ir_channel.c, which wakes it up here),
- * so nothing reaches it late. This keeps a sleeping swarm cheap: a robot
- * sleeping between 1 ms ticks is run in one window of 125. */
-static int dozing_through(robot *r, avr_cycle_count_t own_end, avr_cycle_count_t window_end) {
-    if (r->state != cpu_Sleeping) return 0;
-    if (r->wake_registered) {
-        avr_cycle_timer_cancel(r->avr, wake_up, NULL);
-        r->wake_registered = 0;
-    }
-    const avr_cycle_timer_slot_t *next = r->avr->cycle_timers.timer;
-    if (next == NULL || next->when <= own_end) return 0;
-    avr_cycle_count_t due = r->avr->frequency == nominal_hz ? next->when
-                                                             : next->when * nominal_hz / r->avr->frequency;
-    r->doze_until = due > window_end ? due : window_end + 1;
-    return 1;
-}
-
-/* Run every robot up to the nominal clock's cycle window_end (or until it
- * stops); 1 when all stopped. With several robots a sleeping one is woken
- * at the window's end, so it never skips past what the others do. */
-static int run_window(int n, avr_cycle_count_t window_end) {
-    int all_finished = 1;
-    for (int i = 0; i < n; i++) {
-        robot *r = &robots[i];
-        if (r->doze_until > window_end) {
-            all_finished = 0;
-            continue;
-        }
-        avr_cycle_count_t end = own_cycles(r, window_end);
-        if (n > 1 && !finished(r) && r->avr->cycle < end) {
-            if (dozing_through(r, end, window_end)) {
-                all_finished = 0;
-                continue;
-            }
-            avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
-            r->wake_registered = 1;
-        }
-        while (!finished(r) && r->avr->cycle < end) {
-            power_down_before_step(r);
-            if (profiling)
-                step_profiled(r);
-            else
-                r->state = avr_run(r->avr);
-            power_down_after_step(r);
-            if (at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
-        }
-        all_finished &= finished(r);
-    }
-    return all_finished;
-}
-
 static int report(int n, const options *o) {
     int status = 0, crashed = 0, running = 0, booted = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         double t = (double)r->avr->cycle / (double)r->avr->frequency;
-        if (at_bootloader(r)) {
+        if (robot_at_bootloader(r)) {
             fprintf(stderr, "openswarm-sim: robot %d jumped to the bootloader (BOOT message) at "
                             "%.6f s: on a robot the overhead controller would now reprogram it\n",
                     r->index, t);
@@ -220,17 +135,19 @@ static int load_robots(const options *o, FILE *csv) {
 /* The robots in lockstep windows until the time is up or all stopped. */
 static void run(const options *o) {
     avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
+    lockstep_begin(robots, o->robots, nominal_hz, o->threads, o->profile);
     progress_start(o->progress, o->robots, nominal_hz);
     for (avr_cycle_count_t end = 0;;) {
         end += LOCKSTEP_CYCLES;
         if (end > limit) end = limit;
-        int all_stopped = run_window(o->robots, end);
+        int all_stopped = lockstep_window(end);
         ir_channel_hand_over(LOCKSTEP_CYCLES);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         progress_update(end);
         if (all_stopped || end == limit) break;
     }
     progress_end();
+    lockstep_end();
 }
 
 int main(int argc, char **argv) {
@@ -240,8 +157,7 @@ int main(int argc, char **argv) {
         if ((i == 0 || firmware_of(&o, i) != firmware_of(&o, i - 1)) &&
             firmware_check(firmware_of(&o, i)) != 0)
             return EXIT_USAGE;
-    profiling = o.profile;
-    if (profiling && profile_load(firmware_of(&o, 0)) != 0) return EXIT_USAGE;
+    if (o.profile && profile_load(firmware_of(&o, 0)) != 0) return EXIT_USAGE;
     FILE *csv = NULL;
     if (o.trace_csv != NULL) {
         csv = fopen(o.trace_csv, "w");
@@ -265,7 +181,7 @@ int main(int argc, char **argv) {
         debug_detach(&robots[i]);
     }
     if (csv != NULL) fclose(csv);
-    if (profiling) profile_print(o.robots);
+    if (o.profile) profile_print(o.robots);
     int written = o.world != NULL ? world_run_finish(o.seconds) : 0;
     int status = report(o.robots, &o);
     return status == 0 && written != 0 ? EXIT_USAGE : status;

@@ -70,6 +70,8 @@ static void usage(FILE *out) {
             "      --out DIR        with --world: write trajectories.csv, objects.csv,\n"
             "                       final.png and viewer.html into DIR\n"
             "      --video          with --out: also video.mp4 (needs ffmpeg)\n"
+            "      --threads N      share the robots among N threads (default: one per core,\n"
+            "                       at least 16 robots each); any N gives the same run\n"
             "      --progress       a status line on stderr while it runs (default: when\n"
             "                       stderr is a terminal); --no-progress never\n"
             "  -h, --help           this text\n\n"
@@ -189,7 +191,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"ir-loss", required_argument, 0, 'X'},
         {"world", required_argument, 0, 'w'},      {"out", required_argument, 0, 'o'},
         {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
-        {"no-progress", no_argument, 0, 'P' + 256},
+        {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -240,6 +242,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'v': o->video = 1; break;
         case 'p': o->progress = 1; break;
         case 'P' + 256: o->progress = 0; break;
+        case 'j': if ((v = number("--threads", optarg, 1, 256, "2")) < 0) return -1; o->threads = (int)v; break;
         case 'O':
             if (o->n_ohc == MAX_OHC_MESSAGES) {
                 fprintf(stderr, "openswarm-sim: at most %d --ohc messages\n", MAX_OHC_MESSAGES);

@@ -83,6 +83,7 @@ typedef struct options {
     const char *out_dir; /* --out DIR: what a run in a world leaves (output/) */
     int video;          /* --video: also video.mp4 */
     int progress;       /* a status line on stderr while it runs: -1 auto, 0 no, 1 yes */
+    int threads;        /* --threads: 0 picks by the machine and the swarm */
 } options;
 
 /* What the command line set, for what a world file may also set. */

@@ -73,6 +73,7 @@ typedef struct ir_station {
     ir_sent *outbox;
     int n_out, out_room;
     avr_cycle_count_t last_flash;
+    uint32_t loss_random; /* its own fixed sequence: runs lose the same frames on any thread */
     char *in_range;    /* "1, 2" for --ir-log */
     char *frame_reach; /* "1, 2; lost at 2" */
     size_t text_room;
@@ -87,7 +88,6 @@ static ir_station *stations;
 static int n_stations;
 static int range_mm;
 static double loss_pct;
-static uint32_t loss_random = 0x2545F491u; /* fixed: every run loses the same frames */
 
 #define FRAME_CYCLES ((IR_FRAME_SLOTS + 1) * IR_BIT_CYCLES)
 /* A sender's flash this long after its last starts a new frame (within a
@@ -134,12 +134,12 @@ static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void
     return s->queue[s->head].at; /* the same timer, again then */
 }
 
-/* A number in [0, 1) from a fixed xorshift sequence. */
-static double next_random(void) {
-    loss_random ^= loss_random << 13;
-    loss_random ^= loss_random >> 17;
-    loss_random ^= loss_random << 5;
-    return loss_random / 4294967296.0;
+/* A number in [0, 1) from a sender's fixed xorshift sequence. */
+static double next_random(ir_station *s) {
+    s->loss_random ^= s->loss_random << 13;
+    s->loss_random ^= s->loss_random >> 17;
+    s->loss_random ^= s->loss_random << 5;
+    return s->loss_random / 4294967296.0;
 }
 
 /* At a frame's start pulse, each receiver in range loses the whole frame
@@ -152,7 +152,7 @@ static void draw_losses(ir_station *from, avr_cycle_count_t sent) {
     const char *sep = "; lost at ";
     for (int k = 0; k < from->n_links; k++) {
         ir_link *l = &from->links[k];
-        l->lost_until = l->loss > 0 && next_random() < l->loss ? sent + FRAME_CYCLES : 0;
+        l->lost_until = l->loss > 0 && next_random(from) < l->loss ? sent + FRAME_CYCLES : 0;
         if (l->lost_until == 0) continue;
         size_t used = strlen(from->frame_reach);
         snprintf(from->frame_reach + used, from->text_room - used, "%s%d", sep, l->to);
@@ -294,6 +294,8 @@ void ir_channel_attach(robot *all, int n, int range, double loss) {
     for (int i = 0; i < n; i++) {
         ir_station *s = &stations[i];
         s->robot = &all[i];
+        s->loss_random = 0x2545F491u ^ (uint32_t)i * 2654435761u;
+        if (s->loss_random == 0) s->loss_random = 1;
         s->text_room = (size_t)n * 8 + 32;
         s->in_range = calloc(s->text_room, 1);
         s->frame_reach = calloc(s->text_room, 1);
