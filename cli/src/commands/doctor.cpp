@@ -17,6 +17,17 @@ struct Check {
     std::string package; // Debian package that provides it
 };
 
+// Tools only some features use: missing, they are reported but the check
+// still passes.
+std::vector<Check> optional_checks() {
+    return {
+        {"ffmpeg (openswarm run --world --video)", find_program("ffmpeg").has_value(), "ffmpeg"},
+        {"chromium (the world viewer's browser test)",
+         find_program("chromium").has_value() || find_program("chromium-browser").has_value(),
+         "chromium"},
+    };
+}
+
 std::vector<Check> checks(const Paths &paths) {
     return {
         {"cmake", find_program("cmake").has_value(), "cmake"},
@@ -43,6 +54,14 @@ void add_doctor_command(CLI::App &app, const Paths &paths) {
             all_ok = false;
             if (!c.package.empty()) missing_packages.push_back(c.package);
         }
+        std::vector<std::string> optional_packages;
+        for (const auto &c : optional_checks()) {
+            std::printf("%s %s\n", c.ok ? "ok     " : "absent ", c.what.c_str());
+            if (!c.ok) optional_packages.push_back(c.package);
+        }
+        if (!optional_packages.empty())
+            std::printf("Optional, only for what they are named after:\n    sudo apt-get install %s\n",
+                        join(optional_packages, " ").c_str());
         if (all_ok) {
             std::printf("Everything is in place.\n");
             exit_code = EXIT_OK;

@@ -1,7 +1,17 @@
 // openswarm run: build the app, then run it in the simulator.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
 #include "../process.hpp"
+#include "../suggest.hpp"
 #include "build.hpp"
 #include "commands.hpp"
+
+namespace fs = std::filesystem;
 
 namespace openswarm {
 
@@ -11,6 +21,7 @@ struct RunOptions {
     std::string dir = ".";
     std::string port;
     std::string time = "10";
+    bool time_given = false;
     int robots = 1;
     int distance = 50;
     std::string line;      // --line SPACING: robots on a line
@@ -26,9 +37,69 @@ struct RunOptions {
     std::string ir_loss;      // percent at the range's edge; empty: none
     std::vector<std::string> first; // firmware robots 0, 1, ... run instead of the app
     std::vector<std::string> simulator_options; // after --, passed as they are
+    std::string world; // --world FILE, relative to where the tool was started
+    std::string out;   // --out DIR; empty: <app dir>/out/<world file's stem>
+    bool video = false;
+    bool trace = false; // with --world; without it the trace is always on
 };
 
-int run_app(const RunOptions &o, const Paths &paths) {
+// The world files an app ships (<dir>/worlds/*.json), to suggest when the
+// one asked for is not there.
+std::vector<std::string> app_worlds(const fs::path &dir) {
+    std::vector<std::string> found;
+    std::error_code ec;
+    for (const auto &entry : fs::directory_iterator(dir / "worlds", ec))
+        if (entry.path().extension() == ".json") found.push_back(entry.path().string());
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+// How long the world runs, for the first line: its duration_s, or the
+// simulator's default. The simulator checks the file and reports its
+// mistakes; here an unreadable file just says less.
+std::string world_duration(const std::string &path) {
+    try {
+        std::ifstream in(path);
+        auto world = nlohmann::json::parse(in);
+        auto d = world.find("duration_s");
+        if (d == world.end()) return "for 10 s (the world gives no duration_s)";
+        if (d->is_number()) {
+            std::ostringstream text;
+            text << "for " << d->get<double>() << " s (its duration_s)";
+            return text.str();
+        }
+    } catch (const std::exception &) {
+    }
+    return "for its duration_s";
+}
+
+// A --world that names no file: say which file, where it was looked for,
+// and what to give instead. False after reporting.
+bool world_file_usable(const RunOptions &o) {
+    std::error_code ec;
+    if (fs::is_regular_file(o.world, ec)) return true;
+    std::string message = "--world " + o.world + ": ";
+    if (fs::exists(o.world, ec)) {
+        message += "not a file; give a world.json (docs/world.md describes them)";
+    } else {
+        message += "no such file (looked for " +
+                   fs::absolute(o.world).lexically_normal().string() + ")";
+        if (o.dir != ".") message += "; the path is from the current folder, not from -C " + o.dir;
+    }
+    auto worlds = app_worlds(o.dir);
+    if (!worlds.empty()) message += "; the app has: " + join(worlds);
+    else message += "; write one as docs/world.md describes, or start from the disperse "
+                    "template's worlds/packed.json";
+    report(message);
+    return false;
+}
+
+int run_app(RunOptions o, const Paths &paths) {
+    if (!o.world.empty()) {
+        if (!world_file_usable(o)) return EXIT_USAGE;
+        if (o.out.empty())
+            o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
+    }
     auto built = build_app(paths, o.dir, o.port);
     if (!built) return exit_code;
     if (paths.simulator.empty()) {
@@ -36,17 +107,32 @@ int run_app(const RunOptions &o, const Paths &paths) {
                "`cmake --build <openswarm>/build --target openswarm-sim`");
         return EXIT_FAILED;
     }
+    const bool world = !o.world.empty();
+    // Resolved now, from the folder the user typed it in, whatever folder
+    // the simulator is later run from.
+    const std::string world_path =
+        world ? fs::absolute(o.world).lexically_normal().string() : std::string();
     std::string seconds = o.time;
     if (!seconds.empty() && seconds.back() == 's') seconds.pop_back();
-    std::vector<std::string> argv = {paths.simulator.string(), "--trace", "--time", seconds};
-    // With --positions the file's line count is the number of robots; with
-    // --first, the app runs on one robot after them unless told otherwise.
-    int robots = o.robots_given || o.first.empty() ? o.robots : (int)o.first.size() + 1;
-    if (o.positions.empty() || o.robots_given)
-        argv.insert(argv.end(), {"--robots", std::to_string(robots)});
-    if (!o.line.empty()) argv.insert(argv.end(), {"--line", o.line});
-    else if (!o.positions.empty()) argv.insert(argv.end(), {"--positions", o.positions});
-    else argv.insert(argv.end(), {"--distance", std::to_string(o.distance)});
+    std::vector<std::string> argv = {paths.simulator.string()};
+    // Without --world one robot's LED and motors are the whole show; in a
+    // world, ten robots' changes would bury the status line and summary.
+    if (!world || o.trace) argv.push_back("--trace");
+    // In a world, its duration_s applies unless --time was given.
+    if (!world || o.time_given) argv.insert(argv.end(), {"--time", seconds});
+    if (world) {
+        argv.insert(argv.end(), {"--world", world_path, "--out", o.out});
+        if (o.video) argv.push_back("--video");
+    } else {
+        // With --positions the file's line count is the number of robots; with
+        // --first, the app runs on one robot after them unless told otherwise.
+        int robots = o.robots_given || o.first.empty() ? o.robots : (int)o.first.size() + 1;
+        if (o.positions.empty() || o.robots_given)
+            argv.insert(argv.end(), {"--robots", std::to_string(robots)});
+        if (!o.line.empty()) argv.insert(argv.end(), {"--line", o.line});
+        else if (!o.positions.empty()) argv.insert(argv.end(), {"--positions", o.positions});
+        else argv.insert(argv.end(), {"--distance", std::to_string(o.distance)});
+    }
     if (o.ir_range != 0) argv.insert(argv.end(), {"--ir-range", std::to_string(o.ir_range)});
     if (o.gdb != 0) argv.insert(argv.end(), {"--gdb", std::to_string(o.gdb)});
     if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
@@ -58,10 +144,24 @@ int run_app(const RunOptions &o, const Paths &paths) {
     argv.insert(argv.end(), o.simulator_options.begin(), o.simulator_options.end());
     argv.insert(argv.end(), o.first.begin(), o.first.end());
     argv.push_back(built->image.string());
-    std::printf("Running %s in the simulator for %s s\n", built->image.filename().string().c_str(),
-                seconds.c_str());
+    const std::string image = built->image.filename().string();
+    if (!world)
+        std::printf("Running %s in the simulator for %s s\n", image.c_str(), seconds.c_str());
+    else if (o.time_given)
+        std::printf("Running %s in the world %s for %s s\n", image.c_str(), o.world.c_str(),
+                    seconds.c_str());
+    else
+        std::printf("Running %s in the world %s %s\n", image.c_str(), o.world.c_str(),
+                    world_duration(world_path).c_str());
+    std::fflush(stdout); // before the simulator's output, which goes straight to ours
     int status = run_program(argv);
-    return status == 0 ? EXIT_OK : EXIT_FAILED;
+    if (status != 0) return EXIT_FAILED;
+    if (world) {
+        fs::path out(o.out);
+        std::printf("Open %s in a browser, or look at %s\n", (out / "viewer.html").string().c_str(),
+                    (out / "final.png").string().c_str());
+    }
+    return EXIT_OK;
 }
 
 }  // namespace
@@ -69,7 +169,10 @@ int run_app(const RunOptions &o, const Paths &paths) {
 void add_run_command(CLI::App &app, const Paths &paths) {
     auto o = std::make_shared<RunOptions>();
     CLI::App *cmd = app.add_subcommand("run", "Build the app and run it in the simulator");
-    cmd->add_option("-t,--time", o->time, "simulated time, seconds (e.g. 10 or 2.5s)")->capture_default_str();
+    auto time = cmd->add_option("-t,--time", o->time,
+                                "simulated time, seconds (e.g. 10 or 2.5s; with --world, default: the "
+                                "world's duration_s)")
+                    ->capture_default_str();
     auto robots = cmd->add_option("-n,--robots", o->robots, "robots running the app together")
         ->check(CLI::Range(1, 64))->capture_default_str();
     auto distance =
@@ -78,9 +181,23 @@ void add_run_command(CLI::App &app, const Paths &paths) {
     auto line =
         cmd->add_option("--line", o->line, "place the robots on a line, SPACING millimetres apart")
             ->type_name("SPACING")->excludes(distance);
-    cmd->add_option("--positions", o->positions,
+    auto positions = cmd->add_option("--positions", o->positions,
                     "place the robots where FILE says: one \"x y\" line (millimetres) per robot")
         ->type_name("FILE")->excludes(distance)->excludes(line);
+    auto world =
+        cmd->add_option("--world", o->world,
+                        "robots move in the world FILE describes (docs/world.md), which places "
+                        "them; FILE is from the current folder, not from -C: "
+                        "-C demo --world demo/worlds/packed.json")
+            ->type_name("FILE")
+            ->excludes(robots)->excludes(distance)->excludes(line)->excludes(positions);
+    cmd->add_option("--out", o->out,
+                    "with --world: write trajectories.csv, objects.csv, final.png and viewer.html "
+                    "here (default: <app>/out/<world file's name>)")
+        ->type_name("DIR")->needs(world);
+    cmd->add_flag("--video", o->video, "with --world: also video.mp4 (needs ffmpeg)")->needs(world);
+    cmd->add_flag("--trace", o->trace,
+                  "print every robot's LED and motor changes (without --world, always)");
     cmd->add_option("--ir-range", o->ir_range,
                     "millimetres a robot's IR reaches (simulator default 100)")
         ->check(CLI::Range(10, 1000));
@@ -111,8 +228,9 @@ void add_run_command(CLI::App &app, const Paths &paths) {
         ->type_name("");
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
-    cmd->callback([o, robots, &paths] {
+    cmd->callback([o, robots, time, &paths] {
         o->robots_given = robots->count() > 0;
+        o->time_given = time->count() > 0;
         exit_code = run_app(*o, paths);
     });
 }

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# End to end: the disperse template's packed world through `openswarm run
+# --world`. Ten robots start packed in a 12 cm square; after the world's
+# 120 s their mean nearest-neighbour distance has grown by half or more, and
+# the picture and the viewer are there. Then the mistakes --world refuses.
+#   world_disperse.sh OPENSWARM WORKDIR
+set -euo pipefail
+openswarm=$1 work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+"$openswarm" new app --template disperse >/dev/null
+
+# From outside the app (-C): --world is from the current folder, the default
+# --out is under the app; no --time, so the world's duration_s (120 s) runs.
+"$openswarm" run -C app --world app/worlds/packed.json >run.log 2>&1 || { cat run.log; exit 1; }
+grep -q "ran 120.000 s of simulated time (10 robots)" run.log || { echo "not the world's 120 s:"; cat run.log; exit 1; }
+grep -q "^Open app/out/packed/viewer.html in a browser, or look at app/out/packed/final.png$" run.log \
+    || { echo "no pointer to the viewer:"; cat run.log; exit 1; }
+if grep -q " led \| motors " run.log; then echo "traced without --trace:"; cat run.log; exit 1; fi
+for f in trajectories.csv final.png viewer.html; do
+    test -s "app/out/packed/$f" || { echo "app/out/packed/$f was not written"; cat run.log; exit 1; }
+done
+python3 - app/out/packed/trajectories.csv <<'PY'
+import csv, math, sys
+samples = {}
+for row in csv.DictReader(open(sys.argv[1])):
+    samples.setdefault(float(row["time_s"]), []).append((float(row["x_mm"]), float(row["y_mm"])))
+def mean_nearest(points):
+    return sum(min(math.dist(p, q) for q in points if q is not p) for p in points) / len(points)
+first, last = min(samples), max(samples)
+assert len(samples[first]) == 10 and len(samples[last]) == 10, "expected 10 robots in every sample"
+assert last >= 119, f"the trajectories end at {last} s, not at the world's 120 s"
+start, end = mean_nearest(samples[first]), mean_nearest(samples[last])
+print(f"mean nearest-neighbour distance: {start:.1f} mm at {first} s, {end:.1f} mm at {last} s")
+assert end >= 1.5 * start, f"the robots did not spread: {start:.1f} -> {end:.1f} mm (want x1.5)"
+PY
+
+# --out and --time given: the files go where asked, for the time asked.
+"$openswarm" run -C app --world app/worlds/packed.json --out short --time 1 >short.log 2>&1 \
+    || { cat short.log; exit 1; }
+grep -q "ran 1.000 s of simulated time (10 robots)" short.log || { cat short.log; exit 1; }
+test -s short/final.png -a -s short/viewer.html || { echo "--out short was not written"; cat short.log; exit 1; }
+
+# Mistakes: bad usage (exit 2), refused before building, with the file
+# and what to do.
+expect() {
+    local regex=$1
+    shift
+    local status=0
+    "$@" >bad.log 2>&1 || status=$?
+    if [ "$status" -ne 2 ] || ! grep -Eq -- "$regex" bad.log; then
+        echo "FAILED: $* -> exit $status (expected 2), output:"; cat bad.log; exit 1
+    fi
+}
+expect "--world missing.json: no such file .*not from -C app; the app has: app/worlds/packed.json" \
+    "$openswarm" run -C app --world missing.json
+grep -q "Building\|Built" bad.log && { echo "built before refusing a missing world"; cat bad.log; exit 1; }
+expect "--world excludes --robots|--robots excludes --world" "$openswarm" run -C app --world app/worlds/packed.json --robots 3
+expect "--world excludes --line|--line excludes --world" "$openswarm" run -C app --world app/worlds/packed.json --line 80
+expect "--out requires --world" "$openswarm" run -C app --out x
+echo "1 passed, 0 failed"
