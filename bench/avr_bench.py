@@ -260,8 +260,13 @@ def main():
     out.append("")
     out.append("Real-time factor = simulated seconds per wall-clock second on one core of the\n"
                "machine that ran the command; it varies with the machine.\n")
-    with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as f:
-        f.write("\n".join(out))
+    # bench/world_bench.py's section stays as it last wrote it.
+    page = os.path.join(ROOT, "docs", "benchmarks.md")
+    with open(page) as f:
+        kept = f.read()
+    world = kept[kept.index("<!-- world_bench: begin -->"):] if "<!-- world_bench: begin -->" in kept else ""
+    with open(page, "w") as f:
+        f.write("\n".join(out) + ("\n" + world if world else ""))
     print("\n".join(out))
 
 

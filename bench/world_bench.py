@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""World simulator speed: simulated robot-seconds per wall-clock second for
+swarms of 1, 10, 50 and 100 Kilobots in a world, with firmware that keeps
+the CPU busy, firmware as the disperse template is written (it sleeps
+between its moves) and firmware that mostly sleeps, on one thread and on
+every core. Rewrites its section of docs/benchmarks.md.
+
+    python3 bench/world_bench.py          # builds into build-bench/
+"""
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.path.join(ROOT, "build-bench")
+HOST = os.path.join(BUILD, "host")
+SIM = os.path.join(HOST, "sim", "openswarm-sim")
+TOOL = os.path.join(HOST, "cli", "openswarm")
+APPS = os.path.join(BUILD, "world")
+COMMAND = "python3 bench/world_bench.py"
+BEGIN, END = "<!-- world_bench: begin -->", "<!-- world_bench: end -->"
+SWARMS = (1, 10, 50, 100)
+SIMULATED_S = {1: 60, 10: 30, 50: 20, 100: 10}
+
+
+def run(cmd, **kw):
+    print("+", " ".join(cmd), file=sys.stderr)
+    return subprocess.run(cmd, check=True, text=True, capture_output=True, **kw)
+
+
+def app(name, source):
+    """Copy an app (a template or bench/world/NAME) and build it with the tool."""
+    where = os.path.join(APPS, name)
+    shutil.rmtree(where, ignore_errors=True)
+    if source == "template":
+        run([TOOL, "new", where, "--template", name, "--force"])
+    else:
+        shutil.copytree(source, where)
+    run([TOOL, "build", "-C", where])
+    return os.path.join(where, "build", "kilobot", os.path.basename(where) + ".elf")
+
+
+def build():
+    run(["cmake", "-S", ROOT, "-B", HOST, "-G", "Ninja", "-DOPENSWARM_TESTS=OFF",
+         "-DCMAKE_BUILD_TYPE=Release"])
+    run(["cmake", "--build", HOST, "--target", "openswarm-sim", "openswarm"])
+    return {
+        "busy": app("disperse_busy", os.path.join(ROOT, "bench", "world", "disperse_busy")),
+        "disperse": app("disperse", "template"),
+        "asleep": app("blinky", "template"),
+    }
+
+
+def world(n):
+    """n robots at random in a square that gives each about 80 x 80 mm, in
+    an arena twice as wide: the density of the disperse template's world."""
+    side = max(120, round(80 * math.sqrt(n)))
+    arena = 2 * side + 200
+    path = os.path.join(APPS, f"world_{n}.json")
+    with open(path, "w") as f:
+        json.dump({"arena": {"width_mm": arena, "height_mm": arena}, "seed": 1,
+                   "robots": [{"count": n, "region": {"x_mm": (arena - side) / 2,
+                                                      "y_mm": (arena - side) / 2,
+                                                      "width_mm": side, "height_mm": side}}]}, f)
+    return path
+
+
+def speed(elf, n, threads):
+    """Real-time factor of one run: simulated seconds per wall second."""
+    seconds = SIMULATED_S[n]
+    start = time.monotonic()
+    run([SIM, "--world", world(n), "--time", str(seconds), "--threads", str(threads), "-q",
+         "--no-progress", elf])
+    return seconds / (time.monotonic() - start)
+
+
+def table(elves, cores):
+    lines = ["| firmware | robots | 1 thread | %d threads | robot-seconds per second |" % cores,
+             "|---|---:|---:|---:|---:|"]
+    names = {
+        "busy": "busy (`bench/world/disperse_busy`: the disperse behaviour with a classic loop() that never sleeps)",
+        "disperse": "disperse template (sleeps between moves)",
+        "asleep": "blinky template (asleep between 1 ms ticks)",
+    }
+    results = {}
+    for kind, elf in elves.items():
+        for n in SWARMS:
+            one = speed(elf, n, 1)
+            many = speed(elf, n, cores) if n >= 2 * cores else one
+            best = max(one, many)
+            results[(kind, n)] = best
+            lines.append(f"| {names[kind]} | {n} | {one:.1f}x | "
+                         f"{f'{many:.1f}x' if n >= 2 * cores else '-'} | {n * best:.0f} |")
+    return lines, results
+
+
+def verdict(results):
+    busy50 = results[("busy", 50)]
+    disperse50 = results[("disperse", 50)]
+    asleep100 = results[("asleep", 100)]
+    return [
+        f"- 50 Kilobots running disperse at real time or faster: the template "
+        f"{disperse50:.1f}x, the busy classic loop {busy50:.1f}x "
+        f"({'met' if min(busy50, disperse50) >= 1 else 'not met'}).",
+        f"- 100 robots with sleeping firmware at 5x real time or faster: {asleep100:.1f}x "
+        f"({'met' if asleep100 >= 5 else 'not met'}).",
+    ]
+
+
+def write(lines):
+    path = os.path.join(ROOT, "docs", "benchmarks.md")
+    with open(path) as f:
+        page = f.read()
+    section = "\n".join([BEGIN] + lines + [END])
+    if BEGIN in page:
+        page = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda _: section, page, flags=re.S)
+    else:
+        page = page.rstrip("\n") + "\n\n" + section + "\n"
+    with open(path, "w") as f:
+        f.write(page)
+
+
+def main():
+    elves = build()
+    cores = os.cpu_count() or 1
+    rows, results = table(elves, cores)
+    lines = ["## World simulator speed", "",
+             f"`{COMMAND}` on {cores} cores: robots in a world (`--world`), placed at random",
+             "about 80 mm apart, physics every 10 ms, no outputs written. Real-time factor =",
+             "simulated seconds per wall-clock second; robot-seconds per second = robots x the",
+             "better of the two.", ""] + rows + [""] + verdict(results) + [""]
+    write(lines)
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
