@@ -28,6 +28,18 @@ static void number(FILE *f, double v, int decimals)
     fprintf(f, "%.*f", decimals, v);
 }
 
+/* "[x,y,value]", after a comma unless it is the list's first (index 0). */
+static void place(FILE *f, int index, world_point at, double value, int value_decimals)
+{
+    fputs(index ? ",[" : "[", f);
+    number(f, at.x, 1);
+    fputc(',', f);
+    number(f, at.y, 1);
+    fputc(',', f);
+    number(f, value, value_decimals);
+    fputc(']', f);
+}
+
 static void write_world(FILE *f, const world_spec *w)
 {
     fputs("{\"arena\":[", f);
@@ -49,35 +61,14 @@ static void write_world(FILE *f, const world_spec *w)
         fputc(']', f);
     }
     fputs("],\"objects\":[", f);
-    for (int i = 0; i < w->n_objects; i++) {
-        fputs(i ? ",[" : "[", f);
-        number(f, w->objects[i].at.x, 1);
-        fputc(',', f);
-        number(f, w->objects[i].at.y, 1);
-        fputc(',', f);
-        number(f, w->objects[i].radius_mm, 1);
-        fputc(']', f);
-    }
+    for (int i = 0; i < w->n_objects; i++)
+        place(f, i, w->objects[i].at, w->objects[i].radius_mm, 1);
     fputs("],\"lights\":[", f);
-    for (int i = 0; i < w->n_lights; i++) {
-        fputs(i ? ",[" : "[", f);
-        number(f, w->lights[i].at.x, 1);
-        fputc(',', f);
-        number(f, w->lights[i].at.y, 1);
-        fputc(',', f);
-        number(f, w->lights[i].intensity_mv, 1);
-        fputc(']', f);
-    }
+    for (int i = 0; i < w->n_lights; i++)
+        place(f, i, w->lights[i].at, w->lights[i].intensity_mv, 1);
     fprintf(f, "],\"robots\":%d,\"start\":[", w->n_robots);
-    for (int i = 0; i < w->n_robots; i++) {
-        fputs(i ? ",[" : "[", f);
-        number(f, w->robots[i].at.x, 1);
-        fputc(',', f);
-        number(f, w->robots[i].at.y, 1);
-        fputc(',', f);
-        number(f, w->robots[i].heading_deg, 0);
-        fputc(']', f);
-    }
+    for (int i = 0; i < w->n_robots; i++)
+        place(f, i, w->robots[i].at, w->robots[i].heading_deg, 0);
     fputc(']', f);
 }
 
