@@ -3,15 +3,18 @@
  *
  * With several threads, thread t runs robots t, t + T, t + 2T, ... (robots
  * next to each other by index are often alike, so interleaving spreads the
- * busy ones). A window is a few microseconds of work, too short to sleep
- * and be woken by the kernel: the threads wait for each other by spinning
- * on two counters, and yield the core after a while in case it is shared. */
+ * busy ones). A window is a few microseconds of work: a thread waiting for
+ * the others spins on a counter a little while first, then sleeps on it
+ * (a futex), so threads sharing their cores with other work do not burn
+ * them: spinning alone made two threads slower than one on a busy machine. */
 #include "lockstep.h"
 
+#include <limits.h>
+#include <linux/futex.h>
 #include <pthread.h>
-#include <sched.h>
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <sim_cycle_timers.h>
@@ -19,7 +22,7 @@
 /* Robots a thread gets at least by default: fewer and the waiting costs
  * more than the sharing gains. */
 #define ROBOTS_PER_THREAD 16
-#define SPINS_BEFORE_YIELD 2000
+#define SPINS_BEFORE_SLEEP 500
 
 static robot *robots;
 static int n_robots;
@@ -32,6 +35,8 @@ static atomic_uint generation; /* a new window; the workers start it */
 static atomic_int pending;     /* workers still in the window */
 static atomic_int any_running; /* a robot has not stopped */
 static atomic_int stopping;
+static atomic_int workers_asleep; /* on generation */
+static atomic_int main_asleep;    /* on pending */
 static avr_cycle_count_t window_end;
 
 int robot_finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
@@ -117,21 +122,63 @@ static int run_share(int t) {
     return all_stopped;
 }
 
-static void wait_while(atomic_uint *value, unsigned seen) {
-    for (int spins = 0; atomic_load_explicit(value, memory_order_acquire) == seen; spins++)
-        if (spins >= SPINS_BEFORE_YIELD) sched_yield();
+static void futex_wait(void *word, int value) {
+    syscall(SYS_futex, word, FUTEX_WAIT_PRIVATE, value, NULL, NULL, 0);
+}
+
+static void futex_wake(void *word) { syscall(SYS_futex, word, FUTEX_WAKE_PRIVATE, INT_MAX, NULL, NULL, 0); }
+
+static void spin_once(void) {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+/* Until the main thread starts a new window (or stops). */
+static unsigned wait_for_window(unsigned seen) {
+    unsigned now;
+    for (int spins = 0; (now = atomic_load(&generation)) == seen; spins++) {
+        if (spins < SPINS_BEFORE_SLEEP) {
+            spin_once();
+            continue;
+        }
+        atomic_fetch_add(&workers_asleep, 1);
+        if (atomic_load(&generation) == seen) futex_wait(&generation, (int)seen);
+        atomic_fetch_sub(&workers_asleep, 1);
+        spins = 0;
+    }
+    return now;
 }
 
 static void *worker(void *arg) {
     int t = (int)(intptr_t)arg;
     unsigned seen = 0;
     for (;;) {
-        wait_while(&generation, seen);
-        seen = atomic_load_explicit(&generation, memory_order_acquire);
+        seen = wait_for_window(seen);
         if (atomic_load(&stopping)) return NULL;
         if (!run_share(t)) atomic_store_explicit(&any_running, 1, memory_order_relaxed);
-        atomic_fetch_sub_explicit(&pending, 1, memory_order_acq_rel);
+        if (atomic_fetch_sub(&pending, 1) == 1 && atomic_load(&main_asleep)) futex_wake(&pending);
     }
+}
+
+/* Until every worker has finished the window. */
+static void wait_for_workers(void) {
+    int left;
+    for (int spins = 0; (left = atomic_load(&pending)) != 0; spins++) {
+        if (spins < SPINS_BEFORE_SLEEP) {
+            spin_once();
+            continue;
+        }
+        atomic_store(&main_asleep, 1);
+        if ((left = atomic_load(&pending)) != 0) futex_wait(&pending, left);
+        atomic_store(&main_asleep, 0);
+        spins = 0;
+    }
+}
+
+static void start_window(void) {
+    atomic_fetch_add(&generation, 1);
+    if (atomic_load(&workers_asleep) > 0) futex_wake(&generation);
 }
 
 static int threads_for(int requested, int n) {
@@ -164,18 +211,17 @@ int lockstep_window(avr_cycle_count_t end) {
     window_end = end;
     if (n_threads == 1) return run_share(0);
     atomic_store_explicit(&any_running, 0, memory_order_relaxed);
-    atomic_store_explicit(&pending, n_threads - 1, memory_order_relaxed);
-    atomic_fetch_add_explicit(&generation, 1, memory_order_release);
+    atomic_store(&pending, n_threads - 1);
+    start_window();
     int mine_stopped = run_share(0);
-    for (int spins = 0; atomic_load_explicit(&pending, memory_order_acquire) != 0; spins++)
-        if (spins >= SPINS_BEFORE_YIELD) sched_yield();
+    wait_for_workers();
     return mine_stopped && !atomic_load_explicit(&any_running, memory_order_relaxed);
 }
 
 void lockstep_end(void) {
     if (n_threads == 1) return;
     atomic_store(&stopping, 1);
-    atomic_fetch_add_explicit(&generation, 1, memory_order_release);
+    start_window();
     for (int t = 1; t < n_threads; t++) pthread_join(workers[t], NULL);
     free(workers);
 }

@@ -1,0 +1,30 @@
+#!/usr/bin/env python3
+"""A hundred robots in one IR range, all talking (the disperse template):
+the run ends normally and the robots hear their neighbours closer than
+60 mm (the LED turns red). The channel is about 90% busy (100 senders, two
+4.4 ms frames a second each), so a few robots may hear none of theirs
+within 3 s: 95 of 100 must. check_swarm.py SIM ELF WORLD OUT"""
+import csv
+import subprocess
+import sys
+
+sim, elf, world, out = sys.argv[1:5]
+done = subprocess.run([sim, "--world", world, "--out", out, "--threads", "1", elf],
+                      capture_output=True, text=True, timeout=240)
+checks = {"the run ends normally": done.returncode == 0}
+red, robots = set(), set()
+with open(f"{out}/trajectories.csv") as f:
+    for row in csv.DictReader(f):
+        robots.add(row["robot"])
+        if row["led_r"] == "3" and row["led_g"] == "0":
+            red.add(row["robot"])
+checks["100 robots in the trajectories"] = len(robots) == 100
+checks[f"at least 95 robots heard a close neighbour ({len(red)})"] = len(red) >= 95
+for what, ok in checks.items():
+    print(("ok   " if ok else "FAIL ") + what)
+if not all(checks.values()):
+    print(done.stderr[-2000:])
+    print(f"robots never red: {sorted(robots - red, key=int)}")
+failed = sum(not ok for ok in checks.values())
+print(f"{len(checks) - failed} passed, {failed} failed")
+sys.exit(1 if failed else 0)
