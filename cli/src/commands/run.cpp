@@ -174,7 +174,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                                 "world's duration_s)")
                     ->capture_default_str();
     auto robots = cmd->add_option("-n,--robots", o->robots, "robots running the app together")
-        ->check(CLI::Range(1, 64))->capture_default_str();
+        ->check(CLI::Range(1, 10000))->capture_default_str();
     auto distance =
         cmd->add_option("-d,--distance", o->distance, "millimetres between every two robots")
             ->check(CLI::Range(10, 1000))->capture_default_str();
