@@ -182,7 +182,7 @@ int main(int argc, char **argv) {
     }
     if (csv != NULL) fclose(csv);
     if (o.profile) profile_print(o.robots);
-    int written = o.world != NULL ? world_run_finish(o.seconds) : 0;
+    int written = o.world != NULL ? world_run_finish() : 0;
     int status = report(o.robots, &o);
     return status == 0 && written != 0 ? EXIT_USAGE : status;
 }

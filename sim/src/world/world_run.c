@@ -27,6 +27,7 @@ static int n_robots;
 static avr_cycle_count_t step_cycles, next_step;
 static double next_sample_s;
 static int recording;
+static int sample_failed; /* a sample could not be written (reported) */
 static output_robot *poses;
 static world_point *object_centres;
 static output_link *links;
@@ -231,15 +232,15 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
         next_step += step_cycles;
         observe();
         if (recording && t + 1e-9 >= next_sample_s) {
-            sample(t);
+            if (sample(t) != 0) sample_failed = 1;
             next_sample_s += spec.sample_period_s;
         }
     }
 }
 
-int world_run_finish(double seconds) {
-    (void)seconds;
+int world_run_finish(void) {
     int status = recording ? output_close() : 0;
+    if (sample_failed) status = -1;
     world_destroy(physics);
     world_spec_free(&spec);
     return status;

@@ -22,6 +22,6 @@ int world_run_start(robot *robots, int n, const options *o);
  * step the physics when a step is due. */
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz);
 /* The last sample, the outputs closed; -1 if writing them failed. */
-int world_run_finish(double seconds);
+int world_run_finish(void);
 
 #endif
