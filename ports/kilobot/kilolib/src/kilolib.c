@@ -11,6 +11,18 @@
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
 
+/* KILOLIB_IDLE_LOOP 1 (openswarm.json: "kernel": {"kilolib_idle_loop":
+ * true}): a call of loop() during which kilo_ticks did not advance is
+ * followed by a wait until the next kilo tick or message, asleep, instead
+ * of calling loop() again at once. Programs that look only at kilo_ticks,
+ * messages and what they set behave as before and the robot sleeps (in
+ * the simulator a swarm of them runs about five times faster); a loop()
+ * that counts its own calls as a clock, or polls a sensor for a change
+ * faster than a tick (32 ms), runs differently: hence off by default. */
+#ifndef KILOLIB_IDLE_LOOP
+#define KILOLIB_IDLE_LOOP 0
+#endif
+
 /* The transmitter thread only sleeps and transmits: the program's
  * callbacks run on the system stack (see transmitter). */
 #ifndef KILOLIB_TX_STACK
@@ -95,7 +107,12 @@ void kilolib_program(void *arg) {
         user_setup();
         setup_done = true;
     }
-    for (;;) user_loop();
+    for (;;) {
+        uint32_t ticks = kilo_ticks_now();
+        user_loop();
+        if (KILOLIB_IDLE_LOOP && kilo_ticks_now() == ticks)
+            Sys_Wait_for_Event_Timeout(KILOBOT_EVENT_IR_RX, ms_to_next_kilo_tick(), 0, 0, 0);
+    }
 }
 
 /* Messages from other robots reach kilo_message_rx; the overhead
