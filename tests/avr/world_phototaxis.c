@@ -1,18 +1,23 @@
 /* Phototaxis for the world's behaviour tests (tests/world/check_phototaxis.py):
- * run and tumble up the light. The robot walks straight for WALK_MS and
- * compares the light at the end with the light at the start; while it grows
- * by more than RISE it keeps walking, otherwise it turns on the spot, a
- * random way and for a random time (about 20 to 70 degrees), and walks
- * again. Only readings taken while walking are compared: the light sensor
- * sits behind the robot's centre, so turning on the spot changes the
- * reading too, the wrong way (facing away from a lamp puts the sensor
- * nearest to it). The LED is green while it walks up the light, red while
- * it turns. */
+ * walk while the light grows, turn while it does not. The robot walks
+ * straight for WALK_MS and compares the light at the end with the light at
+ * the start. While it grew by more than RISE, and by two thirds or more of
+ * what it grew in the walk before (a shrinking rise says the lamp is
+ * swinging to one side), the robot keeps walking (LED green). Otherwise it
+ * turns on the spot by a random 45 to 90 degrees, always the same way (its
+ * own, drawn at the start), and walks again (LED red if the light fell,
+ * blue if it stayed level): a few turns find the heading where it rises,
+ * and where it is level everywhere (in the dark, or right under the lamp)
+ * the robot walks in small loops and stays near. Only readings taken while
+ * walking are compared: the light sensor sits behind the robot's centre, so
+ * turning on the spot changes the reading too, the wrong way (facing away
+ * from a lamp puts the sensor nearest to it). */
 #include <kilolib.h>
 
 #define SAMPLES 16       /* readings averaged: the ADC's noise is about 1 count */
-#define RISE (SAMPLES * 3 / 2) /* 1.5 counts, in sums of SAMPLES readings */
-#define WALK_MS 2000
+#define RISE SAMPLES    /* 1 count (3.2 mV), in sums of SAMPLES readings */
+#define WALK_MS 3000
+#define TURN_MS_PER_DEG 22 /* at about 45 deg/s */
 
 /* The sum of SAMPLES readings; a reading lost to the IR receiver (-1) is
  * taken again. */
@@ -33,9 +38,12 @@ static void walk(void) {
 }
 
 static int16_t before;
+static int16_t last_rise; /* in the walk before, 0 after a turn */
+static uint8_t left;      /* which way it turns */
 
 void setup(void) {
     rand_seed(rand_hard());
+    left = rand_soft() & 1;
     walk();
     before = light();
 }
@@ -43,17 +51,19 @@ void setup(void) {
 void loop(void) {
     delay(WALK_MS);
     int16_t now = light();
-    if (now - before > RISE) {
+    int16_t change = now - before;
+    if (change > RISE && 3 * change >= 2 * last_rise) {
         set_color(RGB(0, 3, 0));
         before = now;
+        last_rise = change;
         return;
     }
-    set_color(RGB(3, 0, 0));
-    uint8_t r = rand_soft();
+    last_rise = 0;
+    set_color(change < -RISE ? RGB(3, 0, 0) : RGB(0, 0, 3));
     spinup_motors();
-    if (r & 1) set_motors(kilo_turn_left, 0);
+    if (left) set_motors(kilo_turn_left, 0);
     else set_motors(0, kilo_turn_right);
-    delay((uint16_t)(500 + 4 * (r >> 1))); /* 0.5 to 1.5 s, at about 45 deg/s */
+    delay((uint16_t)(TURN_MS_PER_DEG * (45 + (rand_soft() >> 2) * 3 / 4))); /* 45 to 92 degrees */
     walk();
     before = light();
 }
