@@ -6,8 +6,10 @@ check_gradient.py SIM ELF WORLD OUT: runs worlds/gradient.json, robots placed
 at random in a region, and checks:
   the robots stay where they were placed (the template does not move them);
   the cluster is connected over the IR range (ir.range_mm, 100 mm by
-  default) and no two robots are within 2 mm of that range (either would
-  make the world, not the program, decide the answer: pick another seed);
+  default) and no two robots are within 0.5 mm of that range (the channel
+  compares exact centre distances with it; trajectories.csv rounds to 0.01
+  mm, and a pair that close would make rounding decide the answer: pick
+  another seed);
   the hop counts from the seed (uid 1), by breadth-first search over the
   robots that are in range of each other, reach 3 or more, so every colour
   is used;
@@ -26,6 +28,7 @@ SEED_UID = 1
 COLOURS = {0: (3, 0, 0), 1: (0, 3, 0), 2: (0, 0, 3)}
 WHITE = (3, 3, 3)
 WALL_LIMIT_S = 60.0
+MARGIN_MM = 0.5
 
 
 def uids(spec):
@@ -70,10 +73,10 @@ def main():
     checks.expect(moved < 1.0, f"the {n} robots stay where they are: the most any moved is {moved:.2f} mm")
 
     close = [(i, j, math.dist(at[i], at[j])) for i in range(n) for j in range(i + 1, n)
-             if abs(math.dist(at[i], at[j]) - reach) < 2.0]
+             if abs(math.dist(at[i], at[j]) - reach) < MARGIN_MM]
     if close:
-        sys.exit(f"{world}: robots {close[0][0]} and {close[0][1]} are {close[0][2]:.1f} mm apart, within 2 mm "
-                 f"of the IR range ({reach} mm): whether they hear each other is a toss-up; choose another seed")
+        sys.exit(f"{world}: robots {close[0][0]} and {close[0][1]} are {close[0][2]:.2f} mm apart, within {MARGIN_MM} mm "
+                 f"of the IR range ({reach} mm): rounding decides whether they hear each other; choose another seed")
     seed = uids(spec).index(SEED_UID)
     hops = hops_from(seed, at, reach)
     if len(hops) < n:
