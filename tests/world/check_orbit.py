@@ -3,7 +3,8 @@
 
 check_orbit.py SIM ELF WORLD OUT: runs worlds/orbit.json, a still star (robot
 0, uid 1) sending messages and a planet (robot 1) keeping ORBIT_MM from it by
-its IR distance estimates, and checks:
+its IR distance estimates, which starts 80 mm away facing away from the star
+(it is in the band within about 5 s), and checks:
   the star stays where it is;
   after SETTLE_S the planet's centre stays within ORBIT_MM +- BAND_MM of the
   star's, and on average within +- 10 mm: the firmware walks straight only
