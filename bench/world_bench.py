@@ -7,6 +7,7 @@ every core. Rewrites its section of docs/benchmarks.md.
 
     python3 bench/world_bench.py          # builds into build-bench/
 """
+import glob
 import json
 import math
 import os
@@ -25,7 +26,7 @@ APPS = os.path.join(BUILD, "world")
 COMMAND = "python3 bench/world_bench.py"
 BEGIN, END = "<!-- world_bench: begin -->", "<!-- world_bench: end -->"
 SWARMS = (1, 10, 50, 100)
-SIMULATED_S = {1: 60, 10: 30, 50: 20, 100: 10}
+SIMULATED_S = {1: 60, 10: 30, 50: 10, 100: 5}
 
 
 def run(cmd, **kw):
@@ -39,7 +40,8 @@ def app(name, source, kernel=None):
     where = os.path.join(APPS, name)
     shutil.rmtree(where, ignore_errors=True)
     if source == "template":
-        run([TOOL, "new", where, "--template", name, "--force"])
+        os.makedirs(APPS, exist_ok=True)
+        run([TOOL, "new", name, "-C", APPS, "--template", name, "--force"])
     else:
         shutil.copytree(source, where)
     if kernel:
@@ -50,7 +52,8 @@ def app(name, source, kernel=None):
         with open(config, "w") as f:
             json.dump(settings, f, indent=2)
     run([TOOL, "build", "-C", where])
-    return os.path.join(where, "build", "kilobot", os.path.basename(where) + ".elf")
+    elves = glob.glob(os.path.join(where, "build", "kilobot", "*.elf"))
+    return elves[0]
 
 
 def build():
