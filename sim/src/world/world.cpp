@@ -131,6 +131,18 @@ void walk(Robot &r, const kilobot_twist &twist) {
     r.body->SetAwake(true);
 }
 
+/* Stops at the first fixed shape on the ray: robots and objects are low
+ * enough for IR to pass over or around, walls and obstacles are not. */
+class WallOnRay : public b2RayCastCallback {
+  public:
+    bool hit = false;
+    float ReportFixture(b2Fixture *fixture, const b2Vec2 &, const b2Vec2 &, float) override {
+        if (fixture->GetBody()->GetType() != b2_staticBody) return -1.0f; /* ignore it */
+        hit = true;
+        return 0.0f; /* one is enough */
+    }
+};
+
 }  // namespace
 
 extern "C" {
@@ -181,6 +193,14 @@ void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double 
     *y_mm = p.y * MM_PER_UNIT;
     double deg = std::fmod(body->GetAngle() * 180.0 / PI, 360.0);
     *heading_deg = deg < 0 ? deg + 360.0 : deg;
+}
+
+int world_blocks_ir(const world *w, double ax_mm, double ay_mm, double bx_mm, double by_mm) {
+    b2Vec2 a = to_units({ax_mm, ay_mm}), b = to_units({bx_mm, by_mm});
+    if ((b - a).LengthSquared() == 0.0f) return 0;
+    WallOnRay ray;
+    w->physics.RayCast(&ray, a, b);
+    return ray.hit;
 }
 
 void world_object_position(const world *w, int k, double *x_mm, double *y_mm) {

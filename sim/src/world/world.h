@@ -31,6 +31,9 @@ void world_motor_duty(world *w, int i, int side, uint8_t duty, double t);
 void world_step(world *w, double t);
 void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg);
 void world_object_position(const world *w, int k, double *x_mm, double *y_mm);
+/* 1 when a wall or an obstacle stands between two points (IR cannot pass:
+ * they are taller than a Kilobot, whose IR travels by the floor). */
+int world_blocks_ir(const world *w, double ax_mm, double ay_mm, double bx_mm, double by_mm);
 
 #ifdef __cplusplus
 }

@@ -33,6 +33,7 @@ static world_point *object_centres;
 static output_link *links;
 static int links_room;
 static int *light_mv; /* last applied to each robot's ADC7, -1 none */
+static double ir_range_mm;
 
 static void *allocate(size_t n, size_t size) {
     void *p = calloc(n ? n : 1, size);
@@ -133,9 +134,15 @@ static void motors_changed(void *ctx, int index, uint8_t left, uint8_t right, av
     world_motor_duty(physics, index, 1, right, t);
 }
 
+/* As the IR channel sees it: a wall or an obstacle between two robots in
+ * range puts them out of it. */
 static double distance_between(int a, int b, void *ctx) {
     (void)ctx;
-    return hypot(poses[a].x_mm - poses[b].x_mm, poses[a].y_mm - poses[b].y_mm);
+    const output_robot *p = &poses[a], *q = &poses[b];
+    double d = hypot(p->x_mm - q->x_mm, p->y_mm - q->y_mm);
+    if (d <= ir_range_mm && world_blocks_ir(physics, p->x_mm, p->y_mm, q->x_mm, q->y_mm))
+        return INFINITY;
+    return d;
 }
 
 /* Ambient light plus each source's, falling with the square of the
@@ -206,6 +213,7 @@ static int sample(double t) {
 int world_run_start(robot *all, int n, const options *o) {
     robots = all;
     n_robots = n;
+    ir_range_mm = o->ir_range_mm;
     poses = allocate((size_t)n, sizeof *poses);
     object_centres = allocate((size_t)spec.n_objects, sizeof *object_centres);
     light_mv = allocate((size_t)n, sizeof *light_mv);
