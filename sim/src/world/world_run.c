@@ -18,6 +18,7 @@
 #define ANALOG_NOISE_COUNTS 1.0 /* sd of a reading, ADC counts */
 #define ROOM_TEMPERATURE_MV 314   /* the ATmega328P's sensor at 25 C (datasheet) */
 #define LIGHT_REFERENCE_MM 100.0 /* a source adds its intensity at this distance */
+#define LIGHT_NEAREST_MM 10.0     /* closer, the sensor sees the source's own size */
 #define LIGHT_SENSOR_BACK_MM 15.5 /* the sensor looks up from the robot's back */
 
 static world_spec spec;
@@ -146,12 +147,13 @@ static double distance_between(int a, int b, void *ctx) {
 }
 
 /* Ambient light plus each source's, falling with the square of the
- * distance past LIGHT_REFERENCE_MM. */
+ * distance (the sensor saturates near a bright one: the input clips). */
 static double light_at(double x, double y) {
     double mv = spec.ambient_light_mv;
     for (int k = 0; k < spec.n_lights; k++) {
         double d = hypot(x - spec.lights[k].at.x, y - spec.lights[k].at.y);
-        double fall = d > LIGHT_REFERENCE_MM ? (LIGHT_REFERENCE_MM / d) * (LIGHT_REFERENCE_MM / d) : 1.0;
+        if (d < LIGHT_NEAREST_MM) d = LIGHT_NEAREST_MM;
+        double fall = (LIGHT_REFERENCE_MM / d) * (LIGHT_REFERENCE_MM / d);
         mv += spec.lights[k].intensity_mv * fall;
     }
     return mv;
