@@ -92,6 +92,11 @@ def speed(elf, n, threads):
     return seconds / (time.monotonic() - start)
 
 
+def factor(x):
+    """A real-time factor: two decimals below 1x, one above."""
+    return f"{x:.2f}x" if x < 1 else f"{x:.1f}x"
+
+
 def table(elves, cores):
     lines = ["| firmware | robots | 1 thread | %d threads | robot-seconds per second |" % cores,
              "|---|---:|---:|---:|---:|"]
@@ -108,8 +113,8 @@ def table(elves, cores):
             many = speed(elf, n, cores) if n >= 2 * cores else one
             best = max(one, many)
             results[(kind, n)] = best
-            lines.append(f"| {names[kind]} | {n} | {one:.1f}x | "
-                         f"{f'{many:.1f}x' if n >= 2 * cores else '-'} | {n * best:.0f} |")
+            lines.append(f"| {names[kind]} | {n} | {factor(one)} | "
+                         f"{factor(many) if n >= 2 * cores else '-'} | {n * best:.0f} |")
     return lines, results
 
 
@@ -120,10 +125,10 @@ def verdict(results):
     asleep100 = results[("asleep", 100)]
     return [
         f"- 50 Kilobots running disperse at real time or faster: the template "
-        f"{disperse50:.1f}x ({'met' if disperse50 >= 1 else 'not met'}); the busy classic loop "
-        f"{busy50:.1f}x ({'met' if busy50 >= 1 else 'not met'}), {idle50:.1f}x with kilolib_idle_loop "
-        f"({'met' if idle50 >= 1 else 'not met'}).",
-        f"- 100 robots with sleeping firmware at 5x real time or faster: {asleep100:.1f}x "
+        f"{factor(disperse50)} ({'met' if disperse50 >= 1 else 'not met'}); the busy classic loop "
+        f"{factor(busy50)} ({'met' if busy50 >= 1 else 'not met'}), {factor(idle50)} with "
+        f"kilolib_idle_loop ({'met' if idle50 >= 1 else 'not met'}).",
+        f"- 100 robots with sleeping firmware at 5x real time or faster: {factor(asleep100)} "
         f"({'met' if asleep100 >= 5 else 'not met'}).",
     ]
 
