@@ -267,6 +267,7 @@ void ir_channel_hand_over(uint32_t latency_cycles);
 int ir_channel_links(int sender, int *receivers, int room);
 /* ir_log.c: --ir-log, the frames on the air decoded by the wire format */
 void ir_log_enable(int robots);
+int ir_log_enabled(void);
 /* A rising flash of from's IR LED; in_range names the robots it reaches. */
 void ir_log_flash(const robot *from, avr_cycle_count_t cycle, const char *in_range);
 

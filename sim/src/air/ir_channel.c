@@ -28,7 +28,9 @@
  * 0 V, as in the dark.
  *
  * Who reaches whom is worked out again whenever the robots move
- * (ir_channel_place): a flash costs one step per receiver in range. */
+ * (ir_channel_place, after every physics step in a world), into a spare
+ * list swapped in: no allocation per step. A flash costs one step per
+ * receiver in range. */
 #include <avr_acomp.h>
 #include <avr_adc.h>
 #include <avr_ioport.h>
@@ -67,16 +69,16 @@ typedef struct ir_sent {
 
 typedef struct ir_station {
     robot *robot;
+    avr_irq_t *ain0, *high_gain, *low_gain; /* its comparator and distance inputs */
     /* As sender: the receivers in range, by index, and this window's edges. */
-    ir_link *links;
-    int n_links, links_room;
+    ir_link *links, *spare;
+    int n_links, links_room, spare_room;
     ir_sent *outbox;
     int n_out, out_room;
     avr_cycle_count_t last_flash;
     uint32_t loss_random; /* its own fixed sequence: runs lose the same frames on any thread */
-    char *in_range;    /* "1, 2" for --ir-log */
-    char *frame_reach; /* "1, 2; lost at 2" */
-    size_t text_room;
+    char *frame_reach;    /* with --ir-log: "1, 2; lost at 2" for the frame on the air */
+    int reach_room;
     /* As receiver: edges due, in time order, from head on. */
     ir_edge *queue;
     int head, tail, queue_room;
@@ -107,19 +109,14 @@ static void *grow(void *items, int *room, int needed, size_t size) {
     return bigger;
 }
 
-static void set_input(avr_t *avr, uint32_t ioctl, int irq, uint32_t millivolts) {
-    avr_raise_irq(avr_io_getirq(avr, ioctl, irq), millivolts);
-}
-
 static void apply(ir_station *s, const ir_edge *e) {
-    avr_t *avr = s->robot->avr;
     if (e->level != 0 && (s->sensed_high != e->high_gain_mv || s->sensed_low != e->low_gain_mv)) {
         s->sensed_high = e->high_gain_mv;
         s->sensed_low = e->low_gain_mv;
-        set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0, e->high_gain_mv);
-        set_input(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1, e->low_gain_mv);
+        avr_raise_irq(s->high_gain, e->high_gain_mv);
+        avr_raise_irq(s->low_gain, e->low_gain_mv);
     }
-    set_input(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, e->level);
+    avr_raise_irq(s->ain0, e->level);
 }
 
 /* The receiver's timer: every edge due by now, then wait for the next. */
@@ -142,22 +139,34 @@ static double next_random(ir_station *s) {
     return s->loss_random / 4294967296.0;
 }
 
+/* For --ir-log: "1, 2; lost at 2", the receivers the frame starting now
+ * reaches and those it is lost at. */
+static void describe_reach(ir_station *from) {
+    /* "; lost at ", then up to 7 characters a receiver in each list */
+    from->frame_reach = grow(from->frame_reach, &from->reach_room, 16 * from->n_links + 16, 1);
+    int used = 0;
+    from->frame_reach[0] = '\0';
+    for (int k = 0; k < from->n_links; k++)
+        used += sprintf(from->frame_reach + used, "%s%d", k ? ", " : "", from->links[k].to);
+    const char *sep = "; lost at ";
+    for (int k = 0; k < from->n_links; k++) {
+        if (from->links[k].lost_until == 0) continue;
+        used += sprintf(from->frame_reach + used, "%s%d", sep, from->links[k].to);
+        sep = ", ";
+    }
+}
+
 /* At a frame's start pulse, each receiver in range loses the whole frame
  * or none of it. */
 static void draw_losses(ir_station *from, avr_cycle_count_t sent) {
     int starts = from->last_flash == 0 || sent - from->last_flash > FRAME_GAP_CYCLES;
     from->last_flash = sent;
     if (!starts) return;
-    strcpy(from->frame_reach, from->in_range);
-    const char *sep = "; lost at ";
     for (int k = 0; k < from->n_links; k++) {
         ir_link *l = &from->links[k];
         l->lost_until = l->loss > 0 && next_random(from) < l->loss ? sent + FRAME_CYCLES : 0;
-        if (l->lost_until == 0) continue;
-        size_t used = strlen(from->frame_reach);
-        snprintf(from->frame_reach + used, from->text_room - used, "%s%d", sep, l->to);
-        sep = ", ";
     }
+    if (ir_log_enabled()) describe_reach(from);
 }
 
 /* The LED's pin: noted in the sender's outbox, handed over after the window. */
@@ -243,21 +252,18 @@ static uint32_t millivolts_of(const robot *r, int reading) {
     return (uint32_t)reading * r->avr->avcc / 1024u;
 }
 
-/* The receivers sender s reaches now. A receiver still in range keeps the
- * loss drawn for the frame on the air. */
+/* The receivers sender s reaches now, built in the spare list and swapped
+ * in. A receiver still in range keeps the loss drawn for the frame on the air. */
 static void link_sender(int s, ir_distance_fn distance, void *ctx) {
     ir_station *from = &stations[s];
-    ir_link *old = from->links;
-    int n_old = from->n_links, o = 0;
-    from->links = NULL;
-    from->n_links = from->links_room = 0;
-    from->in_range[0] = '\0';
+    const ir_link *old = from->links;
+    int n_old = from->n_links, o = 0, n = 0;
     for (int j = 0; j < n_stations; j++) {
         if (j == s) continue;
         double mm = distance(s, j, ctx);
         if (mm > range_mm) continue;
-        from->links = grow(from->links, &from->links_room, from->n_links + 1, sizeof(ir_link));
-        ir_link *l = &from->links[from->n_links++];
+        from->spare = grow(from->spare, &from->spare_room, n + 1, sizeof(ir_link));
+        ir_link *l = &from->spare[n++];
         const robot *to = stations[j].robot;
         l->to = j;
         l->high_gain_mv = millivolts_of(to, ir_high_gain_reading((int)lround(mm)));
@@ -265,10 +271,14 @@ static void link_sender(int s, ir_distance_fn distance, void *ctx) {
         l->loss = loss_pct / 100.0 * (mm / range_mm) * (mm / range_mm);
         while (o < n_old && old[o].to < j) o++;
         l->lost_until = o < n_old && old[o].to == j ? old[o].lost_until : 0;
-        size_t used = strlen(from->in_range);
-        snprintf(from->in_range + used, from->text_room - used, "%s%d", used ? ", " : "", j);
     }
-    free(old);
+    ir_link *was = from->links;
+    int was_room = from->links_room;
+    from->links = from->spare;
+    from->links_room = from->spare_room;
+    from->n_links = n;
+    from->spare = was;
+    from->spare_room = was_room;
 }
 
 void ir_channel_place(ir_distance_fn distance, void *ctx) {
@@ -296,17 +306,13 @@ void ir_channel_attach(robot *all, int n, int range, double loss) {
         s->robot = &all[i];
         s->loss_random = 0x2545F491u ^ (uint32_t)i * 2654435761u;
         if (s->loss_random == 0) s->loss_random = 1;
-        s->text_room = (size_t)n * 8 + 32;
-        s->in_range = calloc(s->text_room, 1);
-        s->frame_reach = calloc(s->text_room, 1);
-        if (s->in_range == NULL || s->frame_reach == NULL) {
-            fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", n);
-            exit(EXIT_CRASH);
-        }
         avr_t *avr = all[i].avr;
+        s->ain0 = avr_io_getirq(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0);
+        s->high_gain = avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0);
+        s->low_gain = avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1);
         avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
                                 tx_pin, s);
-        set_input(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1, AIN1_MV);
-        set_input(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0, 0);
+        avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1), AIN1_MV);
+        avr_raise_irq(s->ain0, 0);
     }
 }

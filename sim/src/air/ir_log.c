@@ -41,6 +41,8 @@ typedef struct air_frame {
 static air_frame *frames; /* one per robot */
 static int enabled;
 
+int ir_log_enabled(void) { return enabled; }
+
 void ir_log_enable(int robots) {
     frames = calloc((size_t)robots, sizeof *frames);
     if (frames == NULL) {

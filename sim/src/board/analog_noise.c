@@ -24,7 +24,7 @@
 #define INTERNAL_REFERENCE_MV 1100 /* the temperature sensor's */
 
 typedef struct analog_noise {
-    avr_t *avr;
+    avr_irq_t *input[CHANNELS]; /* looked up once: a conversion is a hot path */
     uint64_t rng;
     double sd_counts;
     uint32_t clean[CHANNELS]; /* each input's value without noise, millivolts */
@@ -54,8 +54,7 @@ static void converting(struct avr_irq_t *irq, uint32_t value, void *param) {
     }
     double mv = n->clean[channel] + n->sd_counts * reference / 1024.0 * world_random_normal(&n->rng);
     n->adding = 1;
-    avr_raise_irq(avr_io_getirq(n->avr, AVR_IOCTL_ADC_GETIRQ, channel),
-                  mv > 0 ? (uint32_t)lround(mv) : 0);
+    avr_raise_irq(n->input[channel], mv > 0 ? (uint32_t)lround(mv) : 0);
     n->adding = 0;
 }
 
@@ -65,11 +64,12 @@ void analog_noise_attach(robot *r, uint64_t seed, double sd_counts) {
         fprintf(stderr, "openswarm-sim: out of memory for analog noise\n");
         exit(EXIT_CRASH);
     }
-    n->avr = r->avr;
     n->rng = seed;
     n->sd_counts = sd_counts;
-    for (int c = 0; c < CHANNELS; c++)
-        avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, c), remember, n);
+    for (int c = 0; c < CHANNELS; c++) {
+        n->input[c] = avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, c);
+        avr_irq_register_notify(n->input[c], remember, n);
+    }
     avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_OUT_TRIGGER),
                             converting, n);
 }

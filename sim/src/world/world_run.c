@@ -135,13 +135,15 @@ static void motors_changed(void *ctx, int index, uint8_t left, uint8_t right, av
     world_motor_duty(physics, index, 1, right, t);
 }
 
-/* As the IR channel sees it: a wall or an obstacle between two robots in
- * range puts them out of it. */
+/* As the IR channel sees it: an obstacle between two robots in range puts
+ * them out of it. The arena's walls never stand between two robots in it,
+ * so without obstacles no ray is cast. */
 static double distance_between(int a, int b, void *ctx) {
     (void)ctx;
     const output_robot *p = &poses[a], *q = &poses[b];
     double d = hypot(p->x_mm - q->x_mm, p->y_mm - q->y_mm);
-    if (d <= ir_range_mm && world_blocks_ir(physics, p->x_mm, p->y_mm, q->x_mm, q->y_mm))
+    if (d <= ir_range_mm && spec.n_obstacles > 0 &&
+        world_blocks_ir(physics, p->x_mm, p->y_mm, q->x_mm, q->y_mm))
         return INFINITY;
     return d;
 }
