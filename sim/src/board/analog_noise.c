@@ -18,7 +18,7 @@
 #include <sim_io.h>
 
 #include "sim.h"
-#include "world/kilobot_motion.h"
+#include "world/world_random.h"
 
 #define CHANNELS (ADC_IRQ_TEMP + 1)
 #define INTERNAL_REFERENCE_MV 1100 /* the temperature sensor's */

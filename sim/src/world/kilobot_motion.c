@@ -13,22 +13,6 @@
 #define CURVE_PER_DRIVE 0.5
 #define TURN_NOISE_RAD_S 0.05 /* heading wander while walking, per s^1/2 */
 
-uint64_t world_random_next(uint64_t *state) {
-    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-double world_random_uniform(uint64_t *state) {
-    return (double)(world_random_next(state) >> 11) / 9007199254740992.0;
-}
-
-double world_random_normal(uint64_t *state) {
-    double u = world_random_uniform(state), v = world_random_uniform(state);
-    return sqrt(-2.0 * log(1.0 - u)) * cos(2.0 * PI * v);
-}
-
 static double uniform_int(uint64_t *rng, int lo, int hi) {
     return lo + (int)(world_random_uniform(rng) * (hi - lo + 1));
 }
@@ -52,9 +36,7 @@ void kilobot_motors_calibration(const kilobot_motors_model *m, int calibration[4
     calibration[3] = (int)m->straight[1];
 }
 
-void kilobot_motor_advance(kilobot_motor *motor, const kilobot_motors_model *m, int side, double t) {
-    (void)m;
-    (void)side;
+void kilobot_motor_advance(kilobot_motor *motor, double t) {
     if (!motor->running && motor->duty >= KILOBOT_SPINUP_DUTY) {
         motor->kick_s += t - motor->since_s;
         if (motor->kick_s >= KILOBOT_SPINUP_MS / 1000.0) motor->running = 1;
@@ -64,7 +46,7 @@ void kilobot_motor_advance(kilobot_motor *motor, const kilobot_motors_model *m, 
 
 void kilobot_motor_set(kilobot_motor *motor, const kilobot_motors_model *m, int side, uint8_t duty,
                        double t) {
-    kilobot_motor_advance(motor, m, side, t);
+    kilobot_motor_advance(motor, t);
     motor->duty = duty;
     if (duty < m->stall[side]) {
         motor->running = 0;

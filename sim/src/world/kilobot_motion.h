@@ -17,6 +17,8 @@
 
 #include <stdint.h>
 
+#include "world/world_random.h"
+
 #define KILOBOT_FORWARD_MM_S 10.0 /* Rubenstein et al. 2012: about 1 cm/s */
 #define KILOBOT_TURN_DEG_S 45.0   /* and about 45 deg/s turning */
 #define KILOBOT_SPINUP_DUTY 200
@@ -63,15 +65,10 @@ void kilobot_motors_calibration(const kilobot_motors_model *m, int calibration[4
 void kilobot_motor_set(kilobot_motor *motor, const kilobot_motors_model *m, int side, uint8_t duty,
                        double t);
 /* Bring a motor's spin-up up to time t (before reading it). */
-void kilobot_motor_advance(kilobot_motor *motor, const kilobot_motors_model *m, int side, double t);
+void kilobot_motor_advance(kilobot_motor *motor, double t);
 /* The motion the motors give now, noise included for a step of dt. */
 kilobot_twist kilobot_motion(const kilobot_motor motors[2], const kilobot_motors_model *m, double dt,
                              uint64_t *rng);
-
-/* Seeded random numbers (splitmix64): the same seed, the same run. */
-uint64_t world_random_next(uint64_t *state);
-double world_random_uniform(uint64_t *state); /* [0, 1) */
-double world_random_normal(uint64_t *state);  /* mean 0, sd 1 */
 
 #ifdef __cplusplus
 }

@@ -180,7 +180,7 @@ void world_motor_duty(world *w, int i, int side, uint8_t duty, double t) {
 
 void world_step(world *w, double t) {
     for (Robot &r : w->robots) {
-        for (int side = 0; side < 2; side++) kilobot_motor_advance(&r.motor[side], &r.motors, side, t);
+        for (kilobot_motor &motor : r.motor) kilobot_motor_advance(&motor, t);
         walk(r, kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng));
     }
     w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);

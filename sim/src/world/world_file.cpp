@@ -25,6 +25,7 @@
 
 #include "suggest.hpp"
 #include "world/world_spec.h"
+#include "world/world_random.h"
 
 namespace {
 
@@ -361,18 +362,11 @@ double obstacle_distance(P p, const world_obstacle &o) {
 
 /* ---- Random draws: the same on every machine ------------------------- */
 
-/* splitmix64: the standard library's distributions differ between
- * implementations, and the placement must not. */
+/* The placement's own stream (world_random.h). */
 struct Draws {
     uint64_t state;
     uint32_t seed; /* the world's, for messages */
-    double next() {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return (double)(z >> 11) * 0x1.0p-53;
-    }
+    double next() { return world_random_uniform(&state); }
 };
 
 /* Whether a suggested key shares most of its letters with the mistyped

@@ -1,0 +1,23 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* Seeded random numbers (splitmix64) for everything drawn in a world: the
+ * placement, the motors, the motion and analog noise. The standard
+ * library's distributions differ between implementations; these do not,
+ * so the same seed gives the same run on every machine. */
+#ifndef OPENSWARM_WORLD_RANDOM_H
+#define OPENSWARM_WORLD_RANDOM_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+uint64_t world_random_next(uint64_t *state);
+double world_random_uniform(uint64_t *state); /* [0, 1) */
+double world_random_normal(uint64_t *state);  /* mean 0, sd 1 */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
