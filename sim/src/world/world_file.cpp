@@ -548,6 +548,8 @@ class Reader {
     };
     std::optional<Conflict> robot_conflict(P c) const;
     std::optional<Conflict> round_conflict(P c, double r) const; /* an object's */
+    std::optional<Conflict> obstacle_conflict(P c, double r, const std::string &radius) const;
+    std::optional<Conflict> object_conflict(P c, double r, const std::string &needed) const;
     void add_robot(const world_robot &r, const Origin &o);
     static int64_t cell_key(int64_t cx, int64_t cy) { return cx * 4000037 + cy; }
 };
@@ -632,6 +634,34 @@ void Reader::obstacle(const Node &n) {
     obstacles_.push_back(o);
 }
 
+/* The first obstacle a disc at c, radius r, reaches into; `radius` says
+ * what r is ("its radius 20 mm"). */
+std::optional<Reader::Conflict> Reader::obstacle_conflict(P c, double r, const std::string &radius) const {
+    for (size_t k = 0; k < obstacles_.size(); k++) {
+        double d = obstacle_distance(c, obstacles_[k]);
+        if (d < r - EPS)
+            return Conflict{d == 0 ? "has its centre inside obstacles[" + std::to_string(k) + "]"
+                                   : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm(d) +
+                                         " mm from it, " + radius,
+                            "move it at least " + num(r) + " mm clear of the obstacle"};
+    }
+    return std::nullopt;
+}
+
+/* The first object a disc at c, radius r, overlaps; `needed` says why the
+ * centres must be that far apart ("(the radii added)"). */
+std::optional<Reader::Conflict> Reader::object_conflict(P c, double r, const std::string &needed) const {
+    for (size_t k = 0; k < objects_.size(); k++) {
+        const world_object &b = objects_[k];
+        double d = std::hypot(c.x - b.at.x, c.y - b.at.y);
+        if (d < r + b.radius_mm - EPS)
+            return Conflict{"overlaps objects[" + std::to_string(k) + "] at " + at_text(b.at.x, b.at.y) + ": centres " +
+                                mm(d) + " mm apart, at least " + num(r + b.radius_mm) + " needed " + needed,
+                            "move them apart"};
+    }
+    return std::nullopt;
+}
+
 /* Whether a round thing (an object) at c, radius r, fits: in the arena,
  * clear of obstacles and of the objects before it. */
 std::optional<Reader::Conflict> Reader::round_conflict(P c, double r) const {
@@ -639,23 +669,8 @@ std::optional<Reader::Conflict> Reader::round_conflict(P c, double r) const {
         return Conflict{"reaches past the arena's walls (x 0.." + num(w_) + ", y 0.." + num(h_) + ")",
                         "keep its centre within x " + num(r) + ".." + num(w_ - r) + " and y " + num(r) + ".." +
                             num(h_ - r)};
-    for (size_t k = 0; k < obstacles_.size(); k++) {
-        double d = obstacle_distance(c, obstacles_[k]);
-        if (d < r - EPS)
-            return Conflict{d == 0 ? "has its centre inside obstacles[" + std::to_string(k) + "]"
-                                   : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm(d) +
-                                         " mm from it, its radius " + num(r) + " mm",
-                            "move it at least " + num(r) + " mm clear of the obstacle"};
-    }
-    for (size_t k = 0; k < objects_.size(); k++) {
-        const world_object &b = objects_[k];
-        double d = std::hypot(c.x - b.at.x, c.y - b.at.y);
-        if (d < r + b.radius_mm - EPS)
-            return Conflict{"overlaps objects[" + std::to_string(k) + "] at " + at_text(b.at.x, b.at.y) + ": centres " +
-                                mm(d) + " mm apart, at least " + num(r + b.radius_mm) + " needed (the radii added)",
-                            "move them apart"};
-    }
-    return std::nullopt;
+    if (auto hit = obstacle_conflict(c, r, "its radius " + num(r) + " mm")) return hit;
+    return object_conflict(c, r, "(the radii added)");
 }
 
 void Reader::object_(const Node &n) {
@@ -712,23 +727,10 @@ std::optional<Reader::Conflict> Reader::robot_conflict(P c) const {
                                 ", a Kilobot's radius is " + num(ROBOT_R) + " mm",
                             "keep robots' centres within x " + num(ROBOT_R) + ".." + num(w_ - ROBOT_R) + " and y " +
                                 num(ROBOT_R) + ".." + num(h_ - ROBOT_R)};
-    for (size_t k = 0; k < obstacles_.size(); k++) {
-        double d = obstacle_distance(c, obstacles_[k]);
-        if (d < ROBOT_R - EPS)
-            return Conflict{d == 0 ? "has its centre inside obstacles[" + std::to_string(k) + "]"
-                                   : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm(d) +
-                                         " mm from it, a Kilobot's radius is " + num(ROBOT_R) + " mm",
-                            "move it at least " + num(ROBOT_R) + " mm clear of the obstacle"};
-    }
-    for (size_t k = 0; k < objects_.size(); k++) {
-        const world_object &b = objects_[k];
-        double d = std::hypot(c.x - b.at.x, c.y - b.at.y);
-        if (d < ROBOT_R + b.radius_mm - EPS)
-            return Conflict{"overlaps objects[" + std::to_string(k) + "] at " + at_text(b.at.x, b.at.y) + ": centres " +
-                                mm(d) + " mm apart, at least " + num(ROBOT_R + b.radius_mm) +
-                                " needed (the object's radius + a Kilobot's " + num(ROBOT_R) + ")",
-                            "move them apart"};
-    }
+    if (auto hit = obstacle_conflict(c, ROBOT_R, "a Kilobot's radius is " + num(ROBOT_R) + " mm"))
+        return hit;
+    if (auto hit = object_conflict(c, ROBOT_R, "(the object's radius + a Kilobot's " + num(ROBOT_R) + ")"))
+        return hit;
     auto cx = (int64_t)std::floor(c.x / BODY), cy = (int64_t)std::floor(c.y / BODY);
     int nearest = -1;
     double nearest_d = BODY;
