@@ -11,6 +11,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev           # the openswarm command-line tool, world.json
   libbox2d-dev libcairo2-dev               # the world: physics, pictures
   ffmpeg chromium fonts-dejavu-core        # the world: video; the viewer's browser test
+  gcc-arm-none-eabi libnewlib-arm-none-eabi # e-puck2 (STM32F407) firmware
+  qemu-system-arm gdb-multiarch             # running it under QEMU, debugging it
 )
 
 missing=()
