@@ -37,23 +37,55 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/calibration.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/status_lights.c)
 
+# The e-puck2 (STM32F407, Cortex-M4F): the CPU port, the chip's vector
+# table, and a board: qemu (QEMU's netduinoplus2, for running and testing).
+set(OPENSWARM_PORT_epuck2_SOURCES
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/port.c
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/switch.S
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/faults.c
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/fault_report.c
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/reset.c
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/text_out.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/startup/stm32f407_vectors.c)
+set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c)
+set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/qemu_netduinoplus2.ld)
+set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include)
+
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)
 set(OPENSWARM_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all
     -fno-omit-frame-pointer)
 
 function(openswarm_add_kernel target)
-  cmake_parse_arguments(K "SANITIZE" "PORT;CONFIG" "" ${ARGN})
+  cmake_parse_arguments(K "SANITIZE" "PORT;CONFIG;BOARD" "" ${ARGN})
   if(NOT K_PORT)
     message(FATAL_ERROR "openswarm_add_kernel(${target}): PORT is required (host)")
   endif()
   if(NOT DEFINED OPENSWARM_PORT_${K_PORT}_SOURCES)
-    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host, kilobot)")
+    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host, kilobot, epuck2)")
   endif()
-  add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES})
+  set(board_sources)
+  if(K_PORT STREQUAL "epuck2")
+    if(NOT K_BOARD)
+      set(K_BOARD qemu)
+    endif()
+    if(NOT DEFINED OPENSWARM_BOARD_epuck2_${K_BOARD}_SOURCES)
+      message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown BOARD '${K_BOARD}' for epuck2 (known: qemu)")
+    endif()
+    set(board_sources ${OPENSWARM_BOARD_epuck2_${K_BOARD}_SOURCES})
+  endif()
+  add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES}
+    ${board_sources})
+  if(DEFINED OPENSWARM_PORT_${K_PORT}_INCLUDES)
+    set(port_includes ${OPENSWARM_PORT_${K_PORT}_INCLUDES})
+  else()
+    set(port_includes ${OPENSWARM_ROOT}/ports/${K_PORT}/include)
+  endif()
   target_include_directories(${target} PUBLIC
-    ${OPENSWARM_ROOT}/kernel/include ${OPENSWARM_ROOT}/ports/${K_PORT}/include
-    ${OPENSWARM_ROOT}/sdk/include)
+    ${OPENSWARM_ROOT}/kernel/include ${port_includes} ${OPENSWARM_ROOT}/sdk/include)
   if(K_PORT STREQUAL "kilobot")
     target_include_directories(${target} PUBLIC ${OPENSWARM_ROOT}/ports/kilobot/kilolib/include)
   endif()
@@ -71,6 +103,19 @@ function(openswarm_add_kernel target)
     set_source_files_properties(${_c} TARGET_DIRECTORY ${target}
       PROPERTIES COMPILE_OPTIONS "-std=gnu99")
     target_compile_definitions(${target} PRIVATE OPENSWARM_MCU_NAME=${OPENSWARM_MCU})
+  elseif(K_PORT STREQUAL "epuck2")
+    set(_c ${OPENSWARM_PORT_epuck2_SOURCES} ${board_sources})
+    list(FILTER _c INCLUDE REGEX "\\.c$")
+    set_source_files_properties(${_c} TARGET_DIRECTORY ${target}
+      PROPERTIES COMPILE_OPTIONS "-std=gnu99")
+    # The image's layout, and the pieces nothing calls by name: the vector
+    # table and the fault handlers (a static library's members are linked
+    # only when referenced).
+    get_filename_component(script_dir ${OPENSWARM_BOARD_epuck2_${K_BOARD}_LINKER_SCRIPT} DIRECTORY)
+    target_link_options(${target} INTERFACE
+      -T${OPENSWARM_BOARD_epuck2_${K_BOARD}_LINKER_SCRIPT}
+      -L${OPENSWARM_ROOT}/ports/cortex_m4/ld -L${script_dir}
+      -Wl,--undefined=stm32f407_vectors -Wl,--undefined=HardFault_Handler)
   endif()
   if(K_CONFIG)
     target_compile_definitions(${target} PUBLIC "OS_CONFIG_FILE=\"${K_CONFIG}\"")

@@ -125,6 +125,13 @@ void os_thread_exit(void) {
     }
 }
 
+void os_thread_fault(uint8_t fault) {
+    port_irq_disable();
+    os_count(&os.stats.cpu_faults);
+    os_fault((sys_fault)fault, os.current->pid);
+    os_thread_exit();
+}
+
 sys_status Sys_Yield(void) {
     if (!os_in_thread()) return SYS_E_CONTEXT;
     if (os.lock_depth != 0) return SYS_E_CONTEXT;

@@ -84,6 +84,10 @@ void os_isr_exit(void);
 void os_tick(void);
 /* End the running thread (its entry function returned). Never returns. */
 void os_thread_exit(void);
+/* End the running thread because the CPU trapped in it (the port's fault
+ * handler resumed it here): fault is reported as any kernel fault and
+ * counted. Never returns. */
+void os_thread_fault(uint8_t fault);
 
 #ifdef __cplusplus
 }

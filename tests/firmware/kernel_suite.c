@@ -1,12 +1,14 @@
-/* The kernel's behaviour on the ATmega328P, as firmware run by simavr.
+/* The kernel's behaviour on a robot's CPU, as firmware: the same source
+ * runs on the Kilobot's ATmega328P under openswarm-sim (avr.kernel_suite)
+ * and on the e-puck2's Cortex-M4 under QEMU (qemu.kernel_suite).
  *
  * Each test boots a fresh kernel: setup() runs between Sys_Init_Kernel and
  * Sys_Start_Kernel and starts a control thread that exercises the kernel,
- * checks the outcome and stops the kernel. Time is the real 1 ms tick of
- * Timer0; interrupts come from Timer2. */
+ * checks the outcome and stops the kernel. Time is the port's real 1 ms
+ * tick; other interrupts come from a timer of the target (test_target.h). */
 #include "openswarm/kernel.h"
-#include "openswarm/kilobot_sim.h"
 #include "openswarm/port.h"
+#include "test_target.h"
 
 #include <string.h>
 
@@ -23,9 +25,9 @@ static void check(bool ok, uint16_t line) {
         return;
     }
     failed++;
-    sim_puts_P(PSTR("  FAIL at kernel_suite.c:"));
-    sim_put_uint(line);
-    sim_putc('\n');
+    target_puts(TEXT("  FAIL at kernel_suite.c:"));
+    target_put_uint(line);
+    target_putc('\n');
 }
 
 /* Equality with both values in the failure message. */
@@ -33,11 +35,11 @@ static void check(bool ok, uint16_t line) {
 static void check_eq(uint32_t expected, uint32_t actual, uint16_t line) {
     check(expected == actual, line);
     if (expected != actual) {
-        sim_puts_P(PSTR("    expected "));
-        sim_put_uint(expected);
-        sim_puts_P(PSTR(", got "));
-        sim_put_uint(actual);
-        sim_putc('\n');
+        target_puts(TEXT("    expected "));
+        target_put_uint(expected);
+        target_puts(TEXT(", got "));
+        target_put_uint(actual);
+        target_putc('\n');
     }
 }
 
@@ -55,25 +57,9 @@ static void start_control(sys_process_fn body) {
 
 static void finish(void) { Sys_Stop_Kernel(); }
 
-/* Timer2 fires one compare interrupt about `us` microseconds from now. */
-static volatile int16_t isr_value;
-static void interrupt_in(uint8_t us, int16_t value) {
-    isr_value = value;
-    TCCR2A = _BV(WGM21);
-    TCNT2 = 0;
-    OCR2A = us;
-    TIFR2 = _BV(OCF2A);
-    TIMSK2 = _BV(OCIE2A);
-    TCCR2B = _BV(CS21); /* 8 MHz / 8: 1 us per count */
-}
+static void interrupt_in(uint16_t us, int16_t value) { target_interrupt_in(us, value); }
 
-ISR(TIMER2_COMPA_vect) {
-    TCCR2B = 0;
-    TIMSK2 = 0;
-    os_isr_enter();
-    Sys_Send_IntEvent(EV_A, isr_value);
-    os_isr_exit();
-}
+void target_interrupt(int16_t value) { Sys_Send_IntEvent(EV_A, value); }
 
 /* ---- threads and the scheduler ---- */
 
@@ -362,8 +348,8 @@ static void on_fault(sys_fault f, sys_pid pid) {
 
 static void overflower(void *arg) {
     (void)arg;
-    volatile uint8_t big[160]; /* more than its 64 + 64 byte stack */
-    for (uint8_t i = 0; i < sizeof big; i++) big[i] = i;
+    volatile uint8_t big[64 + PORT_STACK_EXTRA + 32]; /* more than its whole stack */
+    for (uint16_t i = 0; i < sizeof big; i++) big[i] = (uint8_t)i;
     Sys_Yield();
     note('!'); /* never: the guard check kills it */
 }
@@ -405,11 +391,11 @@ static bool report_fault(sys_pid pid, sys_event_id e, const sys_event_data *d) {
     memcpy(&info, d->value, sizeof info);
     if (info.pid == expected_fault_pid) return true;
     failed++;
-    sim_puts_P(PSTR("  FAULT "));
-    sim_put_uint(info.fault);
-    sim_puts_P(PSTR(" in pid "));
-    sim_put_uint(info.pid);
-    sim_putc('\n');
+    target_puts(TEXT("  FAULT "));
+    target_put_uint(info.fault);
+    target_puts(TEXT(" in pid "));
+    target_put_uint(info.pid);
+    target_putc('\n');
     finish();
     return true;
 }
@@ -429,14 +415,15 @@ static void run(const char *name, void (*setup)(void)) {
     setup();
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
-    sim_puts_P(failed == failed_before ? PSTR("ok   ") : PSTR("FAIL "));
-    sim_puts_P(name);
-    sim_putc('\n');
+    target_puts(failed == failed_before ? TEXT("ok   ") : TEXT("FAIL "));
+    target_puts(name);
+    target_putc('\n');
 }
 
-#define RUN(name) run(PSTR(#name), name##_setup)
+#define RUN(name) run(TEXT(#name), name##_setup)
 
 int main(void) {
+    target_init();
     RUN(yield);
     RUN(preempt);
     RUN(reap);
@@ -447,9 +434,9 @@ int main(void) {
     RUN(critical);
     RUN(pools);
     RUN(fault);
-    sim_put_uint(passed);
-    sim_puts_P(PSTR(" passed, "));
-    sim_put_uint(failed);
-    sim_puts_P(PSTR(" failed\n"));
-    sim_exit(failed == 0 ? 0 : 1);
+    target_put_uint(passed);
+    target_puts(TEXT(" passed, "));
+    target_put_uint(failed);
+    target_puts(TEXT(" failed\n"));
+    target_exit(failed == 0 ? 0 : 1);
 }
