@@ -64,7 +64,8 @@ static OS_HOT bool hold(sys_event_id event, os_event_slot *slot, const void *dat
 static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, uint8_t size) {
     uint8_t record = (uint8_t)(HEADER_BYTES + size);
     uint8_t used = os.queued_bytes;
-    if (record > (uint8_t)(QUEUE_BYTES - used)) {
+    uint8_t room = (uint8_t)(QUEUE_BYTES - used); /* a variable: with 255 bytes, GCC sees ~used */
+    if (record > room) {
         os_count(&os.stats.event_queue_full);
         return SYS_E_QUEUE_FULL;
     }
