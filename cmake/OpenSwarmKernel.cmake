@@ -45,14 +45,17 @@ set(OPENSWARM_PORT_epuck2_SOURCES
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/faults.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/fault_report.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/reset.c
-    ${OPENSWARM_ROOT}/ports/cortex_m4/src/text_out.c
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/console_print.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/startup/stm32f407_vectors.c)
 set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
-    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c)
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_record.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/devices_qemu.c)
 set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/qemu_netduinoplus2.ld)
-set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include)
+set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/include)
 
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)
@@ -112,7 +115,10 @@ function(openswarm_add_kernel target)
     # table and the fault handlers (a static library's members are linked
     # only when referenced).
     get_filename_component(script_dir ${OPENSWARM_BOARD_epuck2_${K_BOARD}_LINKER_SCRIPT} DIRECTORY)
+    # newlib-nano's C library (memcpy, strcmp, ...) and none of its start
+    # files or system calls: no heap, no files.
     target_link_options(${target} INTERFACE
+      -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 --specs=nano.specs -nostartfiles
       -T${OPENSWARM_BOARD_epuck2_${K_BOARD}_LINKER_SCRIPT}
       -L${OPENSWARM_ROOT}/ports/cortex_m4/ld -L${script_dir}
       -Wl,--undefined=stm32f407_vectors -Wl,--undefined=HardFault_Handler)

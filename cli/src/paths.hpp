@@ -13,9 +13,6 @@ struct Paths {
     std::filesystem::path simulator; // openswarm-sim
     std::filesystem::path templates() const { return root / "templates"; }
     std::filesystem::path sdk_cmake() const { return root / "sdk" / "cmake"; }
-    std::filesystem::path toolchain(const std::string &port) const {
-        return root / "ports" / port / "cmake" / "avr-gcc.cmake";
-    }
 };
 
 // Throws std::runtime_error saying what is missing and what to do.

@@ -36,7 +36,19 @@ const std::vector<PortInfo> &ports() {
         // kilolib's calls (1 byte); kilobot.h, port_arch.h, port_config.h,
         // kilolib_internal.h.
         {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 32768, 2048, 10, 6 + 4 * 17 + 3 * 2 + 1,
-         4, 14, 96, 16, {kilolib()}},
+         4, 14, 96, 16, {kilolib()}, "avr-gcc",
+         "sudo apt-get install gcc-avr avr-libc binutils-avr (or run OpenSwarm's ./setup.sh)",
+         "ports/kilobot/cmake/avr-gcc.cmake", "avr-size", Runner::simavr},
+        // The kernel's two events (6 bytes) and the board's 16 ids
+        // (PORT_EVENT_COUNT in ports/cortex_m4's port_arch.h), of which
+        // robot_devices_init registers the status light's (at
+        // OS_CFG_HAL_MAX_VALUE, 36 bytes); flash after the e-puck2's 128 KB
+        // bootloader; RAM: SRAM1+2 (the image leaves CCM unused).
+        {"epuck2", "e-puck2: STM32F407 (Cortex-M4F at 168 MHz), run in QEMU (netduinoplus2)",
+         1024 * 1024 - 128 * 1024, 128 * 1024, 2 + 16, 6 + 36, 16, 48, 1024, 64, {}, "arm-none-eabi-gcc",
+         "sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi (or run OpenSwarm's "
+         "./setup.sh)",
+         "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu},
     };
     return all;
 }

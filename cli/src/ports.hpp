@@ -24,6 +24,9 @@ struct PortLibrary {
 // Those of a port's libraries that one app uses.
 using Libraries = std::vector<const PortLibrary *>;
 
+// What runs a port's images: openswarm-sim (simavr, cycle-exact), QEMU.
+enum class Runner { simavr, qemu };
+
 struct PortInfo {
     std::string name;
     std::string description;
@@ -35,6 +38,12 @@ struct PortInfo {
     unsigned device_event_bytes; // their data
     unsigned default_max_threads, default_max_events, default_stack, stack_block;
     std::vector<PortLibrary> libraries;
+    // How its images are built and run.
+    std::string compiler;  // the program its CMake toolchain file needs on PATH
+    std::string install;   // how to get the compiler, for errors and doctor
+    std::string toolchain; // the CMake toolchain file, relative to OpenSwarm's root
+    std::string size_tool; // reads an image's section sizes (-A)
+    Runner runner;
 };
 
 // A processor a device can use, as openswarm.json names it, and what the

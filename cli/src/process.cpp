@@ -1,6 +1,9 @@
 #include "process.hpp"
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +13,21 @@ namespace {
 
 // Where the child's standard output (and error) go.
 enum class Streams { inherit, stdout_to_stderr, capture_stdout, capture_both };
+
+[[noreturn]] void exec_child(const std::vector<std::string> &argv) {
+    std::vector<char *> args;
+    for (const auto &a : argv) args.push_back(const_cast<char *>(a.c_str()));
+    args.push_back(nullptr);
+    execvp(args[0], args.data());
+    std::fprintf(stderr, "openswarm: cannot run %s\n", args[0]);
+    _exit(127);
+}
+
+int exit_status_of(pid_t pid) {
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0) return 127;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
 
 int run(const std::vector<std::string> &argv, Streams streams, std::string *output) {
     int pipefd[2] = {-1, -1};
@@ -25,12 +43,7 @@ int run(const std::vector<std::string> &argv, Streams streams, std::string *outp
             close(pipefd[0]);
             close(pipefd[1]);
         }
-        std::vector<char *> args;
-        for (const auto &a : argv) args.push_back(const_cast<char *>(a.c_str()));
-        args.push_back(nullptr);
-        execvp(args[0], args.data());
-        std::fprintf(stderr, "openswarm: cannot run %s\n", args[0]);
-        _exit(127);
+        exec_child(argv);
     }
     if (output != nullptr) {
         close(pipefd[1]);
@@ -39,9 +52,7 @@ int run(const std::vector<std::string> &argv, Streams streams, std::string *outp
         while ((n = read(pipefd[0], buf, sizeof buf)) > 0) output->append(buf, (size_t)n);
         close(pipefd[0]);
     }
-    int status = 0;
-    if (waitpid(pid, &status, 0) < 0) return 127;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return exit_status_of(pid);
 }
 
 }  // namespace
@@ -60,6 +71,53 @@ int capture_program(const std::vector<std::string> &argv, std::string &output) {
 
 int capture_program_and_errors(const std::vector<std::string> &argv, std::string &output) {
     return run(argv, Streams::capture_both, &output);
+}
+
+int run_program_lines(const std::vector<std::string> &argv,
+                      const std::function<void(const std::string &)> &on_line,
+                      double timeout_seconds) {
+    int pipefd[2];
+    if (pipe(pipefd) != 0) return 127;
+    std::fflush(stdout);
+    pid_t pid = fork();
+    if (pid < 0) return 127;
+    if (pid == 0) {
+        dup2(pipefd[1], STDOUT_FILENO);
+        close(pipefd[0]);
+        close(pipefd[1]);
+        exec_child(argv);
+    }
+    close(pipefd[1]);
+    using clock = std::chrono::steady_clock;
+    const auto deadline = clock::now() + std::chrono::duration<double>(timeout_seconds);
+    std::string pending;
+    bool timed_out = false;
+    for (;;) {
+        int wait_ms = -1;
+        if (timeout_seconds > 0) {
+            auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - clock::now());
+            if (left.count() <= 0) {
+                timed_out = true;
+                break;
+            }
+            wait_ms = (int)left.count();
+        }
+        struct pollfd p = {pipefd[0], POLLIN, 0};
+        if (poll(&p, 1, wait_ms) == 0) continue;
+        char buf[4096];
+        ssize_t n = read(pipefd[0], buf, sizeof buf);
+        if (n <= 0) break;
+        pending.append(buf, (size_t)n);
+        for (size_t end; (end = pending.find('\n')) != std::string::npos;) {
+            on_line(pending.substr(0, end));
+            pending.erase(0, end + 1);
+        }
+    }
+    if (!pending.empty() && !timed_out) on_line(pending);
+    if (timed_out) kill(pid, SIGKILL);
+    close(pipefd[0]);
+    int status = exit_status_of(pid);
+    return timed_out ? 124 : status;
 }
 
 }  // namespace openswarm

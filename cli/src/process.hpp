@@ -1,6 +1,7 @@
 // Running the programs the tool drives (cmake, the simulator).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,12 @@ int capture_program(const std::vector<std::string> &argv, std::string &output);
 // Run it and capture its standard output and error together: a step whose
 // failure the tool explains itself, rather than showing the tool's noise.
 int capture_program_and_errors(const std::vector<std::string> &argv, std::string &output);
+
+// Run it, handing each line of its standard output (without the newline)
+// to on_line as it comes; its standard error goes to ours. After
+// timeout_seconds (0: never) it is killed and 124 returned.
+int run_program_lines(const std::vector<std::string> &argv,
+                      const std::function<void(const std::string &)> &on_line,
+                      double timeout_seconds);
 
 }  // namespace openswarm

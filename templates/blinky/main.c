@@ -3,7 +3,7 @@
  * openswarm.json declares the thread and the event: `openswarm build`
  * turns it into openswarm_app.h (EV_BLINK) and openswarm_app_start(). */
 #include "openswarm/kernel.h"
-#include "openswarm/kilobot.h"
+#include "openswarm/robot.h"
 #include "openswarm_app.h"
 
 static uint16_t blinks;
@@ -18,19 +18,19 @@ static bool count_blink(sys_pid pid, sys_event_id event, const sys_event_data *d
 
 void blinker(void) {
     for (;;) {
-        uint8_t colour = KILOBOT_RGB(0, 3, 0);
-        Sys_Send_Event(KILOBOT_EVENT_LED, &colour, 1);
+        uint8_t colour = ROBOT_RGB(0, 3, 0);
+        Sys_Send_Event(ROBOT_EVENT_LED, &colour, 1);
         Sys_Send_Event(EV_BLINK, NULL, 0);
         Sys_Sleep(250);
-        colour = KILOBOT_RGB(0, 0, 0);
-        Sys_Send_Event(KILOBOT_EVENT_LED, &colour, 1);
+        colour = ROBOT_RGB(0, 0, 0);
+        Sys_Send_Event(ROBOT_EVENT_LED, &colour, 1);
         Sys_Sleep(250);
     }
 }
 
 int main(void) {
     Sys_Init_Kernel();
-    kilobot_devices_init();
+    robot_devices_init();
     openswarm_app_start();
     Sys_Subscribe_to_Event(EV_BLINK, SYS_PID_SYSTEM, count_blink, NULL);
     Sys_Start_Kernel();

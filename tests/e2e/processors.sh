@@ -15,8 +15,8 @@ cat > guarded/openswarm.json <<'JSON'
 JSON
 # The app asks for full power and keeps it; the safety processor does not.
 sed -i 's|static void app_thread(void) {|static void app_thread(void) {\n    kilobot_motors full = {255, 255};\n    Sys_Send_Event(KILOBOT_EVENT_MOTORS, \&full, sizeof full);|' guarded/main.c
-sed -i 's|    kilobot_devices_init();|    kilobot_devices_init();\n    openswarm_app_start();|' guarded/main.c
-sed -i 's|#include "openswarm/kilobot.h"|#include "openswarm/kilobot.h"\n#include "openswarm_app.h"|' guarded/main.c
+sed -i 's|    robot_devices_init();|    robot_devices_init();\n    openswarm_app_start();|' guarded/main.c
+sed -i 's|#include "openswarm/robot.h"|#include "openswarm/robot.h"\n#include "openswarm/kilobot.h"\n#include "openswarm_app.h"|' guarded/main.c
 rm guarded/tests/*.trace
 cat > guarded/tests/capped.trace <<'TRACE'
 # run: --time 0.3

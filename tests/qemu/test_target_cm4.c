@@ -11,8 +11,6 @@
 
 #include "openswarm/cortex_m4.h"
 
-#include <string.h>
-
 #define TIM2_BASE 0x40000000u
 #define TIM_REG(offset) (*(volatile uint32_t *)(TIM2_BASE + (offset)))
 #define TIM_CR1 TIM_REG(0x00u)
@@ -37,18 +35,10 @@ void target_init(void) {
     cortex_m4_irq_enable(TIM2_IRQ, CORTEX_M4_PRIORITY_DEVICE);
 }
 
-void target_puts(const char *text) { board_console_write(text, (uint32_t)strlen(text)); }
+void target_puts(const char *text) { cortex_m4_print(text); }
 void target_putc(char c) { board_console_write(&c, 1); }
 
-void target_put_uint(uint32_t value) {
-    char digits[10];
-    unsigned n = 0;
-    do {
-        digits[sizeof digits - 1 - n++] = (char)('0' + value % 10u);
-        value /= 10u;
-    } while (value != 0);
-    board_console_write(&digits[sizeof digits - n], n);
-}
+void target_put_uint(uint32_t value) { cortex_m4_print_uint(value); }
 
 void target_exit(uint8_t status) { board_halt(status); }
 

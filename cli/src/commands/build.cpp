@@ -20,21 +20,18 @@ namespace openswarm {
 
 namespace {
 
-bool toolchain_present(const std::string &port) {
-    if (port != "kilobot") return true;
-    if (find_program("avr-gcc")) return true;
-    report("avr-gcc was not found, and the kilobot port needs it: install it with\n"
-           "    sudo apt-get install gcc-avr avr-libc binutils-avr\n"
-           "(or run OpenSwarm's ./setup.sh)");
+bool toolchain_present(const PortInfo &port) {
+    if (find_program(port.compiler)) return true;
+    report(port.compiler + " was not found, and the " + port.name + " port needs it: " + port.install);
     return false;
 }
 
-// Flash (.text + .data) and RAM (.data + .bss + .noinit) of an AVR image,
-// by section: avr-size's totals would count the .mmcu record, which the
-// simulator reads and the robot never gets.
-bool image_size(const fs::path &image, unsigned &flash, unsigned &ram) {
+// Flash (.text + .data, and the ARM unwind index) and RAM (.data + .bss +
+// .noinit) of an image, by section: avr-size's totals would count the
+// .mmcu record, which the simulator reads and the robot never gets.
+bool image_size(const PortInfo &port, const fs::path &image, unsigned &flash, unsigned &ram) {
     std::string out;
-    if (capture_program({"avr-size", "-A", image.string()}, out) != 0) return false;
+    if (capture_program({port.size_tool, "-A", image.string()}, out) != 0) return false;
     std::istringstream lines(out);
     std::string line;
     unsigned text = 0, data = 0, bss = 0;
@@ -44,7 +41,8 @@ bool image_size(const fs::path &image, unsigned &flash, unsigned &ram) {
         std::string section;
         unsigned size = 0;
         if (!(fields >> section >> size)) continue;
-        if (section == ".text") text = size, found = true;
+        if (section == ".text") text += size, found = true;
+        if (section == ".ARM.exidx") text += size;
         if (section == ".data") data = size;
         if (section == ".bss" || section == ".noinit") bss += size;
     }
@@ -146,8 +144,7 @@ std::vector<std::string> configure_command(const Paths &paths, const fs::path &d
                                           "-DOPENSWARM_GENERATED_DIR=" +
                                               fs::absolute(generated_dir(dir, port)).string()};
     if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
-    if (port == "kilobot")
-        configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + paths.toolchain(port).string());
+    configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + (paths.root / port_info(port).toolchain).string());
     return configure;
 }
 
@@ -175,7 +172,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     bool have_cmake = find_program("cmake").has_value();
     if (!have_cmake) report("cmake was not found: sudo apt-get install cmake");
-    if (!have_cmake || !toolchain_present(port)) {
+    if (!have_cmake || !toolchain_present(port_info(port))) {
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
@@ -209,9 +206,10 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     BuildResult result;
     result.port = port;
-    result.image = build_dir / (config.name + (port == "kilobot" ? ".elf" : ""));
-    if (port == "kilobot" && !image_size(result.image, result.flash, result.ram)) {
-        report("cannot read the size of " + result.image.string() + " with avr-size");
+    result.image = build_dir / (config.name + ".elf");
+    const PortInfo &info = port_info(port);
+    if (!image_size(info, result.image, result.flash, result.ram)) {
+        report("cannot read the size of " + result.image.string() + " with " + info.size_tool);
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }

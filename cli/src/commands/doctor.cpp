@@ -22,6 +22,8 @@ struct Check {
 std::vector<Check> optional_checks() {
     return {
         {"ffmpeg (openswarm run --world --video)", find_program("ffmpeg").has_value(), "ffmpeg"},
+        {"gdb-multiarch (openswarm run --gdb, epuck2)", find_program("gdb-multiarch").has_value(),
+         "gdb-multiarch"},
         {"chromium (the world viewer's browser test)",
          find_program("chromium").has_value() || find_program("chromium-browser").has_value(),
          "chromium"},
@@ -35,6 +37,12 @@ std::vector<Check> checks(const Paths &paths) {
         {"avr-gcc (Kilobot firmware)", find_program("avr-gcc").has_value(), "gcc-avr"},
         {"avr-size", find_program("avr-size").has_value(), "binutils-avr"},
         {"avr-libc headers", fs::exists("/usr/lib/avr/include/avr/io.h"), "avr-libc"},
+        {"arm-none-eabi-gcc (e-puck2 firmware)", find_program("arm-none-eabi-gcc").has_value(),
+         "gcc-arm-none-eabi"},
+        {"newlib for arm-none-eabi", fs::exists("/usr/lib/arm-none-eabi/include/string.h"),
+         "libnewlib-arm-none-eabi"},
+        {"qemu-system-arm (running e-puck2 firmware)", find_program("qemu-system-arm").has_value(),
+         "qemu-system-arm"},
         {"openswarm-sim (the simulator)", !paths.simulator.empty(), ""},
         {"OpenSwarm SDK and templates at " + paths.root.string(),
          fs::exists(paths.sdk_cmake() / "OpenSwarmConfig.cmake"), ""},

@@ -1,12 +1,17 @@
 // openswarm run: build the app, then run it in the simulator.
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "../app_config.hpp"
+#include "../ports.hpp"
 #include "../process.hpp"
+#include "../qemu_run.hpp"
 #include "../suggest.hpp"
 #include "build.hpp"
 #include "commands.hpp"
@@ -41,7 +46,47 @@ struct RunOptions {
     std::string out;   // --out DIR; empty: <app dir>/out/<world file's stem>
     bool video = false;
     bool trace = false; // with --world; without it the trace is always on
+    std::vector<std::string> simavr_only; // such options given, for a port QEMU runs
 };
+
+// The port the app will be built for, if it can be told before the build
+// (the build reports a missing or broken openswarm.json itself).
+std::string port_to_build(const RunOptions &o) {
+    if (!o.port.empty()) return o.port;
+    try {
+        return load_app_config(o.dir).port;
+    } catch (const std::exception &) {
+        return "";
+    }
+}
+
+// A port QEMU runs: one robot, no world (yet), the console and the trace.
+int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &port) {
+    if (!o.simavr_only.empty()) {
+        report(join(o.simavr_only) + ": not for the " + port +
+               " port, which runs one robot in QEMU; those are openswarm-sim's, for Kilobot "
+               "apps (--port kilobot)");
+        return EXIT_USAGE;
+    }
+    std::string text = o.time;
+    if (!text.empty() && text.back() == 's') text.pop_back();
+    char *end = nullptr;
+    double seconds = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400) {
+        report("--time " + o.time + ": give the simulated time in seconds, more than 0 and at most "
+               "86400 (e.g. 10 or 2.5s)");
+        return EXIT_USAGE;
+    }
+    auto built = build_app(paths, o.dir, o.port);
+    if (!built) return exit_code;
+    QemuRun r;
+    r.image = built->image;
+    r.seconds = seconds;
+    r.gdb_port = o.gdb;
+    std::printf("Running %s in QEMU (netduinoplus2) for %g s\n", r.image.filename().c_str(),
+                r.seconds);
+    return run_in_qemu(r);
+}
 
 // The world files an app ships (<dir>/worlds/*.json), to suggest when the
 // one asked for is not there.
@@ -95,6 +140,8 @@ bool world_file_usable(const RunOptions &o) {
 }
 
 int run_app(RunOptions o, const Paths &paths) {
+    std::string port = port_to_build(o);
+    if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
     if (!o.world.empty()) {
         if (!world_file_usable(o)) return EXIT_USAGE;
         if (o.out.empty())
@@ -201,7 +248,9 @@ void add_run_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("--ir-range", o->ir_range,
                     "millimetres a robot's IR reaches (simulator default 100)")
         ->check(CLI::Range(10, 1000));
-    cmd->add_option("--gdb", o->gdb, "wait for avr-gdb on this TCP port")->check(CLI::Range(1, 65535));
+    cmd->add_option("--gdb", o->gdb,
+                    "wait for the debugger on this TCP port (avr-gdb; gdb-multiarch for epuck2)")
+        ->check(CLI::Range(1, 65535));
     cmd->add_option("--vcd", o->vcd, "record pins and motors into this GTKWave file");
     cmd->add_option("--ohc", o->ohc,
                     "the overhead controller sends MSG at SECONDS (run, sleep, reset, boot, "
@@ -228,9 +277,16 @@ void add_run_command(CLI::App &app, const Paths &paths) {
         ->type_name("");
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
-    cmd->callback([o, robots, time, &paths] {
+    cmd->callback([o, robots, time, cmd, &paths] {
         o->robots_given = robots->count() > 0;
         o->time_given = time->count() > 0;
+        o->simavr_only.clear();
+        for (const char *name : {"--robots", "--distance", "--line", "--positions", "--world",
+                                 "--ir-range", "--vcd", "--ohc", "--profile", "--ir-log",
+                                 "--clock-spread", "--ir-loss", "--first", "--trace", "--out",
+                                 "--video"})
+            if (cmd->count(name) > 0) o->simavr_only.push_back(name);
+        if (!o->simulator_options.empty()) o->simavr_only.push_back("options after --");
         exit_code = run_app(*o, paths);
     });
 }

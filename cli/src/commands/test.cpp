@@ -8,11 +8,14 @@
 // are compared in order.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "../ports.hpp"
 #include "../process.hpp"
+#include "../qemu_run.hpp"
 #include "build.hpp"
 #include "commands.hpp"
 
@@ -117,6 +120,47 @@ std::vector<std::string> compare(const fs::path &file, const std::vector<Change>
     return problems;
 }
 
+std::vector<std::string> run_in_simulator_and_compare(const fs::path &file, const Expectation &e,
+                                                      const fs::path &image, const Paths &paths) {
+    fs::path csv = image.parent_path() / (file.stem().string() + ".trace.csv");
+    std::vector<std::string> argv = {paths.simulator.string(), "--quiet", "--trace-csv", csv.string()};
+    argv.insert(argv.end(), e.options.begin(), e.options.end());
+    argv.push_back(image.string());
+    std::string ignored;
+    int status = capture_program(argv, ignored);
+    if (status != 0) return {"the simulator exited with " + std::to_string(status)};
+    return compare(file, e.changes, read_trace(csv));
+}
+
+// A test of a port QEMU runs: one robot, and of the options only --time.
+std::vector<std::string> run_in_qemu_and_compare(const fs::path &file, const Expectation &e,
+                                                 const fs::path &image) {
+    QemuRun r;
+    r.image = image;
+    for (size_t i = 0; i < e.options.size(); i++) {
+        if (e.options[i] == "--time" && i + 1 < e.options.size()) {
+            std::string t = e.options[++i];
+            if (!t.empty() && t.back() == 's') t.pop_back();
+            char *end = nullptr;
+            r.seconds = std::strtod(t.c_str(), &end);
+            if (*end != '\0' || !std::isfinite(r.seconds) || r.seconds <= 0 || r.seconds > 86400)
+                return {file.string() + ":1: --time " + e.options[i] +
+                        ": give seconds, more than 0 and at most 86400"};
+            continue;
+        }
+        return {file.string() + ":1: " + e.options[i] +
+                ": QEMU runs one robot, and of the run options takes only --time"};
+    }
+    QemuOutcome outcome = run_qemu(r, [](const std::string &) {});
+    std::string failure = qemu_failure(r, outcome);
+    if (!failure.empty()) return {failure};
+    std::vector<Change> got;
+    for (const auto &rec : outcome.records)
+        if (rec.values.size() == 3)
+            got.push_back({rec.t, 0, rec.name, rec.values[0], rec.values[1], rec.values[2], 0});
+    return compare(file, e.changes, got);
+}
+
 int run_tests(const std::string &dir, const Paths &paths) {
     fs::path tests = fs::path(dir) / "tests";
     std::vector<fs::path> files;
@@ -138,14 +182,10 @@ int run_tests(const std::string &dir, const Paths &paths) {
         std::vector<std::string> problems;
         try {
             Expectation e = read_expectation(file);
-            fs::path csv = built->image.parent_path() / (name + ".trace.csv");
-            std::vector<std::string> argv = {paths.simulator.string(), "--quiet", "--trace-csv", csv.string()};
-            argv.insert(argv.end(), e.options.begin(), e.options.end());
-            argv.push_back(built->image.string());
-            std::string ignored;
-            int status = capture_program(argv, ignored);
-            if (status != 0) problems.push_back("the simulator exited with " + std::to_string(status));
-            else problems = compare(file, e.changes, read_trace(csv));
+            if (port_info(built->port).runner == Runner::qemu)
+                problems = run_in_qemu_and_compare(file, e, built->image);
+            else
+                problems = run_in_simulator_and_compare(file, e, built->image, paths);
         } catch (const std::exception &ex) {
             problems.push_back(ex.what());
         }

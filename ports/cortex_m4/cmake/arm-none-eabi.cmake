@@ -16,9 +16,15 @@ set(OPENSWARM_CPU_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-
 set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -ffunction-sections -fdata-sections")
 set(CMAKE_ASM_FLAGS_INIT "${OPENSWARM_CPU_FLAGS}")
-# newlib-nano's C library (memcpy, strcmp, ...) and nothing of its system
-# calls: no heap, no files.
-set(CMAKE_EXE_LINKER_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} --specs=nano.specs -nostartfiles -Wl,--gc-sections")
+# The link options every image needs (newlib-nano's C library, no start
+# files of newlib's) are the kernel library's (OpenSwarmKernel.cmake), so
+# a -DCMAKE_EXE_LINKER_FLAGS of the user's does not drop them.
+set(CMAKE_EXE_LINKER_FLAGS_INIT "-Wl,--gc-sections")
+# The C++ SDK is freestanding (no exceptions, RTTI or library calls): C++
+# apps are linked by the C driver, without libstdc++ (which Debian ships
+# apart for this target, and GCC 12 has no -nostdlib++).
+set(CMAKE_CXX_LINK_EXECUTABLE
+    "arm-none-eabi-gcc <FLAGS> <CMAKE_CXX_LINK_FLAGS> <LINK_FLAGS> <OBJECTS> -o <TARGET> <LINK_LIBRARIES>")
 
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)

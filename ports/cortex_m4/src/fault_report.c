@@ -1,8 +1,8 @@
 /* Kernel faults on the board's console, so none goes unseen:
  * "kernel fault: stack overflow in thread 19". */
+#include "openswarm/cortex_m4.h"
 #include "openswarm/fault.h"
 #include "openswarm/port.h"
-#include "text_out.h"
 
 static const char *fault_name(uint8_t fault) {
     switch (fault) {
@@ -14,9 +14,9 @@ static const char *fault_name(uint8_t fault) {
 }
 
 void port_report_fault(uint8_t fault, sys_pid pid) {
-    text_out("kernel fault: ");
-    text_out(fault_name(fault));
-    text_out(" in thread ");
-    text_out_uint(pid);
-    text_out("\n");
+    cortex_m4_print("kernel fault: ");
+    cortex_m4_print(fault_name(fault));
+    cortex_m4_print(" in thread ");
+    cortex_m4_print_uint(pid);
+    cortex_m4_print("\n");
 }

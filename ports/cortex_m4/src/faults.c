@@ -8,7 +8,6 @@
 #include "openswarm/port.h"
 #include "openswarm/process.h"
 #include "system_control.h"
-#include "text_out.h"
 
 #define EXC_RETURN_THREAD_PSP_BITS 0xCu /* bit 3: to thread mode, bit 2: on PSP */
 #define CFSR_STACKING_ERRORS ((1u << 4) | (1u << 12)) /* MSTKERR, STKERR: no usable frame */
@@ -32,18 +31,18 @@ static const char *fault_reason(uint32_t cfsr, uint32_t hfsr) {
 }
 
 static void describe(const char *where, uint32_t cfsr, uint32_t pc) {
-    text_out("CPU fault: ");
-    text_out(fault_reason(cfsr, SCB_HFSR));
-    text_out(" at pc 0x");
-    text_out_hex(pc);
+    cortex_m4_print("CPU fault: ");
+    cortex_m4_print(fault_reason(cfsr, SCB_HFSR));
+    cortex_m4_print(" at pc 0x");
+    cortex_m4_print_hex(pc);
     if (cfsr & (1u << 7)) { /* MMARVALID */
-        text_out(", address 0x");
-        text_out_hex(SCB_MMFAR);
+        cortex_m4_print(", address 0x");
+        cortex_m4_print_hex(SCB_MMFAR);
     } else if (cfsr & (1u << 15)) { /* BFARVALID */
-        text_out(", address 0x");
-        text_out_hex(SCB_BFAR);
+        cortex_m4_print(", address 0x");
+        cortex_m4_print_hex(SCB_BFAR);
     }
-    text_out(where);
+    cortex_m4_print(where);
 }
 
 void cortex_m4_fault(uint32_t *frame, uint32_t exc_return, uint32_t basepri) {

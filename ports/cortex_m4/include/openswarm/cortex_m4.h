@@ -48,6 +48,12 @@ void cortex_m4_irq_disable(int irq);
  * the kernel's). NULL for none. */
 extern void (*cortex_m4_tick_hook)(void);
 
+/* Text on the board's console (fault reports, records): a string, a
+ * number in decimal, a word in hexadecimal (8 digits). */
+void cortex_m4_print(const char *text);
+void cortex_m4_print_uint(uint32_t value);
+void cortex_m4_print_hex(uint32_t value);
+
 /* ---- supplied by the board ---- */
 
 /* SysTick's clock (the core clock) in Hz once board_init has run. */

@@ -1,11 +1,16 @@
 /* The e-puck2 image's board under QEMU (netduinoplus2): no clock tree to
  * wait for (QEMU models no RCC: a wait for the PLL would never end; the
  * core clock is what the machine says, 168 MHz), the console on USART1
- * (QEMU's first serial port), and exit statuses through semihosting. */
+ * (QEMU's first serial port), exit statuses through semihosting, and an
+ * end to the run: given --stop-ms=N among QEMU's semihosting arguments,
+ * the board exits (status 0) when the kernel's clock reaches N ms, so a
+ * run lasts the same simulated time on any machine. */
 #include "openswarm/cortex_m4.h"
+#include "openswarm/system_time.h"
 #include "semihosting.h"
 
 #include <stdint.h>
+#include <string.h>
 
 #define USART1_SR (*(volatile uint32_t *)0x40011000u)
 #define USART1_DR (*(volatile uint32_t *)0x40011004u)
@@ -17,7 +22,28 @@
 
 const uint32_t board_core_hz = 168000000u;
 
-void board_init(void) { USART1_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE; }
+static uint32_t stop_ms;
+
+static void stop_when_due(void) {
+    if (Sys_Get_SystemTime() >= stop_ms) semihosting_exit(0);
+}
+
+/* "--stop-ms=" and digits, anywhere in the line; 0 if absent. */
+static uint32_t stop_ms_given(const char *line) {
+    static const char key[] = "--stop-ms=";
+    const char *at = strstr(line, key);
+    uint32_t ms = 0;
+    if (at == NULL) return 0;
+    for (at += sizeof key - 1; *at >= '0' && *at <= '9'; at++) ms = ms * 10u + (uint32_t)(*at - '0');
+    return ms;
+}
+
+void board_init(void) {
+    USART1_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE;
+    char line[128];
+    if (semihosting_command_line(line, sizeof line)) stop_ms = stop_ms_given(line);
+    if (stop_ms != 0) cortex_m4_tick_hook = stop_when_due;
+}
 
 void board_console_write(const char *text, uint32_t length) {
     for (uint32_t i = 0; i < length; i++) {

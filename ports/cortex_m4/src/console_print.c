@@ -1,12 +1,11 @@
-#include "text_out.h"
-
+/* Text on the board's console, without a C library's printf. */
 #include "openswarm/cortex_m4.h"
 
 #include <string.h>
 
-void text_out(const char *text) { board_console_write(text, (uint32_t)strlen(text)); }
+void cortex_m4_print(const char *text) { board_console_write(text, (uint32_t)strlen(text)); }
 
-void text_out_uint(uint32_t value) {
+void cortex_m4_print_uint(uint32_t value) {
     char digits[10];
     unsigned n = 0;
     do {
@@ -16,7 +15,7 @@ void text_out_uint(uint32_t value) {
     board_console_write(&digits[sizeof digits - n], n);
 }
 
-void text_out_hex(uint32_t value) {
+void cortex_m4_print_hex(uint32_t value) {
     char digits[8];
     for (unsigned i = 0; i < 8; i++) digits[i] = "0123456789abcdef"[(value >> (28 - 4 * i)) & 0xFu];
     board_console_write(digits, 8);

@@ -1,0 +1,15 @@
+/* Records the QEMU board writes among the console's lines for the runner
+ * (`openswarm run` prints them as it prints a simulated Kilobot's trace):
+ * a line starting with the ASCII record separator 0x1E, then the record's
+ * name, the time in microseconds and its values:
+ *
+ *     \x1e led 252004 0 3 0\n        the status light: red, green, blue (0..3)
+ */
+#ifndef EPUCK2_QEMU_BOARD_RECORD_H
+#define EPUCK2_QEMU_BOARD_RECORD_H
+
+#include <stdint.h>
+
+void board_record(const char *name, const uint8_t *values, uint8_t count);
+
+#endif

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# End to end on the e-puck2 under QEMU: scaffold a template for epuck2,
+# build it, run it (the status light's changes shown as trace lines), test
+# it; options only the Kilobot simulator has, a bad --time and a firmware
+# that hangs are refused or fail with the reason.
+#   epuck2_qemu.sh OPENSWARM WORKDIR TEMPLATE
+set -euo pipefail
+openswarm=$1 work=$2 template=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+"$openswarm" new app --template "$template" --port epuck2
+cd app
+"$openswarm" build | tee build.log
+grep -q "^Built ./build/epuck2/app.elf for epuck2" build.log
+grep -Eq "^Flash \[.*\] +[0-9.]+% \([1-9][0-9]* of 917504 bytes\)$" build.log
+grep -Eq "^  kernel and port +[0-9.]+% ~ *[1-9][0-9]* " build.log
+"$openswarm" build --json > build.json
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); assert j["flash_total"] == 917504 and j["ram_total"] == 131072 and j["share"]["approximate"]' build.json
+"$openswarm" run --time 1.1 2>&1 | tee run.log
+grep -q "^Running app.elf in QEMU (netduinoplus2) for 1.1 s$" run.log
+grep -Eq "^\[ +0\.25[0-9]+ s\] led +red 0 green 0 blue 0$" run.log
+grep -Eq "^\[ +1\.00[0-9]+ s\] led +red 0 green 3 blue 0$" run.log
+test "$(grep -c '\] led ' run.log)" -eq 5
+grep -Eq "^openswarm: ran 1.100 s of simulated time in QEMU in [0-9.]+ s" run.log
+"$openswarm" test | tee test.log
+grep -Eq "^[1-9][0-9]* passed, 0 failed$" test.log
+
+refused() { # EXIT_STATUS REGEX OPTIONS...
+    local want=$1 regex=$2 status=0
+    shift 2
+    "$openswarm" run "$@" > refused.log 2>&1 || status=$?
+    test "$status" -eq "$want" || { echo "FAILED: run $* exited $status, not $want"; cat refused.log; exit 1; }
+    grep -Eq "$regex" refused.log || { echo "FAILED: run $*:"; cat refused.log; exit 1; }
+}
+refused 2 "openswarm: --robots, --ohc: not for the epuck2 port, which runs one robot in QEMU" --robots 3 --ohc run@1
+refused 2 "openswarm: --time abc: give the simulated time in seconds" --time abc
+refused 2 "openswarm: --time nan: give the simulated time in seconds" --time nan
+
+# A firmware that masks every interrupt and spins never reaches its end:
+# the run is stopped and fails, saying so.
+sed -i 's|    Sys_Start_Kernel();|    __asm__ __volatile__("cpsid i");\n    for (;;) {\n    }\n    Sys_Start_Kernel();|' main.c*
+refused 1 "the firmware did not reach 0.1 s of simulated time within [0-9]+ s: it hangs with interrupts masked" --time 0.1
+echo "1 passed, 0 failed"
