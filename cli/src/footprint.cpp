@@ -25,10 +25,12 @@ struct PortCosts {
 const PortCosts &costs_of(const std::string &port) {
     static const std::vector<PortCosts> all = {
         {"kilobot", 64, /* C */ 148, /* per thread */ 12, /* per event */ 4},
+        // bench/qemu_bench.py
+        {"epuck2", 384, /* C */ 200, /* per thread */ 24, /* per event */ 8},
     };
     for (const auto &c : all)
         if (c.port == port) return c;
-    throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp");
+    throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp: add them");
 }
 
 // The OS_CFG_* values the build used: the generated header's, or the port's.

@@ -5,6 +5,8 @@ set(CMAKE_SYSTEM_PROCESSOR arm)
 set(CMAKE_C_COMPILER arm-none-eabi-gcc)
 set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
 set(CMAKE_ASM_COMPILER arm-none-eabi-gcc)
+set(CMAKE_AR arm-none-eabi-gcc-ar CACHE FILEPATH "")
+set(CMAKE_RANLIB arm-none-eabi-gcc-ranlib CACHE FILEPATH "")
 set(CMAKE_OBJCOPY arm-none-eabi-objcopy CACHE FILEPATH "")
 set(CMAKE_SIZE arm-none-eabi-size CACHE FILEPATH "")
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
@@ -12,14 +14,23 @@ set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
 
+# Link-time optimisation lets the kernel's one-concern-per-file sources
+# inline across files. (Off for `openswarm size`'s attribution build,
+# whose link map must name each file.)
+option(OPENSWARM_LTO "link-time optimisation" ON)
+set(_lto "")
+if(OPENSWARM_LTO)
+  set(_lto "-flto")
+endif()
 set(OPENSWARM_CPU_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16")
-set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -ffunction-sections -fdata-sections")
-set(CMAKE_CXX_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -ffunction-sections -fdata-sections")
+set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -Os ${_lto} -ffunction-sections -fdata-sections")
+set(CMAKE_CXX_FLAGS_INIT
+    "${OPENSWARM_CPU_FLAGS} -Os ${_lto} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "${OPENSWARM_CPU_FLAGS}")
 # The link options every image needs (newlib-nano's C library, no start
 # files of newlib's) are the kernel library's (OpenSwarmKernel.cmake), so
 # a -DCMAKE_EXE_LINKER_FLAGS of the user's does not drop them.
-set(CMAKE_EXE_LINKER_FLAGS_INIT "-Wl,--gc-sections")
+set(CMAKE_EXE_LINKER_FLAGS_INIT "-Os ${_lto} -Wl,--gc-sections")
 # The C++ SDK is freestanding (no exceptions, RTTI or library calls): C++
 # apps are linked by the C driver, without libstdc++ (which Debian ships
 # apart for this target, and GCC 12 has no -nostdlib++).
