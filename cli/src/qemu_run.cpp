@@ -65,7 +65,7 @@ static bool decode_record(const std::string &line, QemuRecord &record) {
 }
 
 QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::string &)> &on_line) {
-    QemuOutcome outcome{0, 0, false, {}};
+    QemuOutcome outcome{0, 0, false, false, {}};
     auto started = std::chrono::steady_clock::now();
     outcome.status = run_program_lines(
         qemu_command(r),
@@ -73,7 +73,13 @@ QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::strin
             if (line.rfind("kernel fault:", 0) == 0 || line.rfind("CPU fault:", 0) == 0)
                 outcome.fault_reported = true;
             QemuRecord record;
-            if (decode_record(line, record)) outcome.records.push_back(record);
+            if (decode_record(line, record)) {
+                if (record.name == "stop") {
+                    outcome.reached_end = true;
+                    return; // not something the robot did
+                }
+                outcome.records.push_back(record);
+            }
             on_line(shown_line(line));
         },
         wall_clock_limit(r));
@@ -97,6 +103,10 @@ std::string qemu_failure(const QemuRun &r, const QemuOutcome &outcome) {
         return "the firmware ended with status " + std::to_string(outcome.status) +
                " (main returned it, or QEMU could not run the image)";
     if (outcome.fault_reported) return "the firmware reported a fault (above)";
+    if (!outcome.reached_end)
+        return std::string("the run ended before ") + seconds +
+               " s of simulated time: main returned 0 (a firmware should not return), or the "
+               "debugger ended it";
     return "";
 }
 
@@ -114,7 +124,7 @@ int run_in_qemu(const QemuRun &r) {
         std::printf("%s\n", line.c_str());
         std::fflush(stdout);
     });
-    if (outcome.status == 0)
+    if (outcome.status == 0 && outcome.reached_end)
         std::printf("openswarm: ran %.3f s of simulated time in QEMU in %.1f s, %.1fx real time\n",
                     r.seconds, outcome.wall_seconds,
                     outcome.wall_seconds > 0 ? r.seconds / outcome.wall_seconds : 0.0);

@@ -35,6 +35,7 @@ struct QemuOutcome {
     int status;          // QEMU's exit status: the firmware's; 124: killed, it hung
     double wall_seconds; // how long it took
     bool fault_reported; // a "kernel fault:" or "CPU fault:" line on the console
+    bool reached_end;    // the board's "stop" record: the run lasted its time
     std::vector<QemuRecord> records;
 };
 

@@ -23,9 +23,11 @@ if(OPENSWARM_LTO)
   set(_lto "-flto")
 endif()
 set(OPENSWARM_CPU_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16")
-set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -Os ${_lto} -ffunction-sections -fdata-sections")
+# -g: line tables for gdb-multiarch (openswarm run --gdb); none of it is in
+# what is flashed.
+set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -Os -g ${_lto} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT
-    "${OPENSWARM_CPU_FLAGS} -Os ${_lto} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
+    "${OPENSWARM_CPU_FLAGS} -Os -g ${_lto} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "${OPENSWARM_CPU_FLAGS}")
 # The link options every image needs (newlib-nano's C library, no start
 # files of newlib's) are the kernel library's (OpenSwarmKernel.cmake), so

@@ -7,6 +7,7 @@
  * run lasts the same simulated time on any machine. */
 #include "openswarm/cortex_m4.h"
 #include "openswarm/system_time.h"
+#include "board_record.h"
 #include "semihosting.h"
 
 #include <stdint.h>
@@ -24,8 +25,12 @@ const uint32_t board_core_hz = 168000000u;
 
 static uint32_t stop_ms;
 
+/* The "stop" record tells the runner the run reached its end (status 0
+ * alone could also be main returning 0, or a debugger ending QEMU). */
 static void stop_when_due(void) {
-    if (Sys_Get_SystemTime() >= stop_ms) semihosting_exit(0);
+    if (Sys_Get_SystemTime() < stop_ms) return;
+    board_record("stop", NULL, 0);
+    semihosting_exit(0);
 }
 
 /* "--stop-ms=" and digits, anywhere in the line; 0 if absent. */

@@ -3,7 +3,8 @@
  * a line starting with the ASCII record separator 0x1E, then the record's
  * name, the time in microseconds and its values:
  *
- *     \x1e led 252004 0 3 0\n        the status light: red, green, blue (0..3)
+ *     \x1eled 252004 0 3 0\n        the status light: red, green, blue (0..3)
+ *     \x1estop 1100000\n             the run reached the time it was given
  */
 #ifndef EPUCK2_QEMU_BOARD_RECORD_H
 #define EPUCK2_QEMU_BOARD_RECORD_H
