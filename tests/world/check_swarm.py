@@ -2,8 +2,11 @@
 """A hundred robots in one IR range, all talking (the disperse template):
 the run ends normally and the robots hear their neighbours closer than
 60 mm (the LED turns red). The channel is about 90% busy (100 senders, two
-4.4 ms frames a second each) and who gets through is chaotic (any change
-of timing changes it: 89 to 97 robots have been seen), so 80 of 100 must;
+4.4 ms frames a second each) and who gets through is chaotic: any change
+of timing changes it. Since the IR driver counts the ticks a frame masks
+exactly (a frame used to gain one in 3 of 5, so every robot's clock
+wandered with its traffic), robots whose periods nearly agree collide for
+longer: 76 to 83 of 100 in 5 s with seeds 1, 2, 3 and 9, so 70 must;
 with simavr's 64 timers a robot exhausted, edges were lost and frames
 garbled. check_swarm.py SIM ELF WORLD OUT"""
 import csv
@@ -21,7 +24,7 @@ with open(f"{out}/trajectories.csv") as f:
         if row["led_r"] == "3" and row["led_g"] == "0":
             red.add(row["robot"])
 checks["100 robots in the trajectories"] = len(robots) == 100
-checks[f"at least 80 robots heard a close neighbour ({len(red)})"] = len(red) >= 80
+checks[f"at least 70 robots heard a close neighbour ({len(red)})"] = len(red) >= 70
 for what, ok in checks.items():
     print(("ok   " if ok else "FAIL ") + what)
 if not all(checks.values()):
