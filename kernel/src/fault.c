@@ -5,7 +5,11 @@
 
 void os_stats_reset(void) { memset(&os.stats, 0, sizeof os.stats); }
 
-OS_COLD void os_count(uint16_t *counter) { (*counter)++; }
+/* Counters stop at their top: one that wrapped could read 0 after 65536
+ * losses. */
+OS_COLD void os_count(uint16_t *counter) {
+    if (*counter != UINT16_MAX) (*counter)++;
+}
 
 void Sys_Get_Stats(sys_stats *stats) {
     port_irq_state_t s = port_irq_save();

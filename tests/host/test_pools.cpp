@@ -172,6 +172,23 @@ TEST_F(Pools, FullEventQueueFromAnInterrupt) {
     EXPECT_EQ(1u, stats().event_queue_full);
 }
 
+// 70000 refusals: the counter stops at 65535; a wrapped one would read
+// 4464, and after exactly 65536 losses it would read 0.
+TEST_F(Pools, CountersStopAtTheirTopInsteadOfWrapping) {
+    long refused = 0;
+    boot([&] { Sys_Register_Event_Sized(EV_A, 10); });
+    irq([&] {
+        uint8_t ten[10] = {};
+        while (Sys_Send_Event(EV_A, ten, sizeof ten) == SYS_OK) {
+        }
+        for (long i = 1; i < 70000; i++)
+            if (Sys_Send_Event(EV_A, ten, sizeof ten) == SYS_E_QUEUE_FULL) refused++;
+    });
+    settle();
+    EXPECT_EQ(69999, refused);
+    EXPECT_EQ(65535u, stats().event_queue_full);
+}
+
 TEST_F(Pools, EventTableIsBoundedById) {
     sys_status last = SYS_E_INVALID;
     boot([&] { last = Sys_Register_Event_Sized(OS_CFG_MAX_EVENTS, 0); });

@@ -1,6 +1,7 @@
 /* Faults and resource counters: nothing the kernel refuses or detects goes
  * unreported. Every failed allocation or full queue returns an error to the
- * caller and increments one of these counters. */
+ * caller and increments one of these counters, which stop at 65535 rather
+ * than wrap to 0. */
 #ifndef OPENSWARM_FAULT_H
 #define OPENSWARM_FAULT_H
 

@@ -52,10 +52,13 @@ uint8_t kilobot_ir_with_distance(sys_device *dev, const void *in, uint8_t size, 
 /* The same estimate from two gain readings (kilolib's estimate_distance). */
 uint8_t kilobot_ir_distance_mm(int16_t low_gain, int16_t high_gain);
 
-/* IR statistics: frames sent, received, rejected (CRC), collisions seen,
- * transmissions deferred because the channel was busy. */
+/* IR statistics: frames sent; received (delivered as KILOBOT_EVENT_IR_RX);
+ * refused (whole and with a good CRC, but the kernel had no room: its
+ * event queue or data pool was full, counted there too); rejected (bad
+ * CRC); collisions seen; transmissions deferred because the channel was
+ * busy. Each stops at 65535 rather than wrapping to 0. */
 typedef struct kilobot_ir_stats {
-    uint16_t sent, received, bad_crc, collisions, busy;
+    uint16_t sent, received, refused, bad_crc, collisions, busy;
 } kilobot_ir_stats;
 void kilobot_ir_get_stats(kilobot_ir_stats *stats);
 

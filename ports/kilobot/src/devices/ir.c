@@ -30,6 +30,11 @@
 static volatile uint8_t receiving; /* carrier sense for the transmitter */
 static kilobot_ir_stats stats;
 
+/* A count that stops at its top: a wrapped one could read 0 after 65536 losses. */
+static void count(uint16_t *counter) {
+    if (*counter != UINT16_MAX) (*counter)++;
+}
+
 uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
     uint16_t crc = 0xFFFF;
     while (n-- != 0) crc = _crc_ccitt_update(crc, *bytes++);
@@ -123,7 +128,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
             }
         }
         if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
-            stats.collisions++;
+            count(&stats.collisions);
             return false;
         }
         if (slot == HEADER_SLOTS - 1u) {
@@ -154,7 +159,13 @@ ISR(TIMER1_CAPT_vect) {
     catch_up_ticks();
     if (!whole) return;
     os_isr_enter();
-    Sys_Device_Input(&kilobot_ir, &rx, sizeof rx); /* the Rx processor checks the CRC */
+    /* The Rx processor checks the CRC; a good frame may still find the
+     * kernel full. */
+    sys_status st = Sys_Device_Read(&kilobot_ir, &rx, sizeof rx, NULL, 0, NULL);
+    if (st == SYS_OK)
+        count(&stats.received);
+    else if (st != SYS_E_NOT_FOUND)
+        count(&stats.refused);
     os_isr_exit();
 }
 
@@ -187,7 +198,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     uint8_t sreg = SREG;
     cli();
     if (receiving || (TIFR1 & _BV(ICF1))) { /* carrier sense: someone is talking */
-        stats.busy++;
+        count(&stats.busy);
         SREG = sreg;
         return SYS_E_QUEUE_FULL;
     }
@@ -197,7 +208,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
      * frame's start, they would hold us deaf in a bogus reception for a
      * whole frame time, just as the robot that waited for us answers. */
     TIFR1 = _BV(ICF1);
-    stats.sent++;
+    count(&stats.sent);
     catch_up_ticks();
     SREG = sreg;
     return SYS_OK;
@@ -212,10 +223,9 @@ uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void
     if (size != sizeof *r || cap < sizeof *r) return 0;
     uint16_t crc = (uint16_t)(r->frame[10] | (uint16_t)r->frame[11] << 8);
     if (crc != kilobot_crc(r->frame, 10)) {
-        stats.bad_crc++;
+        count(&stats.bad_crc);
         return 0;
     }
-    stats.received++;
     memcpy(out, r, sizeof *r);
     return sizeof *r;
 }
