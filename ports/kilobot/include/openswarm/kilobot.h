@@ -55,10 +55,12 @@ uint8_t kilobot_ir_distance_mm(int16_t low_gain, int16_t high_gain);
 /* IR statistics: frames sent; received (delivered as KILOBOT_EVENT_IR_RX);
  * refused (whole and with a good CRC, but the kernel had no room: its
  * event queue or data pool was full, counted there too); rejected (bad
- * CRC); collisions seen; transmissions deferred because the channel was
- * busy. Each stops at 65535 rather than wrapping to 0. */
+ * CRC); broken (cut short, without their header's stop pulse, or with
+ * pulses past their end); collisions seen (a pulse inside a header);
+ * transmissions deferred because the channel was busy. Each stops at 65535
+ * rather than wrapping to 0. */
 typedef struct kilobot_ir_stats {
-    uint16_t sent, received, refused, bad_crc, collisions, busy;
+    uint16_t sent, received, refused, bad_crc, broken, collisions, busy;
 } kilobot_ir_stats;
 void kilobot_ir_get_stats(kilobot_ir_stats *stats);
 

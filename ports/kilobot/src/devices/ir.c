@@ -107,8 +107,18 @@ static int32_t next_edge(uint16_t last) {
  * pulse and again from the stop pulse and each byte's start bit (always a
  * 1), as a UART does: robots' clocks differ by a percent or two, which over
  * a whole frame's 130 slots would add up to more than half a slot. */
+/* A broken frame counts once: the rest of its pulses are let pass until
+ * the channel is quiet, or each would start another broken reception. */
+static bool broken(uint16_t last_edge) {
+    count(&stats.broken);
+    for (int32_t edge = last_edge; edge >= 0; edge = next_edge((uint16_t)edge)) {
+    }
+    return false;
+}
+
 static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     uint16_t slot_time = start;
+    bool header_stopped = false; /* its stop pulse came: the gains are the sender's */
     uint8_t slot = 0;          /* in the header; HEADER_SLOTS once past it */
     uint8_t byte = 0, bit = 0; /* past the header: which byte, which of its 10 slots */
     memset(rx, 0, sizeof *rx);
@@ -117,7 +127,10 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
         int32_t edge = next_edge(slot_time);
-        if (edge < 0) return false; /* the frame stopped short */
+        if (edge < 0) { /* the frame stopped short */
+            count(&stats.broken);
+            return false;
+        }
         while ((int16_t)((uint16_t)edge - slot_time) > (int16_t)(BIT / 2u)) {
             slot_time = (uint16_t)(slot_time + BIT);
             if (slot < HEADER_SLOTS)
@@ -132,12 +145,16 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
             return false;
         }
         if (slot == HEADER_SLOTS - 1u) {
+            header_stopped = true;
             slot_time = (uint16_t)edge; /* the sender's clock, afresh */
             rx->high_gain = kilobot_adc_take();
             kilobot_adc_start(KILOBOT_ADC_IR_LOW_GAIN);
             continue;
         }
-        if (byte == KILOBOT_IR_FRAME_BYTES) return false; /* pulses past the frame's end */
+        /* Without its stop pulse the header gave no low-gain reading: the
+         * distance would come from the high gain's alone. */
+        if (!header_stopped) return broken((uint16_t)edge);
+        if (byte == KILOBOT_IR_FRAME_BYTES) return broken((uint16_t)edge); /* pulses past the frame's end */
         if (bit == 0u)
             slot_time = (uint16_t)edge; /* a start bit: the sender's clock, afresh */
         else if (bit <= 8u)
