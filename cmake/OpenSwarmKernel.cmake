@@ -37,8 +37,18 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/calibration.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/status_lights.c)
 
+# The e-puck's device layer, the same on both e-pucks; each board supplies
+# its lower layer (ports/epuck/src/epuck_board.h).
+set(OPENSWARM_EPUCK_SOURCES
+    ${OPENSWARM_ROOT}/ports/epuck/src/devices.c
+    ${OPENSWARM_ROOT}/ports/epuck/src/wheels.c
+    ${OPENSWARM_ROOT}/ports/epuck/src/proximity.c
+    ${OPENSWARM_ROOT}/ports/epuck/src/camera_classifier.c
+    ${OPENSWARM_ROOT}/ports/epuck/src/selector.c)
+
 # The e-puck2 (STM32F407, Cortex-M4F): the CPU port, the chip's vector
-# table, and a board: qemu (QEMU's netduinoplus2, for running and testing).
+# table, the device layer, and a board: qemu (QEMU's netduinoplus2, for
+# running and testing).
 set(OPENSWARM_PORT_epuck2_SOURCES
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/port.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/switch.S
@@ -46,16 +56,17 @@ set(OPENSWARM_PORT_epuck2_SOURCES
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/fault_report.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/reset.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/console_print.c
-    ${OPENSWARM_ROOT}/ports/epuck/epuck2/startup/stm32f407_vectors.c)
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/startup/stm32f407_vectors.c
+    ${OPENSWARM_EPUCK_SOURCES})
 set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_record.c
-    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/devices_qemu.c)
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_devices.c)
 set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/qemu_netduinoplus2.ld)
 set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
-    ${OPENSWARM_ROOT}/ports/epuck/epuck2/include)
+    ${OPENSWARM_ROOT}/ports/epuck/include)
 
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)

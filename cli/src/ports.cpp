@@ -41,11 +41,11 @@ const std::vector<PortInfo> &ports() {
          "ports/kilobot/cmake/avr-gcc.cmake", "avr-size", Runner::simavr},
         // The kernel's two events (6 bytes) and the board's 16 ids
         // (PORT_EVENT_COUNT in ports/cortex_m4's port_arch.h), of which
-        // robot_devices_init registers the status light's (at
-        // OS_CFG_HAL_MAX_VALUE, 36 bytes); flash after the e-puck2's 128 KB
-        // bootloader; RAM: SRAM1+2 (the image leaves CCM unused).
+        // epuck_devices_init registers 8 at their values' sizes (wheels 4,
+        // proximity 32, six of 1: 42 bytes); flash after the e-puck2's
+        // 128 KB bootloader; RAM: SRAM1+2 (the image leaves CCM unused).
         {"epuck2", "e-puck2: STM32F407 (Cortex-M4F at 168 MHz), run in QEMU (netduinoplus2)",
-         1024 * 1024 - 128 * 1024, 128 * 1024, 2 + 16, 6 + 36, 16, 48, 1024, 64, {}, "arm-none-eabi-gcc",
+         1024 * 1024 - 128 * 1024, 128 * 1024, 2 + 16, 6 + 42, 16, 48, 1024, 64, {}, "arm-none-eabi-gcc",
          "sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi (or run OpenSwarm's "
          "./setup.sh)",
          "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu},

@@ -155,9 +155,11 @@ std::vector<std::string> run_in_qemu_and_compare(const fs::path &file, const Exp
     std::string failure = qemu_failure(r, outcome);
     if (!failure.empty()) return {failure};
     std::vector<Change> got;
-    for (const auto &rec : outcome.records)
-        if (rec.values.size() == 3)
-            got.push_back({rec.t, 0, rec.name, rec.values[0], rec.values[1], rec.values[2], 0});
+    for (const auto &rec : outcome.records) {
+        std::vector<int> v = rec.values; // a, b, c: fewer values are padded with 0
+        v.resize(3, 0);
+        got.push_back({rec.t, 0, rec.name, v[0], v[1], v[2], 0});
+    }
     return compare(file, e.changes, got);
 }
 

@@ -7,6 +7,7 @@
  * run lasts the same simulated time on any machine. */
 #include "openswarm/cortex_m4.h"
 #include "openswarm/system_time.h"
+#include "board_qemu.h"
 #include "board_record.h"
 #include "semihosting.h"
 
@@ -24,6 +25,7 @@
 const uint32_t board_core_hz = 168000000u;
 
 static uint32_t stop_ms;
+uint8_t board_selector_position;
 
 /* The "stop" record tells the runner the run reached its end (status 0
  * alone could also be main returning 0, or a debugger ending QEMU). */
@@ -33,20 +35,23 @@ static void stop_when_due(void) {
     semihosting_exit(0);
 }
 
-/* "--stop-ms=" and digits, anywhere in the line; 0 if absent. */
-static uint32_t stop_ms_given(const char *line) {
-    static const char key[] = "--stop-ms=";
+/* key (such as "--stop-ms=") and its digits, anywhere in the line; 0 if
+ * absent. */
+static uint32_t number_given(const char *line, const char *key) {
     const char *at = strstr(line, key);
-    uint32_t ms = 0;
+    uint32_t n = 0;
     if (at == NULL) return 0;
-    for (at += sizeof key - 1; *at >= '0' && *at <= '9'; at++) ms = ms * 10u + (uint32_t)(*at - '0');
-    return ms;
+    for (at += strlen(key); *at >= '0' && *at <= '9'; at++) n = n * 10u + (uint32_t)(*at - '0');
+    return n;
 }
 
 void board_init(void) {
     USART1_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE;
     char line[128];
-    if (semihosting_command_line(line, sizeof line)) stop_ms = stop_ms_given(line);
+    if (semihosting_command_line(line, sizeof line)) {
+        stop_ms = number_given(line, "--stop-ms=");
+        board_selector_position = (uint8_t)(number_given(line, "--selector=") & 0x0Fu);
+    }
     if (stop_ms != 0) cortex_m4_tick_hook = stop_when_due;
 }
 

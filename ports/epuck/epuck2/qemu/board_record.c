@@ -19,7 +19,7 @@ static uint32_t now_us(void) {
     return ms * 1000u + elapsed / (board_core_hz / 1000000u);
 }
 
-void board_record(const char *name, const uint8_t *values, uint8_t count) {
+void board_record(const char *name, const int32_t *values, uint8_t count) {
     uint32_t us = now_us();
     port_irq_state_t s = port_irq_save(); /* one whole line among other output */
     board_console_write("\x1e", 1);
@@ -27,8 +27,8 @@ void board_record(const char *name, const uint8_t *values, uint8_t count) {
     board_console_write(" ", 1);
     cortex_m4_print_uint(us);
     for (uint8_t i = 0; i < count; i++) {
-        board_console_write(" ", 1);
-        cortex_m4_print_uint(values[i]);
+        board_console_write(values[i] < 0 ? " -" : " ", values[i] < 0 ? 2u : 1u);
+        cortex_m4_print_uint(values[i] < 0 ? (uint32_t)-values[i] : (uint32_t)values[i]);
     }
     board_console_write("\n", 1);
     port_irq_restore(s);

@@ -23,6 +23,8 @@ typedef int port_irq_state_t;
 #define PORT_STACK_ALIGN 16u
 
 /* Event ids the port reserves for its devices. */
+#ifndef PORT_EVENT_COUNT
 #define PORT_EVENT_COUNT 2
+#endif
 
 #endif
