@@ -10,9 +10,6 @@
 extern "C" {
 #include "../../ports/epuck/epuck2/drivers/steppers.h"
 #include "../../ports/epuck/epuck2/drivers/stm32f4_registers.h"
-stm32_gpio epuck2_model_gpioe;
-stm32_timer epuck2_model_tim3, epuck2_model_tim4;
-stm32_rcc_enables epuck2_model_rcc;
 }
 
 namespace {

@@ -77,9 +77,7 @@ void epuck2_steppers_init(void) {
     RCC_ENABLES->APB1ENR |= RCC_APB1ENR_TIM3EN | RCC_APB1ENR_TIM4EN;
     for (unsigned side = 0; side < 2; side++) {
         stepper *m = &motors[side];
-        for (unsigned i = 0; i < 4; i++)
-            GPIOE->MODER = (GPIOE->MODER & ~(3u << (2u * m->pins[i]))) |
-                           (GPIO_MODE_OUTPUT << (2u * m->pins[i]));
+        for (unsigned i = 0; i < 4; i++) stm32_gpio_mode(GPIOE, m->pins[i], GPIO_MODE_OUTPUT);
         drive(m, 0);
         m->direction = 0;
         m->index = 0;
