@@ -24,7 +24,7 @@ struct PortCosts {
 
 const PortCosts &costs_of(const std::string &port) {
     static const std::vector<PortCosts> all = {
-        {"kilobot", 64, /* C */ 148, /* per thread */ 12, /* per event */ 4},
+        {"kilobot", 64, /* C */ 150, /* per thread */ 12, /* per event */ 4},
         // bench/qemu_bench.py
         {"epuck2", 384, /* C */ 200, /* per thread */ 24, /* per event */ 8},
     };
