@@ -153,8 +153,12 @@ std::string processor_params(const DeviceConfig &d, const ProcessorInfo &p) {
 
 std::string app_source(const AppConfig &c) {
     std::ostringstream s;
+    // On the Kilobot each thread's name goes to the simulator (a record the
+    // robot ignores), which names the thread in a fault report.
+    const bool names_to_simulator = c.port == "kilobot" && !c.threads.empty();
     s << banner << "#include \"openswarm_app.h\"\n";
     if (c.port == "kilobot" && !c.devices.empty()) s << "#include \"openswarm/kilobot.h\"\n";
+    if (names_to_simulator) s << "#include \"openswarm/kilobot_sim.h\"\n";
     s << "\n";
     for (const auto &d : c.devices) {
         const DeviceInfo *dev = nullptr;
@@ -165,6 +169,7 @@ std::string app_source(const AppConfig &c) {
         s << "void " << t.entry << "(void);\nstatic void start_" << t.entry << "(void *arg) {\n    (void)arg;\n    "
           << t.entry << "();\n}\n\n";
     s << "sys_status openswarm_app_start(void) {\n    sys_status st = SYS_OK;\n";
+    if (names_to_simulator) s << "    sys_pid pid = SYS_PID_NONE;\n";
     if (c.scheduler == "priority") s << "    if (st == SYS_OK) st = Sys_Set_Scheduler(&sys_scheduler_priority);\n";
     for (const auto &e : c.events)
         s << "    if (st == SYS_OK) st = Sys_Register_Event_Sized(EV_" << upper(e.name) << ", " << e.size << ");\n";
@@ -175,9 +180,12 @@ std::string app_source(const AppConfig &c) {
         s << "    if (st == SYS_OK) st = Sys_Set_Processor(&" << dev->c_device << ", " << p.c_function << ", "
           << (p.c_params_type.empty() ? std::string("0") : "(void *)&" + d.device + "_params") << ");\n";
     }
-    for (const auto &t : c.threads)
+    for (const auto &t : c.threads) {
         s << "    if (st == SYS_OK) st = Sys_Start_Process_Ex(start_" << t.entry << ", 0, " << t.stack << ", "
-          << t.priority << ", 0);\n";
+          << t.priority << ", " << (names_to_simulator ? "&pid" : "0") << ");\n";
+        if (names_to_simulator)
+            s << "    if (st == SYS_OK) sim_thread_name(pid, PSTR(\"" << t.entry << "\"));\n";
+    }
     s << "    return st;\n}\n";
     return s.str();
 }

@@ -57,6 +57,18 @@ int run(const std::vector<std::string> &argv, Streams streams, std::string *outp
 
 }  // namespace
 
+std::string simulator_failure(int status) {
+    switch (status) {
+    case 2: return "the simulator refused its input (its message is above)";
+    case 3: return "the firmware crashed (above): `openswarm run --gdb 1234` shows where";
+    case 4: return "the firmware did not stop by itself in the time given";
+    case 5: return "a robot jumped to the bootloader (a BOOT message)";
+    case 6: return "the firmware reported a kernel fault (above: which thread, when): the run "
+                   "fails; a stack overflow wants a bigger \"stack\" in openswarm.json";
+    default: return "the firmware stopped with status " + std::to_string(status);
+    }
+}
+
 int run_program(const std::vector<std::string> &argv) {
     return run(argv, Streams::inherit, nullptr);
 }

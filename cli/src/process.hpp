@@ -22,6 +22,9 @@ int capture_program(const std::vector<std::string> &argv, std::string &output);
 // failure the tool explains itself, rather than showing the tool's noise.
 int capture_program_and_errors(const std::vector<std::string> &argv, std::string &output);
 
+// What openswarm-sim's exit status says went wrong, for a person.
+std::string simulator_failure(int status);
+
 // Run it, handing each line of its standard output (without the newline)
 // to on_line as it comes; its standard error goes to ours. After
 // timeout_seconds (0: never) it is killed and 124 returned.

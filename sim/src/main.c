@@ -71,8 +71,10 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
 
 static int report(int n, const options *o) {
     int status = 0, crashed = 0, running = 0, booted = 0;
+    unsigned faults = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
+        faults += r->console.faults;
         double t = (double)r->avr->cycle / (double)r->avr->frequency;
         if (robot_at_bootloader(r)) {
             fprintf(stderr, "openswarm-sim: robot %d jumped to the bootloader (BOOT message) at "
@@ -99,6 +101,12 @@ static int report(int n, const options *o) {
     }
     if (crashed) return EXIT_CRASH;
     if (booted) return EXIT_BOOTLOADER;
+    if (faults != 0 && !o->allow_faults) {
+        fprintf(stderr, "openswarm-sim: %u kernel fault%s (above): the run fails (--allow-faults if "
+                        "the firmware provokes them on purpose)\n",
+                faults, faults == 1 ? "" : "s");
+        return EXIT_FAULT;
+    }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
     if (running && !o->quiet) progress_summary(o->seconds, n);
     return status;

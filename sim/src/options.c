@@ -27,6 +27,8 @@ static void usage(FILE *out) {
             "  -t, --time SECONDS   simulated time to run (default 10)\n"
             "  -n, --robots N       run N robots in lockstep (default: one per FIRMWARE.elf)\n"
             "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
+            "      --allow-faults   a kernel fault the firmware reports does not fail the run\n"
+            "                       (for tests that provoke one on purpose)\n"
             "  -q, --quiet          do not print the consoles\n"
             "      --trace          print the robots' LED colour and motor duty changes\n"
             "      --trace-csv FILE write them as CSV: time_s,cycle,robot,device,a,b,c\n"
@@ -77,7 +79,9 @@ static void usage(FILE *out) {
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
-            "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot).\n");
+            "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
+            "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
+            "left open: printed when it happens), unless --allow-faults.\n");
 }
 
 /* A whole number in [lo, hi], or -1 after printing what was expected. */
@@ -192,6 +196,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"world", required_argument, 0, 'w'},      {"out", required_argument, 0, 'o'},
         {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
         {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
+        {"allow-faults", no_argument, 0, 'A' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -209,6 +214,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 't': if (parse_time(optarg, o) != 0) return -1; o->given |= GIVEN_TIME; break;
         case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; place.robots_given = 1; o->given |= GIVEN_ROBOTS; break;
         case 's': o->expect_stop = 1; break;
+        case 'A' + 256: o->allow_faults = 1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;

@@ -31,7 +31,7 @@
 #define IR_LATENCY_CYCLES 64
 #define MAX_OHC_MESSAGES 16
 
-enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5 };
+enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5, EXIT_FAULT = 6 };
 
 /* Where a Kilobot's IR bootloader starts (a byte address): the ATmega328P's
  * 4 KB boot section. The overhead controller's BOOT message jumps there. */
@@ -58,6 +58,7 @@ typedef struct options {
     int robots;
     int quiet;
     int expect_stop;
+    int allow_faults; /* kernel faults do not fail the run */
     int marks;
     int profile;        /* cycles by function, printed at the end */
     int watched[MAX_WATCHED_IRQS];
@@ -114,6 +115,14 @@ typedef struct console {
     int quiet;            /* lines dropped; kernel faults still reported */
     uint8_t record[2];    /* a kernel fault record being received */
     int record_left;      /* its bytes still to come */
+    unsigned faults;      /* kernel faults reported */
+    /* Thread names the firmware told (kilobot_sim.h: 0x02, pid, name, 0),
+     * by the pid's slot (its low 4 bits); the pid they were told for. */
+    char thread_name[16][32];
+    uint8_t thread_pid[16];
+    int naming;           /* 0: no; 1: the pid comes next; 2: the name's characters */
+    uint8_t naming_pid;
+    size_t naming_len;
 } console;
 
 /* Told of every motor duty change at its cycle (the world moves the robot). */

@@ -202,7 +202,10 @@ int run_app(RunOptions o, const Paths &paths) {
                     world_duration(world_path).c_str());
     std::fflush(stdout); // before the simulator's output, which goes straight to ours
     int status = run_program(argv);
-    if (status != 0) return EXIT_FAILED;
+    if (status != 0) {
+        report(simulator_failure(status));
+        return EXIT_FAILED;
+    }
     if (world) {
         fs::path out(o.out);
         std::printf("Open %s in a browser, or look at %s\n", (out / "viewer.html").string().c_str(),

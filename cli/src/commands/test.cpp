@@ -128,7 +128,7 @@ std::vector<std::string> run_in_simulator_and_compare(const fs::path &file, cons
     argv.push_back(image.string());
     std::string ignored;
     int status = capture_program(argv, ignored);
-    if (status != 0) return {"the simulator exited with " + std::to_string(status)};
+    if (status != 0) return {simulator_failure(status)};
     return compare(file, e.changes, read_trace(csv));
 }
 

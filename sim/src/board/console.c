@@ -8,12 +8,14 @@
 
 #include "sim.h"
 
-#define FAULT_RECORD 0x01 /* kilobot_sim.h: SIM_FAULT_RECORD */
+#define FAULT_RECORD 0x01  /* kilobot_sim.h: SIM_FAULT_RECORD */
+#define THREAD_RECORD 0x02 /* kilobot_sim.h: SIM_THREAD_RECORD */
 
 static const char *fault_name(uint8_t fault) {
     switch (fault) {
     case 1: return "stack overflow"; /* SYS_FAULT_STACK_OVERFLOW */
     case 2: return "critical section left open"; /* SYS_FAULT_CRITICAL_LEAK */
+    case 3: return "CPU fault"; /* SYS_FAULT_CPU (ports that trap) */
     default: return "unknown fault";
     }
 }
@@ -30,14 +32,49 @@ static void put(console *c, uint8_t v) {
     }
 }
 
+/* A thread record's next byte: the pid, then the name up to its 0. */
+static void thread_record(console *c, uint8_t v) {
+    if (c->naming == 1) {
+        c->naming_pid = v;
+        c->naming_len = 0;
+        c->naming = 2;
+        return;
+    }
+    char *name = c->thread_name[c->naming_pid & 0x0Fu];
+    if (v == 0 || c->naming_len == sizeof c->thread_name[0] - 1) {
+        name[c->naming_len] = '\0';
+        c->thread_pid[c->naming_pid & 0x0Fu] = c->naming_pid;
+        if (v == 0) c->naming = 0;
+        return;
+    }
+    name[c->naming_len++] = (char)v;
+}
+
+/* " (blinker)" if the firmware named the thread with this very pid. */
+static const char *thread_label(const console *c, uint8_t pid, char *out, size_t size) {
+    const char *name = c->thread_name[pid & 0x0Fu];
+    if (name[0] == '\0' || c->thread_pid[pid & 0x0Fu] != pid) return "";
+    snprintf(out, size, " (%s)", name);
+    return out;
+}
+
 static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
     console *c = param;
     avr->data[addr] = v;
-    if (c->record_left > 0) {
+    if (c->naming != 0) {
+        thread_record(c, v);
+    } else if (c->record_left > 0) {
         c->record[2 - c->record_left--] = v;
-        if (c->record_left == 0)
-            fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u\n", c->prefix,
-                    fault_name(c->record[0]), c->record[1]);
+        if (c->record_left == 0) {
+            char label[40];
+            c->faults++;
+            fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u%s at %.6f s\n", c->prefix,
+                    fault_name(c->record[0]), c->record[1],
+                    thread_label(c, c->record[1], label, sizeof label),
+                    (double)avr->cycle / (double)avr->frequency);
+        }
+    } else if (v == THREAD_RECORD) {
+        c->naming = 1;
     } else if (v == FAULT_RECORD) {
         c->record_left = 2;
     } else {

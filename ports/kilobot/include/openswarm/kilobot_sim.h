@@ -36,6 +36,20 @@ static inline void sim_fault(uint8_t fault, uint8_t pid) {
     GPIOR1 = pid;
 }
 
+/* A thread's name (in flash), so the simulator can name it in a fault
+ * report: "kernel fault: stack overflow in thread 1 (blinker)". The
+ * generated start-up code (openswarm.json's threads) and kilolib call it. */
+#define SIM_THREAD_RECORD 0x02
+static inline void sim_thread_name(uint8_t pid, const char *name) {
+    GPIOR1 = SIM_THREAD_RECORD;
+    GPIOR1 = pid;
+    char c;
+    do {
+        c = (char)pgm_read_byte(name++);
+        GPIOR1 = (uint8_t)c;
+    } while (c != '\0');
+}
+
 /* Stop the simulation with an exit status (the real robot just halts). */
 static inline void sim_exit(uint8_t status) {
     GPIOR0 = status;

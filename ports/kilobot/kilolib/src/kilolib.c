@@ -10,6 +10,7 @@
 
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
+#include "openswarm/kilobot_sim.h"
 
 /* KILOLIB_IDLE_LOOP 1 (openswarm.json: "kernel": {"kilolib_idle_loop":
  * true}): a call of loop() during which kilo_ticks did not advance is
@@ -208,7 +209,9 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
         kilolib_activity_start(WAKEUP, kilolib_status_lights);
     else
         kilolib_activity_start(RUN, kilolib_program);
-    Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, 0);
+    sys_pid tx = SYS_PID_NONE;
+    if (Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, &tx) == SYS_OK)
+        sim_thread_name(tx, PSTR("kilolib message transmitter"));
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
 }

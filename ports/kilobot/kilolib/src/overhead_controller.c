@@ -6,6 +6,7 @@
 
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
+#include "openswarm/kilobot_sim.h"
 
 #ifndef KILOLIB_LOOP_STACK
 #define KILOLIB_LOOP_STACK 192 /* bytes for setup() and loop(), beyond the port's frame */
@@ -42,8 +43,9 @@ void kilolib_activity_start(uint8_t what, sys_process_fn fn) {
 }
 
 void kilolib_activity_thread_start(void) {
-    if (activity_fn != 0 && activity_pid == SYS_PID_NONE)
-        Sys_Start_Process_Ex(activity_fn, 0, KILOLIB_LOOP_STACK, 0, &activity_pid);
+    if (activity_fn != 0 && activity_pid == SYS_PID_NONE &&
+        Sys_Start_Process_Ex(activity_fn, 0, KILOLIB_LOOP_STACK, 0, &activity_pid) == SYS_OK)
+        sim_thread_name(activity_pid, PSTR("kilolib program (setup, loop)"));
 }
 
 /* The same request again (the overhead controller repeats its messages)
