@@ -24,9 +24,9 @@ struct PortCosts {
 
 const PortCosts &costs_of(const std::string &port) {
     static const std::vector<PortCosts> all = {
-        {"kilobot", 64, /* C */ 150, /* per thread */ 12, /* per event */ 4},
+        {"kilobot", 64, /* C */ 154, /* per thread */ 12, /* per event */ 4},
         // bench/qemu_bench.py
-        {"epuck2", 384, /* C */ 200, /* per thread */ 24, /* per event */ 8},
+        {"epuck2", 384, /* C */ 208, /* per thread */ 24, /* per event */ 8},
     };
     for (const auto &c : all)
         if (c.port == port) return c;

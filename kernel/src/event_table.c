@@ -229,6 +229,9 @@ void os_run_handlers(const sys_event_data *data) {
         if (handler != NULL && sub->event == data->event) {
             sys_event_condition condition = sub->condition;
             bool keep = true;
+#if OS_CFG_HANDLER_LIMIT_MS
+            os.handler_ms = 0;
+#endif
             port_irq_enable();
             if (condition == NULL || condition(data)) keep = handler(sub->pid, sub->event, data);
             port_irq_disable();

@@ -79,6 +79,9 @@ typedef struct os_kernel {
     uint8_t queued_bytes; /* in the event queue's ring */
     uint8_t held_event;   /* id + 1 of the occurrence held in its kept data, 0: none */
     uint8_t handling_event; /* id + 1 of the event whose handlers run, 0: none */
+#if OS_CFG_HANDLER_LIMIT_MS
+    uint16_t handler_ms; /* ticks the running handler has taken so far */
+#endif
     uint8_t event_waiters; /* threads blocked on an event: none means no waiter scan */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;

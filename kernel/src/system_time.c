@@ -8,6 +8,14 @@ void os_tick(void) {
         if (os.slice_left != 0) os.slice_left--; /* 0: the slice is over */
     }
     os_check_stack(os.current);
+#if OS_CFG_HANDLER_LIMIT_MS
+    /* A handler that never returns holds up everything the system thread
+     * does: said once, when it reaches the limit. */
+    if (os.handling_event != 0 && ++os.handler_ms == OS_CFG_HANDLER_LIMIT_MS) {
+        os_count(&os.stats.handler_overruns);
+        os_fault(SYS_FAULT_HANDLER_OVERRUN, SYS_PID_SYSTEM);
+    }
+#endif
 #if OS_CFG_CLOCK_EVENT
     /* An unregistered event has none: unregistering ends its subscriptions
      * and wakes its waiters. */

@@ -99,6 +99,17 @@
 #define OS_CFG_HAL_MAX_VALUE 16
 #endif
 
+/* An event handler that runs longer than this (ms) without returning is
+ * reported once as a kernel fault (SYS_FAULT_HANDLER_OVERRUN): handlers run
+ * to completion on the system thread, so one that never returns freezes
+ * every other handler and the threads that wait for them. 0: never. */
+#ifndef OS_CFG_HANDLER_LIMIT_MS
+#define OS_CFG_HANDLER_LIMIT_MS 1000
+#endif
+#if OS_CFG_HANDLER_LIMIT_MS > 65535
+#error "OS_CFG_HANDLER_LIMIT_MS must fit in 16 bits (at most 65535 ms)"
+#endif
+
 /* Default time slice of the round-robin scheduler, in ms (= ticks). */
 #ifndef OS_CFG_TIME_SLICE_MS
 #define OS_CFG_TIME_SLICE_MS 10

@@ -14,8 +14,10 @@ extern "C" {
 typedef enum sys_fault {
     SYS_FAULT_STACK_OVERFLOW = 1, /* a thread's stack guard was overwritten (OS_CFG_STACK_CHECK) */
     SYS_FAULT_CRITICAL_LEAK,      /* a thread ended inside a critical section */
-    SYS_FAULT_CPU                 /* the CPU trapped in a thread (bad address, undefined
+    SYS_FAULT_CPU,                /* the CPU trapped in a thread (bad address, undefined
                                      instruction, division by zero): the thread was ended */
+    SYS_FAULT_HANDLER_OVERRUN     /* an event handler ran past OS_CFG_HANDLER_LIMIT_MS
+                                     (reported once, with SYS_PID_SYSTEM; it runs on) */
 } sys_fault;
 
 /* Data of SYS_EVENT_FAULT. */
@@ -35,6 +37,7 @@ typedef struct sys_stats {
     uint16_t stack_overflows;
     uint16_t critical_leaks;
     uint16_t cpu_faults;             /* threads ended by a CPU trap (ports that catch them) */
+    uint16_t handler_overruns;       /* handlers that ran past OS_CFG_HANDLER_LIMIT_MS */
     uint8_t event_queue_peak;        /* most bytes ever queued */
 } sys_stats;
 

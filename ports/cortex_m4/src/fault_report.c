@@ -9,6 +9,7 @@ static const char *fault_name(uint8_t fault) {
     case SYS_FAULT_STACK_OVERFLOW: return "stack overflow";
     case SYS_FAULT_CRITICAL_LEAK: return "critical section left open";
     case SYS_FAULT_CPU: return "CPU fault";
+    case SYS_FAULT_HANDLER_OVERRUN: return "an event handler ran past its limit";
     default: return "fault";
     }
 }

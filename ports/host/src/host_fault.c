@@ -6,11 +6,18 @@
 #include "openswarm/fault.h"
 #include "openswarm/port.h"
 
+static const char *fault_text(uint8_t fault) {
+    switch (fault) {
+    case SYS_FAULT_STACK_OVERFLOW: return "openswarm: kernel fault: stack overflow in thread ";
+    case SYS_FAULT_CRITICAL_LEAK: return "openswarm: kernel fault: critical section left open in thread ";
+    case SYS_FAULT_HANDLER_OVERRUN: return "openswarm: kernel fault: an event handler ran past its limit in thread ";
+    default: return "openswarm: kernel fault in thread ";
+    }
+}
+
 void port_report_fault(uint8_t fault, sys_pid pid) {
-    static const char overflow[] = "openswarm: kernel fault: stack overflow in thread ";
-    static const char leak[] = "openswarm: kernel fault: critical section left open in thread ";
-    char line[sizeof leak + 4];
-    const char *what = fault == SYS_FAULT_STACK_OVERFLOW ? overflow : leak;
+    char line[96];
+    const char *what = fault_text(fault);
     size_t n = 0;
     while (what[n] != '\0') {
         line[n] = what[n];

@@ -16,6 +16,7 @@ static const char *fault_name(uint8_t fault) {
     case 1: return "stack overflow"; /* SYS_FAULT_STACK_OVERFLOW */
     case 2: return "critical section left open"; /* SYS_FAULT_CRITICAL_LEAK */
     case 3: return "CPU fault"; /* SYS_FAULT_CPU (ports that trap) */
+    case 4: return "an event handler ran past its limit"; /* SYS_FAULT_HANDLER_OVERRUN */
     default: return "unknown fault";
     }
 }
