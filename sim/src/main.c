@@ -42,6 +42,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     const char *elf = firmware_of(o, index);
     r->avr = firmware_load(elf);
     if (r->avr == NULL) return -1;
+    main_stack_paint(r, elf);
     if (index == 0) {
         nominal_hz = r->avr->frequency;
     } else if (r->avr->frequency != nominal_hz) {
@@ -70,11 +71,13 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
 }
 
 static int report(int n, const options *o) {
-    int status = 0, crashed = 0, running = 0, booted = 0;
+    int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, overflowed = 0;
     unsigned faults = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         faults += r->console.faults;
+        hung |= r->hung;
+        overflowed |= main_stack_report(r, o->main_stack);
         double t = (double)r->avr->cycle / (double)r->avr->frequency;
         if (robot_at_bootloader(r)) {
             fprintf(stderr, "openswarm-sim: robot %d jumped to the bootloader (BOOT message) at "
@@ -101,6 +104,8 @@ static int report(int n, const options *o) {
     }
     if (crashed) return EXIT_CRASH;
     if (booted) return EXIT_BOOTLOADER;
+    if (hung) return EXIT_HANG;
+    if (overflowed && !o->allow_faults) return EXIT_FAULT;
     if (faults != 0 && !o->allow_faults) {
         fprintf(stderr, "openswarm-sim: %u kernel fault%s (above): the run fails (--allow-faults if "
                         "the firmware provokes them on purpose)\n",
@@ -151,6 +156,7 @@ static void run(const options *o) {
         int all_stopped = lockstep_window(end);
         ir_channel_hand_over(LOCKSTEP_CYCLES);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
+        for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
         progress_update(end);
         if (all_stopped || end == limit) break;
     }

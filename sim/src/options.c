@@ -29,6 +29,10 @@ static void usage(FILE *out) {
             "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
             "      --allow-faults   a kernel fault the firmware reports does not fail the run\n"
             "                       (for tests that provoke one on purpose)\n"
+            "      --mask-limit MS  a firmware running with interrupts masked for longer fails\n"
+            "                       the run, exit 7 (default 1000; 0: never)\n"
+            "      --main-stack     print each robot's main stack's worst use at the end\n"
+            "                       (main, interrupts and event handlers run there)\n"
             "  -q, --quiet          do not print the consoles\n"
             "      --trace          print the robots' LED colour and motor duty changes\n"
             "      --trace-csv FILE write them as CSV: time_s,cycle,robot,device,a,b,c\n"
@@ -81,7 +85,8 @@ static void usage(FILE *out) {
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
             "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
             "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
-            "left open: printed when it happens), unless --allow-faults.\n");
+            "left open: printed when it happens), unless --allow-faults, or its main\n"
+            "stack ran into the RAM below it, 7 a firmware hung with interrupts masked.\n");
 }
 
 /* A whole number in [lo, hi], or -1 after printing what was expected. */
@@ -197,9 +202,11 @@ int parse_options(int argc, char **argv, options *o) {
         {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
         {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
         {"allow-faults", no_argument, 0, 'A' + 256},
+        {"mask-limit", required_argument, 0, 'M' + 256}, {"main-stack", no_argument, 0, 'S' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
+    o->mask_limit_ms = 1000;
     o->robots = 1;
     o->ir_range_mm = DEFAULT_IR_RANGE_MM;
     placement_options place = {-1, NULL, NULL, 0};
@@ -215,6 +222,8 @@ int parse_options(int argc, char **argv, options *o) {
         case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; place.robots_given = 1; o->given |= GIVEN_ROBOTS; break;
         case 's': o->expect_stop = 1; break;
         case 'A' + 256: o->allow_faults = 1; break;
+        case 'M' + 256: if ((v = number("--mask-limit", optarg, 0, 3600000, "1000")) < 0) return -1; o->mask_limit_ms = (double)v; break;
+        case 'S' + 256: o->main_stack = 1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;

@@ -31,7 +31,8 @@
 #define IR_LATENCY_CYCLES 64
 #define MAX_OHC_MESSAGES 16
 
-enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5, EXIT_FAULT = 6 };
+enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5, EXIT_FAULT = 6,
+       EXIT_HANG = 7 };
 
 /* Where a Kilobot's IR bootloader starts (a byte address): the ATmega328P's
  * 4 KB boot section. The overhead controller's BOOT message jumps there. */
@@ -59,6 +60,8 @@ typedef struct options {
     int quiet;
     int expect_stop;
     int allow_faults; /* kernel faults do not fail the run */
+    double mask_limit_ms; /* interrupts masked longer than this fail the run; 0: never */
+    int main_stack;     /* print each robot's main stack's worst use */
     int marks;
     int profile;        /* cycles by function, printed at the end */
     int watched[MAX_WATCHED_IRQS];
@@ -184,11 +187,24 @@ typedef struct robot {
      * on a sleeping robot from outside (an IR edge) sets it back to 0. */
     avr_cycle_count_t doze_until;
     int wake_registered; /* its window-end timer is set */
+    uint16_t main_stack_floor; /* the RAM the image reserves ends here; 0: unmeasured */
+    avr_cycle_count_t masked_since; /* interrupts off since this cycle; 0: they are on */
+    int hung;                  /* reported: interrupts masked past the limit */
 } robot;
 
 /* firmware.c: check and load an ELF into a new simulated MCU */
 int firmware_check(const char *path);
 avr_t *firmware_load(const char *path);
+
+/* main_stack.c: the main stack's worst use, from a pattern painted over
+ * its room at load; report prints it (print) and says if it overflowed
+ * (returns 1). */
+void main_stack_paint(robot *r, const char *elf_path);
+int main_stack_report(const robot *r, int print);
+
+/* interrupt_watch.c: a robot running with interrupts masked for more than
+ * limit_ms (0: never reported) is reported once and marked hung. */
+void interrupt_watch_check(robot *r, double limit_ms);
 
 /* profile.c: --profile */
 int profile_load(const char *elf_path);
