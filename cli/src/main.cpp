@@ -7,7 +7,11 @@ namespace openswarm {
 
 int exit_code = EXIT_OK;
 
-void report(const std::string &message) { std::fprintf(stderr, "openswarm: %s\n", message.c_str()); }
+// Flushed after what the command printed before it, in the order it came.
+void report(const std::string &message) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "openswarm: %s\n", message.c_str());
+}
 
 }  // namespace openswarm
 

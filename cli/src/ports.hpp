@@ -44,6 +44,10 @@ struct PortInfo {
     std::string toolchain; // the CMake toolchain file, relative to OpenSwarm's root
     std::string size_tool; // reads an image's section sizes (-A)
     Runner runner;
+    std::string flash_note = {}; // why flash_bytes is less than the MCU has
+    // Below this much RAM left for the main stack (main, interrupts, event
+    // handlers), the build warns; 0: the port reserves it at link time.
+    unsigned main_stack_minimum = 0;
 };
 
 // A processor a device can use, as openswarm.json names it, and what the

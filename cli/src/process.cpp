@@ -63,8 +63,10 @@ std::string simulator_failure(int status) {
     case 3: return "the firmware crashed (above): `openswarm run --gdb 1234` shows where";
     case 4: return "the firmware did not stop by itself in the time given";
     case 5: return "a robot jumped to the bootloader (a BOOT message)";
-    case 6: return "the firmware reported a kernel fault (above: which thread, when): the run "
-                   "fails; a stack overflow wants a bigger \"stack\" in openswarm.json";
+    case 6: return "the firmware reported a kernel fault, or its main stack overflowed (above: "
+                   "which, when): the run fails; a thread's stack overflow wants a bigger "
+                   "\"stack\" in openswarm.json";
+    case 7: return "the firmware hung with interrupts masked (above: since when, where)";
     default: return "the firmware stopped with status " + std::to_string(status);
     }
 }
@@ -87,7 +89,7 @@ int capture_program_and_errors(const std::vector<std::string> &argv, std::string
 
 int run_program_lines(const std::vector<std::string> &argv,
                       const std::function<void(const std::string &)> &on_line,
-                      double timeout_seconds) {
+                      double timeout_seconds, bool with_errors) {
     int pipefd[2];
     if (pipe(pipefd) != 0) return 127;
     std::fflush(stdout);
@@ -95,6 +97,7 @@ int run_program_lines(const std::vector<std::string> &argv,
     if (pid < 0) return 127;
     if (pid == 0) {
         dup2(pipefd[1], STDOUT_FILENO);
+        if (with_errors) dup2(pipefd[1], STDERR_FILENO);
         close(pipefd[0]);
         close(pipefd[1]);
         exec_child(argv);

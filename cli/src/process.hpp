@@ -26,10 +26,11 @@ int capture_program_and_errors(const std::vector<std::string> &argv, std::string
 std::string simulator_failure(int status);
 
 // Run it, handing each line of its standard output (without the newline)
-// to on_line as it comes; its standard error goes to ours. After
-// timeout_seconds (0: never) it is killed and 124 returned.
+// to on_line as it comes; its standard error goes to ours, or with
+// with_errors to on_line too. After timeout_seconds (0: never) it is
+// killed and 124 returned.
 int run_program_lines(const std::vector<std::string> &argv,
                       const std::function<void(const std::string &)> &on_line,
-                      double timeout_seconds);
+                      double timeout_seconds, bool with_errors = false);
 
 }  // namespace openswarm

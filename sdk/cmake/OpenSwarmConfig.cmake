@@ -56,8 +56,13 @@ function(openswarm_add_firmware name)
     target_include_directories(${name} PRIVATE ${OPENSWARM_GENERATED_DIR})
   endif()
   if(F_PORT STREQUAL "kilobot")
+    # <name>.hex is what KiloGUI uploads: flash only, without the .mmcu
+    # record the simulator reads (at 0x910000 it would make no sense to a
+    # programmer) and without EEPROM, which holds the robot's calibration.
     add_custom_command(TARGET ${name} POST_BUILD
-      COMMAND ${CMAKE_SIZE} --format=avr --mcu=${OPENSWARM_MCU} $<TARGET_FILE:${name}>)
+      COMMAND ${CMAKE_SIZE} --format=avr --mcu=${OPENSWARM_MCU} $<TARGET_FILE:${name}>
+      COMMAND ${CMAKE_OBJCOPY} -O ihex -j .text -j .data $<TARGET_FILE:${name}>
+              $<TARGET_FILE_DIR:${name}>/${name}.hex)
   elseif(F_PORT STREQUAL "epuck2")
     add_custom_command(TARGET ${name} POST_BUILD COMMAND ${CMAKE_SIZE} $<TARGET_FILE:${name}>)
   endif()

@@ -10,6 +10,7 @@
 #include "../app_sources.hpp"
 #include "../attribution.hpp"
 #include "../generate.hpp"
+#include "../link_errors.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
 #include "commands.hpp"
@@ -59,6 +60,20 @@ std::string bar(unsigned used, unsigned total) {
     std::snprintf(percent, sizeof percent, "%5.1f%%", total ? 100.0 * used / total : 0.0);
     return "[" + std::string(filled, '=') + std::string(width - filled, ' ') + "] " + percent +
            " (" + std::to_string(used) + " of " + std::to_string(total) + " bytes)";
+}
+
+// The linker checks the RAM the image reserves, not the main stack above
+// it, where main(), the interrupts and the event handlers run: an image
+// that leaves it too little builds and then crashes.
+void warn_main_stack(const PortInfo &info, const BuildResult &r, const AppConfig &config) {
+    if (!info.main_stack_minimum || r.ram >= info.ram_bytes) return;
+    unsigned room = info.ram_bytes - r.ram;
+    if (room >= info.main_stack_minimum) return;
+    report("warning: RAM leaves the main stack " + std::to_string(room) +
+           " bytes, less than the " + std::to_string(info.main_stack_minimum) +
+           " a small app needs (main, the interrupts and the event handlers run there): lower "
+           "the threads' \"stack\" in " + config.file.string() +
+           "; `openswarm size` measures this app's worst use in the simulator");
 }
 
 struct BuildOptions {
@@ -199,8 +214,14 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         return std::nullopt;
     }
     std::fprintf(out, "Building %s\n", config.name.c_str());
-    if (run({"cmake", "--build", build_dir.string()}) != 0) {
-        report("the build failed (the compiler's messages are above)");
+    LinkOverflows overflows;
+    auto show = [&](const std::string &line) {
+        std::fprintf(out, "%s\n", line.c_str());
+        overflows.scan(line);
+    };
+    if (run_program_lines({"cmake", "--build", build_dir.string()}, show, 0, true) != 0) {
+        auto why = overflows.explain(config, generated / "openswarm_config.h");
+        report(why ? *why : "the build failed (the compiler's messages are above)");
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
@@ -213,6 +234,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
+    warn_main_stack(info, result, config);
     return result;
 }
 

@@ -7,6 +7,8 @@
 #include "../app_config.hpp"
 #include "../attribution.hpp"
 #include "../footprint.hpp"
+#include "../ports.hpp"
+#include "../process.hpp"
 #include "build.hpp"
 #include "commands.hpp"
 
@@ -80,7 +82,34 @@ void print_equation(const Footprint &f) {
     for (const auto &w : f.warnings) std::printf("Warning: %s\n", w.c_str());
 }
 
-int run_size(const std::string &dir, const Paths &paths) {
+// The main stack's worst use, measured by running the image in the
+// simulator (openswarm-sim --main-stack) for seconds of simulated time.
+void print_main_stack(const Paths &paths, const BuildResult &built, double seconds) {
+    const PortInfo &info = port_info(built.port);
+    if (info.runner != Runner::simavr || paths.simulator.empty()) return;
+    std::string out;
+    char time[32];
+    std::snprintf(time, sizeof time, "%g", seconds);
+    int status = capture_program_and_errors(
+        {paths.simulator.string(), "--quiet", "--main-stack", "--time", time, built.image.string()},
+        out);
+    unsigned used = 0, room = 0;
+    auto at = out.find("main stack: worst use ");
+    if (at == std::string::npos ||
+        std::sscanf(out.c_str() + at, "main stack: worst use %u of %u", &used, &room) != 2) {
+        std::printf("\nMain stack: not measured (the simulator said: %s)\n", out.c_str());
+        return;
+    }
+    std::printf("\nMain stack (main, interrupts, event handlers): worst use %u of its %u bytes in "
+                "%s s in the simulator%s\n",
+                used, room, time,
+                status == 0 ? "" : " (the run failed: `openswarm run` shows why)");
+    if (used >= room)
+        std::printf("Warning: it ran into the RAM below it: lower the threads' \"stack\" in "
+                    "openswarm.json\n");
+}
+
+int run_size(const std::string &dir, const Paths &paths, double seconds) {
     auto built = build_app(paths, dir, "");
     if (!built) return exit_code;
     std::printf("Building once more without link-time optimisation, to attribute every byte\n");
@@ -98,6 +127,7 @@ int run_size(const std::string &dir, const Paths &paths) {
     print_stacks(f);
     print_events(f);
     print_equation(f);
+    print_main_stack(paths, *built, seconds);
     return EXIT_OK;
 }
 
@@ -105,9 +135,14 @@ int run_size(const std::string &dir, const Paths &paths) {
 
 void add_size_command(CLI::App &app, const Paths &paths) {
     auto dir = std::make_shared<std::string>(".");
+    auto seconds = std::make_shared<double>(5.0);
     CLI::App *cmd = app.add_subcommand("size", "Show where the app's flash and RAM go");
     cmd->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
-    cmd->callback([dir, &paths] { exit_code = run_size(*dir, paths); });
+    cmd->add_option("-t,--time", *seconds,
+                    "simulated seconds to run the app for to measure the main stack (Kilobot)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.001, 3600.0));
+    cmd->callback([dir, seconds, &paths] { exit_code = run_size(*dir, paths, *seconds); });
 }
 
 }  // namespace openswarm

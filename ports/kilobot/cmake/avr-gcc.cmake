@@ -35,9 +35,12 @@ set(CMAKE_C_FLAGS_INIT "${_avr_flags}")
 set(CMAKE_CXX_FLAGS_INIT "${_avr_flags} -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
 # --undefined keeps the .mmcu record simavr reads; it must sit where
-# simavr 1.6 looks for it, or it crashes at load.
+# simavr 1.6 looks for it, or it crashes at load. The program may use the
+# flash below the Kilobot's bootloader (0x7000, the ATmega328P's 4 KB boot
+# section): a bigger image fails at link time instead of on the robot.
+set(OPENSWARM_FLASH_BYTES 0x7000 CACHE STRING "flash the program may use (below the bootloader)")
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-mmcu=${OPENSWARM_MCU} -Os ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000")
+    "-mmcu=${OPENSWARM_MCU} -Os ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000 -Wl,--defsym=__TEXT_REGION_LENGTH__=${OPENSWARM_FLASH_BYTES}")
 set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
