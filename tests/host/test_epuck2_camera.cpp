@@ -144,6 +144,22 @@ protected:
         epuck2_model_dcmi.CR &= ~DCMI_CR_CAPTURE; // snapshot: one frame
         dma_interrupt(DMA_FLAG_TC);
     }
+    // The DCMI raises flags; the handler runs; ICR clears what it names.
+    static void dcmi_interrupt(uint32_t flags) {
+        epuck2_model_dcmi.RIS |= flags;
+        DCMI_IRQHandler();
+        epuck2_model_dcmi.RIS &= ~epuck2_model_dcmi.ICR;
+        epuck2_model_dcmi.ICR = 0;
+    }
+    static void frame_end() { dcmi_interrupt(DCMI_IT_FRAME); }
+    static void whole_frame() {
+        sensor_sends_frame();
+        transfer_complete();
+        frame_end();
+    }
+    static bool capturing() {
+        return (epuck2_model_dcmi.CR & DCMI_CR_CAPTURE) && (stream.CR & DMA_SxCR_EN);
+    }
     static void expect_rearmed() {
         EXPECT_EQ(W * H * 2 / 4, stream.NDTR) << "a whole frame's words again";
         EXPECT_TRUE(stream.CR & DMA_SxCR_EN);
@@ -236,7 +252,7 @@ TEST_F(Camera, DcmiAndDmaAreSetForOneFrameOfWords) {
     EXPECT_TRUE(d.CR & DCMI_CR_CM_SNAPSHOT) << "one frame a capture";
     EXPECT_TRUE(d.CR & DCMI_CR_PCKPOL) << "sampled on PCLK's rising edge";
     EXPECT_EQ(0u, d.CR & (DCMI_CR_HSPOL | DCMI_CR_VSPOL | DCMI_CR_EDM_MASK)) << "syncs active low, 8 bits";
-    EXPECT_EQ(DCMI_IT_OVR | DCMI_IT_ERR, d.IER);
+    EXPECT_EQ(DCMI_IT_FRAME | DCMI_IT_OVR | DCMI_IT_ERR, d.IER);
     EXPECT_EQ((uint32_t)(uintptr_t)&epuck2_model_dcmi.DR, stream.PAR);
     EXPECT_EQ((uint32_t)(uintptr_t)epuck2_camera_model_dma_memory(), stream.M0AR);
     EXPECT_EQ(W * H * 2 / 4, stream.NDTR) << "frame bytes / 4";
@@ -275,6 +291,22 @@ TEST_F(Camera, ATransferCompleteHandsOnTheFrameAsRgb565) {
     EXPECT_EQ(0xF800, px[0]) << "red, not 0x00F8 (blue and green)";
     for (unsigned i = 1; i < W * H; i++) ASSERT_EQ(v(i), px[i]) << "pixel " << i;
     EXPECT_EQ(0u, epuck2_camera_frames_dropped());
+}
+
+TEST_F(Camera, TheNextCaptureWaitsForTheHandOverAndTheFrameEnd) {
+    ASSERT_TRUE(start());
+    sensor_sends_frame();
+    transfer_complete();
+    EXPECT_FALSE(capturing()) << "the DCMI may still be in the frame";
+    frame_end();
+    expect_rearmed();
+    // The other order: the frame end first, the DMA's FIFO still draining.
+    sensor_sends_frame();
+    epuck2_model_dcmi.CR &= ~DCMI_CR_CAPTURE;
+    frame_end();
+    EXPECT_FALSE(capturing()) << "the frame not yet handed on: its memory is in use";
+    transfer_complete();
+    EXPECT_EQ(2u, frames.size());
     expect_rearmed();
 }
 
@@ -286,21 +318,25 @@ TEST_F(Camera, AFrameOnlyAtTransferComplete) {
     EXPECT_EQ(0u, frames.size()) << "half a frame is no frame";
     transfer_complete();
     dma_interrupt(0);
+    frame_end();
     EXPECT_EQ(1u, frames.size()) << "one frame a transfer";
-    sensor_sends_frame();
-    transfer_complete();
+    frame_end();
+    EXPECT_EQ(1u, frames.size()) << "a frame end alone hands nothing on";
+    whole_frame();
     EXPECT_EQ(2u, frames.size());
 }
 
 TEST_F(Camera, AnOverrunDropsTheFrameAndRestartsTheCapture) {
     ASSERT_TRUE(start());
     epuck2_model_dma2.S[1].NDTR = 1234; // part way
-    epuck2_model_dcmi.RIS |= DCMI_IT_OVR;
-    DCMI_IRQHandler();
-    EXPECT_TRUE(epuck2_model_dcmi.ICR & DCMI_IT_OVR) << "the overrun flag cleared";
+    dcmi_interrupt(DCMI_IT_OVR);
+    EXPECT_EQ(0u, epuck2_model_dcmi.RIS) << "the overrun flag cleared";
     EXPECT_EQ(1u, epuck2_camera_frames_dropped());
+    EXPECT_TRUE(epuck2_model_dcmi.CR & DCMI_CR_ENABLE);
     expect_rearmed();
     EXPECT_EQ(0u, frames.size());
+    whole_frame();
+    EXPECT_EQ(1u, frames.size()) << "the next frame is whole";
 }
 
 TEST_F(Camera, ATransferCompleteWithAnOverrunPendingIsNoFrame) {
@@ -311,9 +347,9 @@ TEST_F(Camera, ATransferCompleteWithAnOverrunPendingIsNoFrame) {
     EXPECT_EQ(0u, frames.size()) << "bytes are missing from it";
     EXPECT_EQ(1u, epuck2_camera_frames_dropped());
     expect_rearmed();
-    epuck2_model_dcmi.RIS = 0; // the ICR write took it
-    sensor_sends_frame();
-    transfer_complete();
+    epuck2_model_dcmi.RIS &= ~epuck2_model_dcmi.ICR; // the ICR write took it
+    EXPECT_EQ(0u, epuck2_model_dcmi.RIS);
+    whole_frame();
     EXPECT_EQ(1u, frames.size()) << "the next frame is whole";
 }
 

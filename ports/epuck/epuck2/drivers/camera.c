@@ -4,10 +4,14 @@
  * to a 32-bit word, the first byte lowest; DMA2 stream 1, channel 1, moves
  * the words to RAM through its FIFO. At transfer complete the frame is
  * whole: its bytes, high byte of each pixel first as the sensor sends them,
- * become RGB565 pixels in place, the frame is handed on, and the next
- * capture starts into the same memory. An overrun or error loses bytes, so
- * that frame is dropped and the capture restarted from the next frame's
- * start. Facts: ports/epuck/README.md. */
+ * become RGB565 pixels in place and the frame is handed on. The next
+ * capture starts into the same memory once both the frame has been handed
+ * on and the DCMI has seen the frame end (its capture bit is then clear;
+ * the two come in either order, the DMA's FIFO draining after the last
+ * byte). An overrun or error loses bytes: that frame is dropped and the
+ * DCMI restarted, to begin again at the next frame's start. Both
+ * interrupts must have the same priority (neither preempts the other).
+ * Facts: ports/epuck/README.md. */
 #include "camera.h"
 
 #include "po8030.h"
@@ -30,6 +34,10 @@ static union {
 
 static epuck2_camera_frame_done frame_done;
 static volatile uint32_t dropped;
+/* What the frame under way has done of HANDED_ON and ENDED. */
+#define HANDED_ON 1u
+#define ENDED 2u
+static uint8_t frame_state;
 static const epuck_camera_frame frame = {memory.pixels, EPUCK2_CAMERA_WIDTH, EPUCK2_CAMERA_HEIGHT};
 
 /* HSYNC PA4, PCLK PA6, D5 PB6, VSYNC PB7, D0 PC6, D1 PC7, D2 PE0, D3 PE1,
@@ -56,13 +64,22 @@ static void dma_reload(void) {
 }
 
 static void capture_next(void) {
-    DCMI->ICR = DCMI_IT_OVR | DCMI_IT_ERR;
+    frame_state = 0;
+    DCMI->ICR = DCMI_IT_FRAME | DCMI_IT_OVR | DCMI_IT_ERR;
     dma_reload();
     DCMI->CR |= DCMI_CR_CAPTURE;
 }
 
+static void frame_did(uint8_t what) {
+    frame_state |= what;
+    if (frame_state == (HANDED_ON | ENDED)) capture_next();
+}
+
+/* Off and on: the DCMI drops the rest of the frame and waits for the next
+ * one's start. */
 static void drop_frame(void) {
-    DCMI->CR &= ~DCMI_CR_CAPTURE;
+    DCMI->CR &= ~(DCMI_CR_CAPTURE | DCMI_CR_ENABLE);
+    DCMI->CR |= DCMI_CR_ENABLE;
     dropped++;
     capture_next();
 }
@@ -89,11 +106,16 @@ void DMA2_Stream1_IRQHandler(void) {
     }
     to_rgb565();
     if (frame_done != 0) frame_done(&frame);
-    capture_next();
+    frame_did(HANDED_ON);
 }
 
 void DCMI_IRQHandler(void) {
-    if (DCMI->RIS & (DCMI_IT_OVR | DCMI_IT_ERR)) drop_frame();
+    uint32_t raised = DCMI->RIS & (DCMI_IT_FRAME | DCMI_IT_OVR | DCMI_IT_ERR);
+    DCMI->ICR = raised;
+    if (raised & (DCMI_IT_OVR | DCMI_IT_ERR))
+        drop_frame();
+    else if (raised & DCMI_IT_FRAME)
+        frame_did(ENDED);
 }
 
 uint32_t epuck2_camera_frames_dropped(void) { return dropped; }
@@ -124,7 +146,7 @@ bool epuck2_camera_init(epuck2_camera_frame_done on_frame) {
     RCC_ENABLES->AHB2ENR |= RCC_AHB2ENR_DCMIEN;
     /* 8 data bits (EDM 00), every frame, no crop, no embedded syncs. */
     DCMI->CR = DCMI_CR_CM_SNAPSHOT | DCMI_CR_PCKPOL;
-    DCMI->IER = DCMI_IT_OVR | DCMI_IT_ERR;
+    DCMI->IER = DCMI_IT_FRAME | DCMI_IT_OVR | DCMI_IT_ERR;
     dma_setup();
     DCMI->CR |= DCMI_CR_ENABLE;
     capture_next();

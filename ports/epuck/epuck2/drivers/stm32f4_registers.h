@@ -123,7 +123,8 @@ typedef struct stm32_rcc_enables {
 #define DCMI_CR_VSPOL (1u << 7)
 #define DCMI_CR_EDM_MASK (3u << 10)
 #define DCMI_CR_ENABLE (1u << 14)
-#define DCMI_IT_OVR (1u << 1) /* RIS, IER, ICR alike */
+#define DCMI_IT_FRAME (1u << 0) /* RIS, IER, ICR alike */
+#define DCMI_IT_OVR (1u << 1)
 #define DCMI_IT_ERR (1u << 2)
 
 #define DMA_SxCR_EN (1u << 0)
