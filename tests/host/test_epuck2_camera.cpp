@@ -304,6 +304,7 @@ TEST_F(Camera, TheNextCaptureWaitsForTheHandOverAndTheFrameEnd) {
     sensor_sends_frame();
     epuck2_model_dcmi.CR &= ~DCMI_CR_CAPTURE;
     frame_end();
+    EXPECT_EQ(0u, epuck2_model_dcmi.RIS) << "the flag cleared, or its interrupt would come back at once";
     EXPECT_FALSE(capturing()) << "the frame not yet handed on: its memory is in use";
     transfer_complete();
     EXPECT_EQ(2u, frames.size());
