@@ -1,9 +1,13 @@
 /* The STM32F407's peripherals the e-puck2's drivers use (RM0090: GPIO
- * 8.4, general-purpose timers 18.4, RCC 7.3), as structs at their
- * addresses. Built with EPUCK2_REGISTER_MODEL (host tests), each is an
- * ordinary struct in RAM instead: the test plays the hardware, reading
- * what the driver wrote and applying what the silicon would (a BSRR write
- * to ODR, a timer's update flag). */
+ * 8.4, general-purpose timers 18.4, basic timers 20.4, RCC 7.3, ADC 13.13,
+ * DMA 10.5, DCMI 15.8, I2C 27.6, SPI 28.5), as structs at their addresses.
+ * Built with EPUCK2_REGISTER_MODEL (host tests), each is an ordinary struct
+ * in RAM instead: the test plays the hardware, reading what the driver
+ * wrote and applying what the silicon would (a BSRR write to ODR, a timer's
+ * update flag). A driver that waits for the hardware calls STM32_POLL()
+ * each time round its loop: nothing on the robot, the test's model of the
+ * silicon on the host (epuck2_model_poll), which acts there as the
+ * peripheral would meanwhile. */
 #ifndef EPUCK2_STM32F4_REGISTERS_H
 #define EPUCK2_STM32F4_REGISTERS_H
 
@@ -22,6 +26,27 @@ typedef struct stm32_adc {
     volatile uint32_t SR, CR1, CR2, SMPR1, SMPR2, JOFR[4], HTR, LTR, SQR1, SQR2, SQR3, JSQR, JDR[4], DR;
 } stm32_adc;
 
+typedef struct stm32_i2c {
+    volatile uint32_t CR1, CR2, OAR1, OAR2, DR, SR1, SR2, CCR, TRISE, FLTR;
+} stm32_i2c;
+
+typedef struct stm32_spi {
+    volatile uint32_t CR1, CR2, SR, DR, CRCPR, RXCRCR, TXCRCR, I2SCFGR, I2SPR;
+} stm32_spi;
+
+typedef struct stm32_dcmi {
+    volatile uint32_t CR, SR, RIS, IER, MIS, ICR, ESCR, ESUR, CWSTRT, CWSIZE, DR;
+} stm32_dcmi;
+
+typedef struct stm32_dma_stream {
+    volatile uint32_t CR, NDTR, PAR, M0AR, M1AR, FCR;
+} stm32_dma_stream;
+
+typedef struct stm32_dma {
+    volatile uint32_t LISR, HISR, LIFCR, HIFCR;
+    stm32_dma_stream S[8];
+} stm32_dma;
+
 typedef struct stm32_rcc_enables {
     volatile uint32_t AHB1ENR, AHB2ENR, AHB3ENR, reserved, APB1ENR, APB2ENR;
 } stm32_rcc_enables;
@@ -29,7 +54,10 @@ typedef struct stm32_rcc_enables {
 /* ADC prescaler /8 in the common control register: APB2's 84 MHz / 8. */
 #define ADC_CCR_ADCPRE_DIV8 (3u << 16)
 
+#define GPIO_MODE_INPUT 0u
 #define GPIO_MODE_OUTPUT 1u
+#define GPIO_MODE_ALTERNATE 2u
+#define GPIO_PULL_DOWN 2u
 #define TIM_CR1_CEN (1u << 0)
 #define TIM_CR1_ARPE (1u << 7)
 #define TIM_DIER_UIE (1u << 0)
@@ -54,11 +82,80 @@ typedef struct stm32_rcc_enables {
 #define GPIO_MODE_ANALOG 3u
 #define RCC_APB1ENR_TIM3EN (1u << 1)
 #define RCC_APB1ENR_TIM4EN (1u << 2)
+#define RCC_AHB1ENR_GPIOAEN (1u << 0)
+#define RCC_AHB1ENR_GPIODEN (1u << 3)
+#define RCC_AHB1ENR_DMA2EN (1u << 22)
+#define RCC_AHB2ENR_DCMIEN (1u << 0)
+#define RCC_APB1ENR_TIM5EN (1u << 3)
+#define RCC_APB1ENR_TIM7EN (1u << 5)
+#define RCC_APB1ENR_I2C1EN (1u << 21)
+#define RCC_APB2ENR_SPI1EN (1u << 12)
+
+#define TIM_CCMR1_OC1PE (1u << 3)
+#define TIM_CCMR1_OC1M_PWM1 (6u << 4)
+#define TIM_CCER_CC1E (1u << 0)
+
+#define I2C_CR1_PE (1u << 0)
+#define I2C_CR1_START (1u << 8)
+#define I2C_CR1_STOP (1u << 9)
+#define I2C_SR1_SB (1u << 0)
+#define I2C_SR1_ADDR (1u << 1)
+#define I2C_SR1_BTF (1u << 2)
+#define I2C_SR1_TXE (1u << 7)
+#define I2C_SR1_BERR (1u << 8)
+#define I2C_SR1_ARLO (1u << 9)
+#define I2C_SR1_AF (1u << 10)
+#define I2C_CCR_FS (1u << 15)
+
+#define SPI_CR1_MSTR (1u << 2)
+#define SPI_CR1_BR_DIV8 (2u << 3)
+#define SPI_CR1_SPE (1u << 6)
+#define SPI_CR1_SSI (1u << 8)
+#define SPI_CR1_SSM (1u << 9)
+#define SPI_SR_RXNE (1u << 0)
+#define SPI_SR_TXE (1u << 1)
+#define SPI_SR_BSY (1u << 7)
+
+#define DCMI_CR_CAPTURE (1u << 0)
+#define DCMI_CR_CM_SNAPSHOT (1u << 1)
+#define DCMI_CR_PCKPOL (1u << 5)
+#define DCMI_CR_HSPOL (1u << 6)
+#define DCMI_CR_VSPOL (1u << 7)
+#define DCMI_CR_EDM_MASK (3u << 10)
+#define DCMI_CR_ENABLE (1u << 14)
+#define DCMI_IT_FRAME (1u << 0) /* RIS, IER, ICR alike */
+#define DCMI_IT_OVR (1u << 1)
+#define DCMI_IT_ERR (1u << 2)
+
+#define DMA_SxCR_EN (1u << 0)
+#define DMA_SxCR_DMEIE (1u << 1)
+#define DMA_SxCR_TEIE (1u << 2)
+#define DMA_SxCR_TCIE (1u << 4)
+#define DMA_SxCR_DIR_MASK (3u << 6) /* 00: peripheral to memory */
+#define DMA_SxCR_CIRC (1u << 8)
+#define DMA_SxCR_MINC (1u << 10)
+#define DMA_SxCR_PSIZE_WORD (2u << 11)
+#define DMA_SxCR_MSIZE_WORD (2u << 13)
+#define DMA_SxCR_PL_VERY_HIGH (3u << 16)
+#define DMA_SxCR_CHSEL(c) ((uint32_t)(c) << 25)
+#define DMA_SxFCR_FTH_FULL (3u << 0)
+#define DMA_SxFCR_DMDIS (1u << 2)
+/* A stream's flags in LISR/LIFCR: stream 1's are stream 0's shifted by 6. */
+#define DMA_STREAM1_SHIFT 6u
+#define DMA_FLAG_FE (1u << 0)
+#define DMA_FLAG_DME (1u << 2)
+#define DMA_FLAG_TE (1u << 3)
+#define DMA_FLAG_HT (1u << 4)
+#define DMA_FLAG_TC (1u << 5)
+#define DMA_FLAGS_ALL (DMA_FLAG_FE | DMA_FLAG_DME | DMA_FLAG_TE | DMA_FLAG_HT | DMA_FLAG_TC)
 
 #define TIM2_IRQ 28
 #define TIM3_IRQ 29
 #define ADC_IRQ 18
 #define TIM4_IRQ 30
+#define TIM7_IRQ 55
+#define DMA2_STREAM1_IRQ 57
+#define DCMI_IRQ 78
 
 #ifdef EPUCK2_REGISTER_MODEL
 extern stm32_gpio epuck2_model_gpiob, epuck2_model_gpioc, epuck2_model_gpioe;
@@ -66,6 +163,22 @@ extern stm32_timer epuck2_model_tim2, epuck2_model_tim3, epuck2_model_tim4;
 extern stm32_adc epuck2_model_adc2;
 extern volatile uint32_t epuck2_model_adc_ccr;
 extern stm32_rcc_enables epuck2_model_rcc;
+extern stm32_gpio epuck2_model_gpioa, epuck2_model_gpiod;
+extern stm32_timer epuck2_model_tim5, epuck2_model_tim7;
+extern stm32_i2c epuck2_model_i2c1;
+extern stm32_spi epuck2_model_spi1;
+extern stm32_dcmi epuck2_model_dcmi;
+extern stm32_dma epuck2_model_dma2;
+void epuck2_model_poll(void);
+#define STM32_POLL() epuck2_model_poll()
+#define GPIOA (&epuck2_model_gpioa)
+#define GPIOD (&epuck2_model_gpiod)
+#define TIM5 (&epuck2_model_tim5)
+#define TIM7 (&epuck2_model_tim7)
+#define I2C1 (&epuck2_model_i2c1)
+#define SPI1 (&epuck2_model_spi1)
+#define DCMI (&epuck2_model_dcmi)
+#define DMA2 (&epuck2_model_dma2)
 #define GPIOB (&epuck2_model_gpiob)
 #define GPIOC (&epuck2_model_gpioc)
 #define GPIOE (&epuck2_model_gpioe)
@@ -85,7 +198,20 @@ extern stm32_rcc_enables epuck2_model_rcc;
 #define ADC_COMMON_CCR (*(volatile uint32_t *)0x40012304u)
 #define TIM4 ((stm32_timer *)0x40000800u)
 #define RCC_ENABLES ((stm32_rcc_enables *)0x40023830u)
+#define STM32_POLL() ((void)0)
+#define GPIOA ((stm32_gpio *)0x40020000u)
+#define GPIOD ((stm32_gpio *)0x40020C00u)
+#define TIM5 ((stm32_timer *)0x40000C00u)
+#define TIM7 ((stm32_timer *)0x40001400u)
+#define I2C1 ((stm32_i2c *)0x40005400u)
+#define SPI1 ((stm32_spi *)0x40013000u)
+#define DCMI ((stm32_dcmi *)0x50050000u)
+#define DMA2 ((stm32_dma *)0x40026400u)
 #endif
+
+/* APB1 itself runs at 42 MHz (I2C's clock), APB2 at 84 MHz (SPI1's). */
+#define EPUCK2_APB1_HZ 42000000u
+#define EPUCK2_APB2_HZ 84000000u
 
 /* APB1's timers count at 84 MHz once the clock tree runs the core at
  * 168 MHz (APB1 at 42 MHz, its timers at twice that: RM0090 6.2). */
@@ -94,6 +220,19 @@ extern stm32_rcc_enables epuck2_model_rcc;
 /* A pin's mode (2 bits a pin in MODER). */
 static inline void stm32_gpio_mode(stm32_gpio *port, unsigned pin, uint32_t mode) {
     port->MODER = (port->MODER & ~(3u << (2u * pin))) | (mode << (2u * pin));
+}
+
+/* A pin's alternate function (4 bits a pin in AFR[0] for 0..7, AFR[1]
+ * for 8..15), and the pin switched to it. */
+static inline void stm32_gpio_af(stm32_gpio *port, unsigned pin, uint32_t af) {
+    volatile uint32_t *afr = &port->AFR[pin / 8u];
+    unsigned shift = 4u * (pin % 8u);
+    *afr = (*afr & ~(0xFu << shift)) | (af << shift);
+    stm32_gpio_mode(port, pin, GPIO_MODE_ALTERNATE);
+}
+
+static inline void stm32_gpio_pull(stm32_gpio *port, unsigned pin, uint32_t pull) {
+    port->PUPDR = (port->PUPDR & ~(3u << (2u * pin))) | (pull << (2u * pin));
 }
 
 #endif
