@@ -296,7 +296,10 @@ AppConfig load_app_config(const fs::path &dir) {
     const fs::path &file = config.file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
     check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices"});
-    config.name = identifier_at(file, "name", require(file, doc, "name"));
+    config.name = string_at(file, "name", require(file, doc, "name"), "the app's name");
+    if (!std::regex_match(config.name, std::regex(app_name_pattern)))
+        fail(file, "name", "\"" + config.name + "\" is not a usable app name: letters, digits, - "
+                           "and _, starting with a letter (it names the image file)");
     config.port = string_at(file, "port", require(file, doc, "port"), "a port name");
     if (!is_port(config.port)) {
         fail(file, "port", "unknown port \"" + config.port + "\"; known: " + join(port_names()) +

@@ -47,6 +47,10 @@ struct AppConfig {
     std::vector<DeviceConfig> devices; // processors chosen in openswarm.json
 };
 
+// An app's name: it names the folder, the CMake project and the image
+// (my-robot.elf), never a C symbol, so hyphens are fine.
+constexpr const char *app_name_pattern = "[A-Za-z][A-Za-z0-9_-]*";
+
 // The guard pattern at the bottom of every thread stack while the kernel's
 // stack check is on (OS_STACK_GUARD_BYTES, kernel/src/kernel_internal.h):
 // the same on every port.

@@ -1,7 +1,9 @@
 // openswarm: scaffold, build and run swarm-robot apps.
+#include <algorithm>
 #include <cstdio>
 
 #include "commands/commands.hpp"
+#include "suggest.hpp"
 
 namespace openswarm {
 
@@ -38,6 +40,14 @@ int main(int argc, char **argv) {
     add_size_command(app, paths);
     add_config_command(app, paths);
     add_doctor_command(app, paths);
+    std::vector<std::string> names;
+    for (const auto *sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    if (argc > 1 && argv[1][0] != '-' &&
+        std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+        report(std::string("unknown command '") + argv[1] + "'" + did_you_mean(argv[1], names, '\'') +
+               "; commands: " + join(names) + " (`openswarm --help` says what each does)");
+        return EXIT_USAGE;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {

@@ -31,6 +31,7 @@ expect 2 "unknown port 'kilobo'.*did you mean 'kilobot'" "$openswarm" new a --po
 expect 2 "not a usable app name" "$openswarm" new 9lives
 expect 2 "openswarm.json: not found.*openswarm new" "$openswarm" build
 expect 2 "RequiredError|name is required" "$openswarm" new
+expect 2 "unknown command 'biuld' \(did you mean 'build'\?\); commands: new, build, run" "$openswarm" biuld
 [ "$before" = "$(snapshot)" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: a refused command changed the folder"; }
 
 "$openswarm" new keep >/dev/null
@@ -55,7 +56,7 @@ expect 2 "\"port\": unknown port \"kilobott\".*did you mean \"kilobot\"" "$opens
 printf '{"name": "keep"}' > keep/openswarm.json
 expect 2 "\"port\": missing" "$openswarm" build -C keep
 printf '{"name": 7, "port": "kilobot"}' > keep/openswarm.json
-expect 2 "\"name\": expected a C identifier, found number 7" "$openswarm" build -C keep
+expect 2 "\"name\": expected the app's name, found number 7" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "evnets": []}' > keep/openswarm.json
 expect 2 "\"evnets\": unknown key.*did you mean \"events\"" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 40}}' > keep/openswarm.json
@@ -101,6 +102,20 @@ if [ "$status" -eq 1 ] && printf '%s' "$out" | grep -q "tests/blinks.trace:4: ex
 else
     failed=$((failed + 1)); echo "FAILED: a failing app test: exit $status"; printf '%s\n' "$out" | tail -5
 fi
+# run's own options are checked before the build: nothing is built.
+before=$(snapshot)
+expect 2 "openswarm: --time abc: give the simulated time in seconds" "$openswarm" run -C tested --time abc
+expect 2 "openswarm: --ohc sleep: give MESSAGE@SECONDS" "$openswarm" run -C tested --ohc sleep
+expect 2 "openswarm: --clock-spread 9: give a percentage from 0 to 5" "$openswarm" run -C tested --clock-spread 9
+[ "$before" = "$(snapshot)" ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: a refused run changed the folder"; }
+# One file per --first: options after -- go to the simulator.
+"$openswarm" run -C tested --time 0.2 --first tested/build/kilobot/tested.elf -- --calibration 70,70,65,68 >/dev/null 2>&1 \
+    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: --first ELF -- OPTIONS"; }
+# Hyphens in app names: the image is my-robot.elf and .hex.
+"$openswarm" new my-robot >/dev/null && "$openswarm" build -C my-robot >/dev/null \
+    && [ -s my-robot/build/kilobot/my-robot.elf ] && [ -s my-robot/build/kilobot/my-robot.hex ] \
+    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: my-robot did not build"; }
+
 rm -rf empty-app && mkdir empty-app && printf '{"name": "e", "port": "kilobot"}' > empty-app/openswarm.json
 expect 2 "no tests: add tests/NAME.trace" "$openswarm" test -C empty-app
 

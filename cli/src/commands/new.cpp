@@ -3,6 +3,7 @@
 #include <regex>
 #include <sstream>
 
+#include "../app_config.hpp"
 #include "../ports.hpp"
 #include "../suggest.hpp"
 #include "../templates.hpp"
@@ -56,9 +57,9 @@ const TemplateInfo *find_template(const std::vector<TemplateInfo> &all, const st
 }
 
 int run_new(const NewOptions &o, const Paths &paths) {
-    if (!std::regex_match(o.name, std::regex("[A-Za-z][A-Za-z0-9_]*"))) {
-        report("'" + o.name + "' is not a usable app name: use letters, digits and _ "
-               "(starting with a letter), e.g. `openswarm new my_robot`");
+    if (!std::regex_match(o.name, std::regex(app_name_pattern))) {
+        report("'" + o.name + "' is not a usable app name: use letters, digits, - and _ "
+               "(starting with a letter), e.g. `openswarm new my-robot`");
         return EXIT_USAGE;
     }
     auto all = list_templates(paths.templates());

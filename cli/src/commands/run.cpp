@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -60,6 +61,43 @@ std::string port_to_build(const RunOptions &o) {
     }
 }
 
+// "2.5", "2.5s" or "20%" (suffix): the number, if it is one in [lo, hi].
+std::optional<double> number_in(std::string text, char suffix, double lo, double hi) {
+    if (!text.empty() && text.back() == suffix) text.pop_back();
+    char *end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return std::nullopt;
+    return v;
+}
+
+// The options whose mistakes the simulator would catch only after the
+// build: caught before it, as bad usage. False after reporting.
+bool run_options_usable(const RunOptions &o) {
+    auto time = number_in(o.time, 's', 0, 86400);
+    if (!time || *time <= 0) {
+        report("--time " + o.time + ": give the simulated time in seconds, more than 0 and at most "
+               "86400 (e.g. 10 or 2.5s)");
+        return false;
+    }
+    if (!o.clock_spread.empty() && !number_in(o.clock_spread, '%', 0, 5)) {
+        report("--clock-spread " + o.clock_spread + ": give a percentage from 0 to 5 (e.g. 1)");
+        return false;
+    }
+    if (!o.ir_loss.empty() && !number_in(o.ir_loss, '%', 0, 100)) {
+        report("--ir-loss " + o.ir_loss + ": give a percentage from 0 to 100 (e.g. 20)");
+        return false;
+    }
+    for (const auto &m : o.ohc) {
+        auto at = m.rfind('@');
+        if (at == std::string::npos || at == 0 || !number_in(m.substr(at + 1), 's', 0, 86400)) {
+            report("--ohc " + m + ": give MESSAGE@SECONDS, e.g. --ohc sleep@2 or "
+                   "--ohc calib-left:70@1");
+            return false;
+        }
+    }
+    return true;
+}
+
 // A port QEMU runs: one robot, no world (yet), the console and the trace.
 int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &port) {
     if (!o.simavr_only.empty()) {
@@ -68,15 +106,7 @@ int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &
                "apps (--port kilobot)");
         return EXIT_USAGE;
     }
-    std::string text = o.time;
-    if (!text.empty() && text.back() == 's') text.pop_back();
-    char *end = nullptr;
-    double seconds = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400) {
-        report("--time " + o.time + ": give the simulated time in seconds, more than 0 and at most "
-               "86400 (e.g. 10 or 2.5s)");
-        return EXIT_USAGE;
-    }
+    double seconds = *number_in(o.time, 's', 0, 86400);
     auto built = build_app(paths, o.dir, o.port);
     if (!built) return exit_code;
     QemuRun r;
@@ -140,6 +170,7 @@ bool world_file_usable(const RunOptions &o) {
 }
 
 int run_app(RunOptions o, const Paths &paths) {
+    if (!run_options_usable(o)) return EXIT_USAGE;
     std::string port = port_to_build(o);
     if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
     if (!o.world.empty()) {
@@ -273,6 +304,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "...); the app runs on the robots after them, e.g. a seed robot: "
                     "--first ../seed/build/kilobot/seed.elf")
         ->type_name("ELF")
+        ->allow_extra_args(false) // one file per --first: what follows is not its
         ->check(CLI::ExistingFile);
     cmd->add_option("simulator-options", o->simulator_options,
                     "after --: more openswarm-sim options, passed as they are (openswarm-sim --help), "
