@@ -13,6 +13,7 @@ packages=(
   ffmpeg chromium fonts-dejavu-core        # the world: video; the viewer's browser test
   gcc-arm-none-eabi libnewlib-arm-none-eabi # e-puck2 (STM32F407) firmware
   qemu-system-arm gdb-multiarch             # running it under QEMU, debugging it
+  gdb-avr                                   # debugging Kilobot firmware at source level
 )
 
 missing=()

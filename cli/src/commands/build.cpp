@@ -80,6 +80,7 @@ struct BuildOptions {
     std::string dir = ".";
     std::string port;
     bool json = false;
+    bool debug = false;
 };
 
 // The kernel's and the app's shares of the image, from a second build
@@ -168,7 +169,8 @@ fs::path generated_dir(const fs::path &dir, const std::string &port) {
 }
 
 std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
-                                     const std::string &port_option, Progress progress) {
+                                     const std::string &port_option, Progress progress,
+                                     Variant variant) {
     FILE *out = progress == Progress::on_stdout ? stdout : stderr;
     auto run = progress == Progress::on_stdout ? run_program : run_program_to_stderr;
     AppConfig config;
@@ -191,7 +193,8 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    fs::path build_dir = dir / "build" / port;
+    const bool debug = variant == Variant::debug;
+    fs::path build_dir = dir / "build" / (debug ? port + "-debug" : port);
     fs::path generated = generated_dir(dir, port);
     config.port = port;
     try {
@@ -206,7 +209,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         return std::nullopt;
     }
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
-    std::fprintf(out, "Configuring %s for %s\n", config.name.c_str(), port.c_str());
+    configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
+    std::fprintf(out, "Configuring %s for %s%s\n", config.name.c_str(), port.c_str(),
+                 debug ? " (debug: -Og, no link-time optimisation)" : "");
     if (run(configure) != 0) {
         report("configuring failed (CMake's messages are above); check " +
                (dir / "CMakeLists.txt").string());
@@ -244,12 +249,18 @@ void add_build_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
     cmd->add_flag("--json", o->json, "print the result as JSON (progress goes to standard error)");
+    cmd->add_flag("--debug", o->debug,
+                  "a debug image in build/<port>-debug: -Og -g, no link-time optimisation, so "
+                  "the debugger (openswarm run --debug --gdb PORT) knows every line and variable");
     cmd->callback([o, &paths] {
         Progress progress = o->json ? Progress::on_stderr : Progress::on_stdout;
-        auto r = build_app(paths, o->dir, o->port, progress);
+        auto r = build_app(paths, o->dir, o->port, progress,
+                           o->debug ? Variant::debug : Variant::release);
         if (!r) return;
-        std::string why;
-        auto shares = measure_shares(paths, o->dir, *r, progress, why);
+        std::string why = "not measured for a debug image (it has no link-time optimisation "
+                          "to see through)";
+        auto shares = o->debug ? std::vector<Share>{}
+                               : measure_shares(paths, o->dir, *r, progress, why);
         if (o->json)
             print_json(*r, shares, why);
         else

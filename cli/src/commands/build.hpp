@@ -28,11 +28,17 @@ std::vector<std::string> configure_command(const Paths &paths, const std::filesy
 // standard output carries a result (--json).
 enum class Progress { on_stdout, on_stderr };
 
+// A release image (-Os, link-time optimisation: what goes to the robot)
+// or a debug one (-Og, no LTO: every line and variable for the debugger),
+// built in build/<port> or build/<port>-debug.
+enum class Variant { release, debug };
+
 // Configure and build the app in dir for port ("" = the app's own);
 // prints progress, and errors ending with what to do. nullopt on failure,
 // with exit_code set.
 std::optional<BuildResult> build_app(const Paths &paths, const std::filesystem::path &dir,
                                      const std::string &port,
-                                     Progress progress = Progress::on_stdout);
+                                     Progress progress = Progress::on_stdout,
+                                     Variant variant = Variant::release);
 
 }  // namespace openswarm

@@ -22,6 +22,7 @@ struct Check {
 std::vector<Check> optional_checks() {
     return {
         {"ffmpeg (openswarm run --world --video)", find_program("ffmpeg").has_value(), "ffmpeg"},
+        {"avr-gdb (openswarm run --gdb, kilobot)", find_program("avr-gdb").has_value(), "gdb-avr"},
         {"gdb-multiarch (openswarm run --gdb, epuck2)", find_program("gdb-multiarch").has_value(),
          "gdb-multiarch"},
         {"chromium (the world viewer's browser test)",

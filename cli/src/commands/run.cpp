@@ -35,6 +35,7 @@ struct RunOptions {
     int ir_range = 0;      // 0: the simulator's default
     bool robots_given = false;
     int gdb = 0;
+    bool debug = false; // the debug image (build --debug)
     std::string vcd;
     std::vector<std::string> ohc; // overhead-controller messages, MSG@SECONDS
     bool profile = false;
@@ -107,7 +108,8 @@ int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &
         return EXIT_USAGE;
     }
     double seconds = *number_in(o.time, 's', 0, 86400);
-    auto built = build_app(paths, o.dir, o.port);
+    auto built = build_app(paths, o.dir, o.port, Progress::on_stdout,
+                           o.debug ? Variant::debug : Variant::release);
     if (!built) return exit_code;
     QemuRun r;
     r.image = built->image;
@@ -178,7 +180,8 @@ int run_app(RunOptions o, const Paths &paths) {
         if (o.out.empty())
             o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
     }
-    auto built = build_app(paths, o.dir, o.port);
+    auto built = build_app(paths, o.dir, o.port, Progress::on_stdout,
+                           o.debug ? Variant::debug : Variant::release);
     if (!built) return exit_code;
     if (paths.simulator.empty()) {
         report("openswarm-sim was not found next to this tool; build it with "
@@ -285,6 +288,9 @@ void add_run_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("--gdb", o->gdb,
                     "wait for the debugger on this TCP port (avr-gdb; gdb-multiarch for epuck2)")
         ->check(CLI::Range(1, 65535));
+    cmd->add_flag("--debug", o->debug,
+                  "build and run the debug image (-Og, no link-time optimisation): with --gdb, "
+                  "breakpoints on lines and every variable");
     cmd->add_option("--vcd", o->vcd, "record pins and motors into this GTKWave file");
     cmd->add_option("--ohc", o->ohc,
                     "the overhead controller sends MSG at SECONDS (run, sleep, reset, boot, "

@@ -18,21 +18,27 @@ set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
 # inline across files. (Off for `openswarm size`'s attribution build,
 # whose link map must name each file.)
 option(OPENSWARM_LTO "link-time optimisation" ON)
+# A debug image (openswarm build --debug): -Og and no LTO, so the debugger
+# finds every line and variable where the source has them.
+option(OPENSWARM_DEBUG "debug image: -Og, no link-time optimisation" OFF)
 set(_lto "")
-if(OPENSWARM_LTO)
+set(_opt "-Os")
+if(OPENSWARM_DEBUG)
+  set(_opt "-Og")
+elseif(OPENSWARM_LTO)
   set(_lto "-flto")
 endif()
 set(OPENSWARM_CPU_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16")
 # -g: line tables for gdb-multiarch (openswarm run --gdb); none of it is in
 # what is flashed.
-set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} -Os -g ${_lto} -ffunction-sections -fdata-sections")
+set(CMAKE_C_FLAGS_INIT "${OPENSWARM_CPU_FLAGS} ${_opt} -g ${_lto} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT
-    "${OPENSWARM_CPU_FLAGS} -Os -g ${_lto} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
+    "${OPENSWARM_CPU_FLAGS} ${_opt} -g ${_lto} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "${OPENSWARM_CPU_FLAGS}")
 # The link options every image needs (newlib-nano's C library, no start
 # files of newlib's) are the kernel library's (OpenSwarmKernel.cmake), so
 # a -DCMAKE_EXE_LINKER_FLAGS of the user's does not drop them.
-set(CMAKE_EXE_LINKER_FLAGS_INIT "-Os ${_lto} -Wl,--gc-sections")
+set(CMAKE_EXE_LINKER_FLAGS_INIT "${_opt} ${_lto} -Wl,--gc-sections")
 # The C++ SDK is freestanding (no exceptions, RTTI or library calls): C++
 # apps are linked by the C driver, without libstdc++ (which Debian ships
 # apart for this target, and GCC 12 has no -nostdlib++).

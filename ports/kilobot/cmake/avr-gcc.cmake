@@ -24,13 +24,20 @@ set(OPENSWARM_F_CPU 8000000 CACHE STRING "CPU clock in Hz")
 # inline across files: it shrinks the image and the switch path. (Off for
 # `openswarm size`'s attribution build, whose link map must name each file.)
 option(OPENSWARM_LTO "link-time optimisation" ON)
+# A debug image (openswarm build --debug): -Og and no LTO, so avr-gdb
+# finds every line and variable where the source has them (avr-gcc 5.4
+# keeps no line table through LTO).
+option(OPENSWARM_DEBUG "debug image: -Og, no link-time optimisation" OFF)
 set(_lto "")
-if(OPENSWARM_LTO)
+set(_opt "-Os")
+if(OPENSWARM_DEBUG)
+  set(_opt "-Og -g")
+elseif(OPENSWARM_LTO)
   set(_lto "-flto")
 endif()
 # -mrelax lets the linker shorten calls and jumps that reach (rcall/rjmp):
 # two bytes and a cycle each.
-set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL -Os ${_lto} -mrelax -ffunction-sections -fdata-sections")
+set(_avr_flags "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL ${_opt} ${_lto} -mrelax -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${_avr_flags}")
 set(CMAKE_CXX_FLAGS_INIT "${_avr_flags} -fno-exceptions -fno-rtti")
 set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
@@ -40,7 +47,7 @@ set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
 # section): a bigger image fails at link time instead of on the robot.
 set(OPENSWARM_FLASH_BYTES 0x7000 CACHE STRING "flash the program may use (below the bootloader)")
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-mmcu=${OPENSWARM_MCU} -Os ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000 -Wl,--defsym=__TEXT_REGION_LENGTH__=${OPENSWARM_FLASH_BYTES}")
+    "-mmcu=${OPENSWARM_MCU} ${_opt} ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000 -Wl,--defsym=__TEXT_REGION_LENGTH__=${OPENSWARM_FLASH_BYTES}")
 set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)
