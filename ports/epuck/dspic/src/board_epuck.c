@@ -4,7 +4,7 @@
  * EPUCK_EVENT_CAMERA is registered and never sent. */
 #include "board.h"
 #include "dspic_port.h"
-#include "epuck_board.h"
+#include "../../src/epuck_board.h"
 
 void epuck_board_start(void) {
     board_leds_init();

@@ -6,7 +6,7 @@
 #include "board.h"
 
 #include "board_pins.h"
-#include "epuck_board.h"
+#include "../../src/epuck_board.h"
 #include "p30f6014a_registers.h"
 
 void board_leds_init(void) {

@@ -12,7 +12,7 @@
 #include "board_pins.h"
 #include "dspic_compiler.h"
 #include "dspic_port.h"
-#include "epuck_board.h"
+#include "../../src/epuck_board.h"
 #include "p30f6014a_registers.h"
 
 /* Timer2 at Fcy / 8 = 1.8432 MHz: 1250 us = 2304 counts exactly, the

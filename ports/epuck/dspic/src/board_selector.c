@@ -4,7 +4,7 @@
 #include "board.h"
 
 #include "board_pins.h"
-#include "epuck_board.h"
+#include "../../src/epuck_board.h"
 #include "p30f6014a_registers.h"
 
 #define TICKS_PER_READ 10u

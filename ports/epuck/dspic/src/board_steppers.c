@@ -9,7 +9,7 @@
 #include "board_pins.h"
 #include "dspic_compiler.h"
 #include "dspic_port.h"
-#include "epuck_board.h"
+#include "../../src/epuck_board.h"
 #include "p30f6014a_registers.h"
 
 /* The timers count Fcy / 256 = 57600 Hz: a period of 57600 / speed
