@@ -31,7 +31,9 @@
 #define INTCON1_STKERR 0x0004u
 #define INTCON1_ADDRERR 0x0008u
 #define INTCON1_MATHERR 0x0010u
-/* IFS0/IEC0 bits */
+/* Flags are cleared one bit at a time: XC16 makes `IFSx &= ~bit` one
+ * BCLR, so a flag the hardware sets meanwhile is not written back lost.
+ * IFS0/IEC0 bits: */
 #define IRQ0_T1 0x0008u
 #define IRQ0_T2 0x0040u
 #define IRQ0_ADC 0x0800u

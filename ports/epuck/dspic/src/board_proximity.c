@@ -60,7 +60,8 @@ void board_proximity_start(void) {
     ADCON3 = ADC_TIMING;
     IPC1 = (uint16_t)((IPC1 & ~(IPC_FIELD << IPC1_T2_SHIFT)) | (DSPIC_PRIORITY_KERNEL << IPC1_T2_SHIFT));
     IPC2 = (uint16_t)((IPC2 & ~(IPC_FIELD << IPC2_ADC_SHIFT)) | (DSPIC_PRIORITY_KERNEL << IPC2_ADC_SHIFT));
-    IFS0 &= (uint16_t)~(IRQ0_T2 | IRQ0_ADC);
+    IFS0 &= (uint16_t)~IRQ0_T2;
+    IFS0 &= (uint16_t)~IRQ0_ADC;
     IEC0 |= IRQ0_T2 | IRQ0_ADC;
     ADCON1 |= ADCON1_ADON;
     T2CON = 0;
