@@ -68,6 +68,26 @@ set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
 set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
     ${OPENSWARM_ROOT}/ports/epuck/include)
 
+# The e-puck (dsPIC30F6014A, Microchip XC16): the CPU port, the board and
+# the device layer. Never built here: XC16 is not in Debian; the sources are
+# type-checked with 16-bit int and pointers instead (ctest -L dspic).
+set(OPENSWARM_PORT_epuck_SOURCES
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/port.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/switch.s
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/traps.s
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/traps.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/stop.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/console_uart1.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/fault_report.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_epuck.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_leds.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_steppers.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_proximity.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_selector.c
+    ${OPENSWARM_EPUCK_SOURCES})
+set(OPENSWARM_PORT_epuck_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/dspic/include
+    ${OPENSWARM_ROOT}/ports/epuck/include)
+
 # Our own code builds warning-free.
 set(OPENSWARM_WARNINGS -Wall -Wextra -Werror -Wshadow -Wundef)
 set(OPENSWARM_SANITIZERS -fsanitize=address,undefined -fno-sanitize-recover=all
@@ -79,7 +99,7 @@ function(openswarm_add_kernel target)
     message(FATAL_ERROR "openswarm_add_kernel(${target}): PORT is required (host)")
   endif()
   if(NOT DEFINED OPENSWARM_PORT_${K_PORT}_SOURCES)
-    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host, kilobot, epuck2)")
+    message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host, kilobot, epuck2, epuck)")
   endif()
   set(board_sources)
   if(K_PORT STREQUAL "epuck2")
@@ -117,6 +137,13 @@ function(openswarm_add_kernel target)
     set_source_files_properties(${_c} TARGET_DIRECTORY ${target}
       PROPERTIES COMPILE_OPTIONS "-std=gnu99")
     target_compile_definitions(${target} PRIVATE OPENSWARM_MCU_NAME=${OPENSWARM_MCU})
+  elseif(K_PORT STREQUAL "epuck")
+    set(_c ${OPENSWARM_PORT_epuck_SOURCES})
+    list(FILTER _c INCLUDE REGEX "\\.c$")
+    set_source_files_properties(${_c} TARGET_DIRECTORY ${target}
+      PROPERTIES COMPILE_OPTIONS "-std=gnu99")
+    # The traps are reached through the vector table only.
+    target_link_options(${target} INTERFACE -Wl,--undefined=__StackError)
   elseif(K_PORT STREQUAL "epuck2")
     set(_c ${OPENSWARM_PORT_epuck2_SOURCES} ${board_sources})
     list(FILTER _c INCLUDE REGEX "\\.c$")

@@ -53,6 +53,19 @@ const std::vector<PortInfo> &ports() {
          "sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi (or run OpenSwarm's "
          "./setup.sh)",
          "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu},
+        // The kernel's two events and the board's 8 (PORT_EVENT_COUNT in
+        // ports/epuck/dspic's port_arch.h, registered at 42 bytes as on the
+        // e-puck2); pools from its port_config.h; 144 KB of flash, 8 KB of
+        // RAM. Built with Microchip XC16, which is not in Debian, so never
+        // here; nothing runs its images (no dsPIC simulator). The size tool's
+        // name is XC16's binutils' (never checked: XC16 was never installed).
+        {"epuck",
+         "e-puck: dsPIC30F6014A at 14.7456 MIPS; needs Microchip XC16, not in Debian: build only, "
+         "no simulator",
+         144 * 1024, 8 * 1024, 2 + 8, 6 + 42, 6, 20, 128, 32, {}, "xc16-gcc",
+         "install Microchip XC16 from https://www.microchip.com/xc16 (it is not in Debian) and put "
+         "its bin folder on PATH",
+         "ports/epuck/dspic/cmake/xc16.cmake", "xc16-size", Runner::none},
     };
     return all;
 }

@@ -24,8 +24,9 @@ struct PortLibrary {
 // Those of a port's libraries that one app uses.
 using Libraries = std::vector<const PortLibrary *>;
 
-// What runs a port's images: openswarm-sim (simavr, cycle-exact), QEMU.
-enum class Runner { simavr, qemu };
+// What runs a port's images: openswarm-sim (simavr, cycle-exact), QEMU, or
+// nothing here (none: build only; run and test refuse the port).
+enum class Runner { simavr, qemu, none };
 
 struct PortInfo {
     std::string name;

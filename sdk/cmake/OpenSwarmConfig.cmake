@@ -8,19 +8,20 @@
 # Configure with the robot's toolchain:
 #   PORT kilobot: -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/kilobot/cmake/avr-gcc.cmake
 #   PORT epuck2:  -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/cortex_m4/cmake/arm-none-eabi.cmake
+#   PORT epuck:   -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/epuck/dspic/cmake/xc16.cmake (Microchip XC16)
 # (the openswarm tool does both for you).
 
 get_filename_component(OPENSWARM_SDK_ROOT "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
 include(${OPENSWARM_SDK_ROOT}/cmake/OpenSwarmKernel.cmake)
 set(OpenSwarm_FOUND TRUE)
 
-# openswarm_add_firmware(<name> PORT <kilobot|epuck2|host> SOURCES <files...> [CONFIG <header>])
+# openswarm_add_firmware(<name> PORT <kilobot|epuck2|epuck|host> SOURCES <files...> [CONFIG <header>])
 # Builds the kernel for the port and configuration, and the application
 # against it: <name>.elf for a robot, <name> for the host.
 function(openswarm_add_firmware name)
   cmake_parse_arguments(F "" "PORT;CONFIG" "SOURCES" ${ARGN})
   if(NOT F_PORT)
-    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT is required (kilobot, epuck2 or host)")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT is required (kilobot, epuck2, epuck or host)")
   endif()
   if(NOT F_SOURCES)
     message(FATAL_ERROR "openswarm_add_firmware(${name}): SOURCES is required")
@@ -33,6 +34,11 @@ function(openswarm_add_firmware name)
   if(F_PORT STREQUAL "epuck2" AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "arm")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT epuck2 needs the ARM toolchain: "
       "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/cortex_m4/cmake/arm-none-eabi.cmake "
+      "(or build with `openswarm build`)")
+  endif()
+  if(F_PORT STREQUAL "epuck" AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "dspic")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT epuck needs Microchip XC16: "
+      "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/epuck/dspic/cmake/xc16.cmake "
       "(or build with `openswarm build`)")
   endif()
   # `openswarm build` generates the pool sizes, event ids and start-up code

@@ -243,6 +243,18 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     return result;
 }
 
+bool refuse_unrunnable(const std::string &port, const std::string &command) {
+    const PortInfo &info = port_info(port);
+    if (info.runner != Runner::none) return false;
+    std::string message = "`openswarm " + command + "`: nothing here runs " + port +
+                          " images (no simulator): `openswarm build --port " + port +
+                          "` builds one for the robot";
+    if (!find_program(info.compiler))
+        message += ", and needs " + info.compiler + ", which was not found: " + info.install;
+    report(message);
+    return true;
+}
+
 void add_build_command(CLI::App &app, const Paths &paths) {
     auto o = std::make_shared<BuildOptions>();
     CLI::App *cmd = app.add_subcommand("build", "Build the app's firmware image for its robot");

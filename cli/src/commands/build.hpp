@@ -41,4 +41,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const std::filesystem::
                                      Progress progress = Progress::on_stdout,
                                      Variant variant = Variant::release);
 
+// For a port nothing here runs (Runner::none): report that command cannot
+// run its images, and what building them needs if it is missing; true then.
+// False, silently, for a port that runs.
+bool refuse_unrunnable(const std::string &port, const std::string &command);
+
 }  // namespace openswarm

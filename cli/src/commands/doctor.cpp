@@ -25,6 +25,9 @@ std::vector<Check> optional_checks() {
         {"avr-gdb (openswarm run --gdb, kilobot)", find_program("avr-gdb").has_value(), "gdb-avr"},
         {"gdb-multiarch (openswarm run --gdb, epuck2)", find_program("gdb-multiarch").has_value(),
          "gdb-multiarch"},
+        {"xc16-gcc (e-puck firmware: Microchip XC16, not in Debian, from "
+         "https://www.microchip.com/xc16)",
+         find_program("xc16-gcc").has_value(), ""},
         {"chromium (the world viewer's browser test)",
          find_program("chromium").has_value() || find_program("chromium-browser").has_value(),
          "chromium"},
@@ -66,7 +69,7 @@ void add_doctor_command(CLI::App &app, const Paths &paths) {
         std::vector<std::string> optional_packages;
         for (const auto &c : optional_checks()) {
             std::printf("%s %s\n", c.ok ? "ok     " : "absent ", c.what.c_str());
-            if (!c.ok) optional_packages.push_back(c.package);
+            if (!c.ok && !c.package.empty()) optional_packages.push_back(c.package);
         }
         if (!optional_packages.empty())
             std::printf("Optional, only for what they are named after:\n    sudo apt-get install %s\n",

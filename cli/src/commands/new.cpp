@@ -103,9 +103,10 @@ int run_new(const NewOptions &o, const Paths &paths) {
                "; check that the folder is writable");
         return EXIT_FAILED;
     }
-    std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build && "
-                "openswarm run\n",
-                dir.string().c_str(), t->name.c_str(), o.port.c_str(), dir.string().c_str());
+    // A port nothing here runs is built, then flashed to the robot.
+    const char *next = port_info(o.port).runner == Runner::none ? "" : " && openswarm run";
+    std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build%s\n",
+                dir.string().c_str(), t->name.c_str(), o.port.c_str(), dir.string().c_str(), next);
     return EXIT_OK;
 }
 

@@ -174,6 +174,7 @@ bool world_file_usable(const RunOptions &o) {
 int run_app(RunOptions o, const Paths &paths) {
     if (!run_options_usable(o)) return EXIT_USAGE;
     std::string port = port_to_build(o);
+    if (is_port(port) && refuse_unrunnable(port, "run")) return EXIT_FAILED;
     if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
     if (!o.world.empty()) {
         if (!world_file_usable(o)) return EXIT_USAGE;

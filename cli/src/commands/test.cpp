@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 
+#include "../app_config.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
 #include "../qemu_run.hpp"
@@ -163,6 +164,18 @@ std::vector<std::string> run_in_qemu_and_compare(const fs::path &file, const Exp
     return compare(file, e.changes, got);
 }
 
+// The app's port runs nowhere here (reported); a missing or broken
+// openswarm.json is build_app's to report.
+bool runs_nowhere(const std::string &dir) {
+    std::string port;
+    try {
+        port = load_app_config(dir).port;
+    } catch (const std::exception &) {
+        return false;
+    }
+    return is_port(port) && refuse_unrunnable(port, "test");
+}
+
 int run_tests(const std::string &dir, const Paths &paths) {
     fs::path tests = fs::path(dir) / "tests";
     std::vector<fs::path> files;
@@ -175,6 +188,7 @@ int run_tests(const std::string &dir, const Paths &paths) {
                " (see `openswarm test --help`)");
         return EXIT_USAGE;
     }
+    if (runs_nowhere(dir)) return EXIT_FAILED;
     auto built = build_app(paths, dir, "");
     if (!built) return exit_code;
     int passed = 0, failed = 0;
