@@ -167,6 +167,7 @@ static void run(const options *o) {
 int main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
+    if (o.world != NULL && world_run_is_epuck()) return world_run_epucks(&o);
     for (int i = 0; i < o.robots; i++)
         if ((i == 0 || firmware_of(&o, i) != firmware_of(&o, i - 1)) &&
             firmware_check(firmware_of(&o, i)) != 0)

@@ -16,7 +16,7 @@ grep -q "^Built ./build/$port/app.elf for $port" build.log
 grep -Eq "^  kernel and port +[0-9.]+% ~ *[1-9][0-9]* +[0-9.]+% ~ *[1-9][0-9]*$" build.log
 # --json: standard output is the JSON alone, progress goes to standard error.
 "$openswarm" build --json > build.json
-python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); assert j["flash_total"] == 32768 and j["share"]["approximate"]' build.json
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); assert j["flash_total"] == 28672 and j["share"]["approximate"]' build.json
 "$openswarm" size | tee size.log
 grep -Eq "^  kernel and port +[1-9][0-9]+ +[1-9][0-9]+$" size.log
 python3 "$here/check_footprint.py" "$here/../.." . size.log build.json

@@ -57,6 +57,7 @@ typedef struct picture {
     int width, height;
     double scale;              /* pixels per mm */
     double origin_x, origin_y; /* pixel of the arena's (0, 0) corner */
+    double robot_radius_mm;
 } picture;
 
 int picture_init(picture *p, const world_spec *w);

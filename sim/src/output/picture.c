@@ -49,6 +49,7 @@ int picture_init(picture *p, const world_spec *w)
     p->height += p->height & 1;
     p->origin_x = MARGIN_PX;
     p->origin_y = MARGIN_PX + w->height_mm * p->scale;
+    p->robot_radius_mm = world_robot_radius(w);
     p->surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, p->width, p->height);
     if (cairo_surface_status(p->surface) != CAIRO_STATUS_SUCCESS) {
         fprintf(stderr, "openswarm-sim: cannot make a %dx%d picture: %s\n", p->width, p->height,
@@ -215,7 +216,7 @@ static void draw_trails(picture *p, const output_history *h, int k)
 static void draw_robot(picture *p, const output_robot *r)
 {
     cairo_t *cr = p->cr;
-    const double R = KILOBOT_RADIUS_MM;
+    const double R = p->robot_radius_mm;
     const int on = r->led_r || r->led_g || r->led_b;
     cairo_arc(cr, r->x_mm, r->y_mm, R, 0, 2 * M_PI);
     if (on)

@@ -47,7 +47,7 @@ static void write_world(FILE *f, const world_spec *w)
     fputc(',', f);
     number(f, w->height_mm, 1);
     fputs("],\"radius\":", f);
-    number(f, KILOBOT_RADIUS_MM, 1);
+    number(f, world_robot_radius(w), 1);
     fputs(",\"obstacles\":[", f);
     for (int i = 0; i < w->n_obstacles; i++) {
         fputs(i ? ",[" : "[", f);

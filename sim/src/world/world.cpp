@@ -26,6 +26,12 @@ constexpr double MM_PER_UNIT = 10.0;
 constexpr double GRAVITY = 981.0;        /* cm / s^2 */
 constexpr double KILOBOT_MASS_KG = 0.016; /* 16 g */
 constexpr double LEG_FRICTION = 0.5;
+/* The e-puck (docs/world.md): 150 g on two rubber-tyred wheels 41 mm
+ * across, 53 mm apart, 1000 steps a turn. */
+constexpr double EPUCK_MASS_KG = 0.150;
+constexpr double EPUCK_WHEEL_FRICTION = 0.8;
+constexpr double EPUCK_MM_PER_STEP = 3.14159265358979323846 * 41.0 / 1000.0;
+constexpr double EPUCK_AXLE_MM = 53.0;
 constexpr double CONTACT_FRICTION = 0.3; /* body against body */
 constexpr int VELOCITY_ITERATIONS = 8, POSITION_ITERATIONS = 3;
 constexpr double PI = 3.14159265358979323846;
@@ -37,8 +43,13 @@ struct Robot {
     b2Body *carrier = nullptr; /* kinematic, no shape: where the legs would take it */
     kilobot_motors_model motors{};
     kilobot_motor motor[2]{};
+    int16_t wheel_steps[2]{}; /* an e-puck's: steps/s, left and right */
     uint64_t rng = 0;
 };
+
+/* What a body is, in its user data: walls and obstacles carry 0. */
+enum { TAG_ROBOT = 1, TAG_OBJECT = 2 };
+uintptr_t tag(int kind, int index) { return (uintptr_t(kind) << 24) | uintptr_t(index); }
 
 }  // namespace
 
@@ -96,6 +107,7 @@ b2Body *add_disc(world &w, world_point at, double angle_deg, double radius_mm, d
 void add_object(world &w, const world_object &o) {
     double mass = o.mass_g / 1000.0;
     b2Body *body = add_disc(w, o.at, 0.0, o.radius_mm, mass);
+    body->GetUserData().pointer = tag(TAG_OBJECT, int(w.objects.size()));
     b2FrictionJointDef joint;
     joint.Initialize(body, w.ground, body->GetPosition());
     joint.maxForce = float(o.friction * mass * GRAVITY);
@@ -104,18 +116,19 @@ void add_object(world &w, const world_object &o) {
     w.objects.push_back(body);
 }
 
-/* The legs: a friction joint between the robot and its carrier. */
-void add_legs(world &w, Robot &r) {
+/* The legs (a Kilobot's) or wheels (an e-puck's): a friction joint
+ * between the robot and its carrier, at most the grip they have. */
+void add_legs(world &w, Robot &r, double friction, double mass_kg, double radius_mm) {
     b2BodyDef def;
     def.type = b2_kinematicBody;
     def.position = r.body->GetPosition();
     def.angle = r.body->GetAngle();
     r.carrier = w.physics.CreateBody(&def);
-    double force = LEG_FRICTION * KILOBOT_MASS_KG * GRAVITY;
+    double force = friction * mass_kg * GRAVITY;
     b2FrictionJointDef legs;
     legs.Initialize(r.body, r.carrier, r.body->GetPosition());
     legs.maxForce = float(force);
-    legs.maxTorque = float(force * KILOBOT_RADIUS_MM / MM_PER_UNIT);
+    legs.maxTorque = float(force * radius_mm / MM_PER_UNIT);
     w.physics.CreateJoint(&legs);
 }
 
@@ -130,6 +143,30 @@ void walk(Robot &r, const kilobot_twist &twist) {
     r.carrier->SetAngularVelocity(float(twist.turn_rad_s));
     r.body->SetAwake(true);
 }
+
+/* A differential drive: each wheel rolls its steps' worth; the body turns
+ * by their difference over the axle. */
+kilobot_twist epuck_twist(const int16_t steps[2]) {
+    double left = steps[0] * EPUCK_MM_PER_STEP, right = steps[1] * EPUCK_MM_PER_STEP;
+    return kilobot_twist{(left + right) / 2.0, 0.0, (right - left) / EPUCK_AXLE_MM};
+}
+
+/* The nearest body on a ray but one (the robot looking). */
+class NearestOnRay : public b2RayCastCallback {
+  public:
+    explicit NearestOnRay(const b2Body *self) : self_(self) {}
+    b2Body *body = nullptr;
+    float fraction = 1.0f;
+    float ReportFixture(b2Fixture *fixture, const b2Vec2 &, const b2Vec2 &, float f) override {
+        if (fixture->GetBody() == self_) return -1.0f; /* ignore it */
+        body = fixture->GetBody();
+        fraction = f;
+        return f; /* only nearer ones from now on */
+    }
+
+  private:
+    const b2Body *self_;
+};
 
 /* Stops at the first fixed shape on the ray: robots and objects are low
  * enough for IR to pass over or around, walls and obstacles are not. */
@@ -161,13 +198,19 @@ world *world_create(const world_spec *spec) {
         world_random_next(&r.rng);
         kilobot_motors_draw(&r.motors, &r.rng);
         const world_robot &spec_robot = spec->robots[i];
-        r.body = add_disc(*w, spec_robot.at, spec_robot.heading_deg, KILOBOT_RADIUS_MM, KILOBOT_MASS_KG);
-        add_legs(*w, r);
+        const bool epuck = spec->robot_kind == WORLD_ROBOT_EPUCK;
+        double mass = epuck ? EPUCK_MASS_KG : KILOBOT_MASS_KG;
+        double radius = world_robot_radius(spec);
+        r.body = add_disc(*w, spec_robot.at, spec_robot.heading_deg, radius, mass);
+        r.body->GetUserData().pointer = tag(TAG_ROBOT, i);
+        add_legs(*w, r, epuck ? EPUCK_WHEEL_FRICTION : LEG_FRICTION, mass, radius);
     }
     return w.release();
 }
 
 void world_destroy(world *w) { delete w; }
+
+const world_spec *world_spec_of(const world *w) { return w->spec; }
 
 const kilobot_motors_model *world_robot_motors(const world *w, int i) {
     return &w->robots[size_t(i)].motors;
@@ -178,8 +221,19 @@ void world_motor_duty(world *w, int i, int side, uint8_t duty, double t) {
     kilobot_motor_set(&r.motor[side], &r.motors, side, duty, t);
 }
 
+void world_epuck_wheels(world *w, int i, int16_t left, int16_t right) {
+    Robot &r = w->robots[size_t(i)];
+    r.wheel_steps[0] = left;
+    r.wheel_steps[1] = right;
+}
+
 void world_step(world *w, double t) {
+    const bool epuck = w->spec->robot_kind == WORLD_ROBOT_EPUCK;
     for (Robot &r : w->robots) {
+        if (epuck) {
+            walk(r, epuck_twist(r.wheel_steps));
+            continue;
+        }
         for (kilobot_motor &motor : r.motor) kilobot_motor_advance(&motor, t);
         walk(r, kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng));
     }
@@ -201,6 +255,23 @@ int world_blocks_ir(const world *w, double ax_mm, double ay_mm, double bx_mm, do
     WallOnRay ray;
     w->physics.RayCast(&ray, a, b);
     return ray.hit;
+}
+
+world_hit world_ray(const world *w, int self, double x_mm, double y_mm, double heading_deg,
+                    double max_mm) {
+    double a = heading_deg * PI / 180.0;
+    b2Vec2 from = to_units({x_mm, y_mm});
+    b2Vec2 to = to_units({x_mm + max_mm * std::cos(a), y_mm + max_mm * std::sin(a)});
+    NearestOnRay ray(self >= 0 ? w->robots[size_t(self)].body : nullptr);
+    w->physics.RayCast(&ray, from, to);
+    world_hit hit{WORLD_HIT_NONE, -1, max_mm};
+    if (ray.body == nullptr) return hit;
+    hit.distance_mm = ray.fraction * max_mm;
+    uintptr_t t = ray.body->GetUserData().pointer;
+    int kind = int(t >> 24);
+    hit.kind = kind == TAG_ROBOT ? WORLD_HIT_ROBOT : kind == TAG_OBJECT ? WORLD_HIT_OBJECT : WORLD_HIT_WALL;
+    hit.index = kind ? int(t & 0xFFFFFF) : -1;
+    return hit;
 }
 
 void world_object_position(const world *w, int k, double *x_mm, double *y_mm) {

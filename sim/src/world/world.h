@@ -23,10 +23,13 @@ typedef struct world world;
 /* The bodies of spec, each robot's motors drawn from the seed. */
 world *world_create(const world_spec *spec);
 void world_destroy(world *w);
+const world_spec *world_spec_of(const world *w);
 /* Robot i's own motors (its factory calibration comes from them). */
 const kilobot_motors_model *world_robot_motors(const world *w, int i);
 /* The firmware of robot i set a motor (0 left, 1 right) at time t (s). */
 void world_motor_duty(world *w, int i, int side, uint8_t duty, double t);
+/* An e-puck's steppers: robot i's wheels turn at these steps/s. */
+void world_epuck_wheels(world *w, int i, int16_t left, int16_t right);
 /* Advance the physics by one WORLD_STEP_S, ending at time t. */
 void world_step(world *w, double t);
 void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg);
@@ -34,6 +37,18 @@ void world_object_position(const world *w, int k, double *x_mm, double *y_mm);
 /* 1 when a wall or an obstacle stands between two points (IR cannot pass:
  * they are taller than a Kilobot, whose IR travels by the floor). */
 int world_blocks_ir(const world *w, double ax_mm, double ay_mm, double bx_mm, double by_mm);
+
+/* What a ray meets first: a wall (or obstacle), a robot, an object. */
+enum { WORLD_HIT_NONE = 0, WORLD_HIT_WALL, WORLD_HIT_ROBOT, WORLD_HIT_OBJECT };
+typedef struct world_hit {
+    int kind;           /* WORLD_HIT_* */
+    int index;          /* the robot's or object's; -1 otherwise */
+    double distance_mm; /* max_mm when nothing */
+} world_hit;
+/* The first body on the ray from (x, y) towards heading_deg, at most
+ * max_mm away, robot self (-1: none) not counted: what a sensor of it sees. */
+world_hit world_ray(const world *w, int self, double x_mm, double y_mm, double heading_deg,
+                    double max_mm);
 
 #ifdef __cplusplus
 }

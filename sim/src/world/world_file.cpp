@@ -32,8 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr double ROBOT_R = KILOBOT_RADIUS_MM;
-constexpr double BODY = 2 * KILOBOT_RADIUS_MM; /* two centres closer overlap */
 constexpr double FAR_MM = 100000.0;           /* 100 m: beyond any table, a typo */
 constexpr long MAX_COUNT = 10000;             /* more robots in a group: a typo */
 /* Random placement gives up on a robot after this many draws in a row
@@ -520,6 +518,10 @@ class Reader {
     const Scanner &s_;
 
     /* The world under construction. */
+    int kind_ = WORLD_ROBOT_KILOBOT;
+    double ROBOT_R = KILOBOT_RADIUS_MM;
+    double BODY = 2 * KILOBOT_RADIUS_MM; /* two centres closer overlap */
+    std::string robot_ = "a Kilobot";   /* for messages */
     double w_ = 0, h_ = 0;
     std::vector<world_obstacle> obstacles_;
     std::vector<world_object> objects_;
@@ -530,6 +532,7 @@ class Reader {
     std::unordered_map<int64_t, std::vector<int>> cells_; /* robots by 33 mm square, for overlap */
     std::map<int, int> uids_;                             /* uid -> robot */
 
+    void robot_kind(const Node &n);
     void arena(const Node &n);
     void obstacle(const Node &n);
     void object_(const Node &n);
@@ -553,6 +556,24 @@ class Reader {
     void add_robot(const world_robot &r, const Origin &o);
     static int64_t cell_key(int64_t cx, int64_t cy) { return cx * 4000037 + cy; }
 };
+
+/* "robot": "kilobot" (default) or "epuck": every robot of the world is one
+ * (their size places them; the e-pucks' "firmware" is a controller built
+ * for the world, ports/epuck/host). */
+void Reader::robot_kind(const Node &n) {
+    const std::string ex = "\"robot\": \"epuck\"";
+    if (!n->is_string()) fail(n, "expected \"kilobot\" or \"epuck\", found " + found(*n) + "; e.g. " + ex);
+    std::string k = n->get<std::string>();
+    if (k == "epuck") {
+        kind_ = WORLD_ROBOT_EPUCK;
+        ROBOT_R = EPUCK_RADIUS_MM;
+        BODY = 2 * EPUCK_RADIUS_MM;
+        robot_ = "an e-puck";
+    } else if (k != "kilobot") {
+        fail(n, "unknown robot \"" + k + "\"; known: kilobot, epuck" +
+                    openswarm::did_you_mean(k, {"kilobot", "epuck"}, '"'));
+    }
+}
 
 void Reader::arena(const Node &n) {
     const std::string example = "\"arena\": {\"width_mm\": 600, \"height_mm\": 400}";
@@ -724,12 +745,12 @@ std::optional<Reader::Conflict> Reader::robot_conflict(P c) const {
         if (gaps[k] < ROBOT_R - EPS)
             return Conflict{std::string("reaches past the arena's ") + walls[k] + " wall: its centre is " +
                                 (gaps[k] < 0 ? "outside, " + mm(-gaps[k]) + " mm beyond it" : mm(gaps[k]) + " mm from it") +
-                                ", a Kilobot's radius is " + num(ROBOT_R) + " mm",
+                                ", " + robot_ + "'s radius is " + num(ROBOT_R) + " mm",
                             "keep robots' centres within x " + num(ROBOT_R) + ".." + num(w_ - ROBOT_R) + " and y " +
                                 num(ROBOT_R) + ".." + num(h_ - ROBOT_R)};
-    if (auto hit = obstacle_conflict(c, ROBOT_R, "a Kilobot's radius is " + num(ROBOT_R) + " mm"))
+    if (auto hit = obstacle_conflict(c, ROBOT_R, robot_ + "'s radius is " + num(ROBOT_R) + " mm"))
         return hit;
-    if (auto hit = object_conflict(c, ROBOT_R, "(the object's radius + a Kilobot's " + num(ROBOT_R) + ")"))
+    if (auto hit = object_conflict(c, ROBOT_R, "(the object's radius + " + robot_ + "'s " + num(ROBOT_R) + ")"))
         return hit;
     auto cx = (int64_t)std::floor(c.x / BODY), cy = (int64_t)std::floor(c.y / BODY);
     int nearest = -1;
@@ -862,7 +883,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
         long rows = whole(need(grid, "rows", ex), 1, MAX_COUNT, "robots along y", "\"rows\": 2");
         Node spacing_node = need(grid, "spacing_mm", ex);
         double spacing = number(spacing_node, BODY, FAR_MM, false,
-                                "mm between neighbouring centres (a Kilobot is " + num(BODY) + " mm across)",
+                                "mm between neighbouring centres (" + robot_ + " is " + num(BODY) + " mm across)",
                                 "\"spacing_mm\": 50");
         if (columns * rows > MAX_COUNT)
             fail(grid, std::to_string(columns) + " x " + std::to_string(rows) + " robots: more than " +
@@ -947,7 +968,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
 world_spec Reader::load(const json &doc) {
     Node root{&doc, "", ""};
     const std::string example = "{\"arena\": {\"width_mm\": 600, \"height_mm\": 400}, \"robots\": [{\"count\": 10}]}";
-    object(root, {"description", "arena", "seed", "duration_s", "sample_period_s", "ir", "clock_spread_pct", "light",
+    object(root, {"description", "robot", "arena", "seed", "duration_s", "sample_period_s", "ir", "clock_spread_pct", "light",
                   "obstacles", "objects", "robots"},
            example);
     world_spec w{};
@@ -959,6 +980,7 @@ world_spec Reader::load(const json &doc) {
     w.seed = 1;
     if (auto d = get(root, "description"))
         if (!d.value()->is_string()) fail(*d, "expected a text, found " + found(**d) + "; e.g. \"description\": \"ten robots packed\"");
+    if (auto k = get(root, "robot")) robot_kind(*k);
     if (!doc.contains("arena")) fail(root, "\"arena\" is missing; every world has one, e.g. " + example);
     arena(child(root, "arena"));
     if (auto s = get(root, "seed")) w.seed = (uint32_t)whole(*s, 0, 4294967295L, "the random seed", "\"seed\": 7");
@@ -995,6 +1017,8 @@ world_spec Reader::load(const json &doc) {
     }
     w.width_mm = w_;
     w.height_mm = h_;
+    w.robot_kind = kind_;
+    w.robot_radius_mm = ROBOT_R;
     return w;
 }
 

@@ -13,6 +13,7 @@
 #include <sim_io.h>
 
 #include "output/output.h"
+#include "world/epuck_run.h"
 #include "world/world.h"
 
 #define ANALOG_NOISE_COUNTS 1.0 /* sd of a reading, ADC counts */
@@ -248,6 +249,15 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
             next_sample_s += spec.sample_period_s;
         }
     }
+}
+
+int world_run_is_epuck(void) { return spec.robot_kind == WORLD_ROBOT_EPUCK; }
+
+int world_run_epucks(const options *o) {
+    int status = epuck_world_run(o, &spec, physics);
+    world_destroy(physics);
+    world_spec_free(&spec);
+    return status;
 }
 
 int world_run_finish(void) {

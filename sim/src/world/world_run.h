@@ -21,6 +21,11 @@ int world_run_start(robot *robots, int n, const options *o);
 /* After the lockstep window ending at cycle end of the nominal clock:
  * step the physics when a step is due. */
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz);
+/* The world holds e-pucks, whose controllers are host processes
+ * (world/epuck_run.h), not AVR firmware. */
+int world_run_is_epuck(void);
+/* Run those; the exit status. */
+int world_run_epucks(const options *o);
 /* The last sample, the outputs closed; -1 if writing them failed. */
 int world_run_finish(void);
 

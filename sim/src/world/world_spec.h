@@ -12,6 +12,11 @@
 
 #define WORLD_MAX_VERTICES 32
 #define KILOBOT_RADIUS_MM 16.5 /* a Kilobot is a disc 33 mm across */
+/* An e-puck is 74 mm across (docs/world.md gives the sources). */
+#define EPUCK_RADIUS_MM 37.0
+
+/* Which robots a world holds: one kind for all of them. */
+enum { WORLD_ROBOT_KILOBOT = 0, WORLD_ROBOT_EPUCK = 1 };
 
 typedef struct world_point {
     double x, y;
@@ -68,6 +73,8 @@ typedef struct world_spec {
     uint32_t seed;           /* motion noise, motor variation, analog noise, placement */
     double duration_s;       /* -1: not given (--time or its default) */
     double sample_period_s;  /* trajectories.csv's period; default 0.1 */
+    int robot_kind;          /* WORLD_ROBOT_*: "robot" in the file, kilobot by default */
+    double robot_radius_mm;  /* its body's */
 } world_spec;
 
 #ifdef __cplusplus
@@ -77,6 +84,10 @@ extern "C" {
 /* Read and check path; on any mistake print "path:line:column: what is
  * wrong; what to do" on stderr and return -1 (nothing else is touched). */
 int world_spec_load(const char *path, world_spec *out);
+/* The radius of w's robots (a Kilobot's if w does not say). */
+static inline double world_robot_radius(const world_spec *w) {
+    return w->robot_radius_mm > 0 ? w->robot_radius_mm : KILOBOT_RADIUS_MM;
+}
 void world_spec_free(world_spec *w);
 
 #ifdef __cplusplus

@@ -1,0 +1,29 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The world's end of the link to one e-puck controller process
+ * (ports/epuck/host/include/openswarm/epuck_world_link.h). */
+#ifndef OPENSWARM_EPUCK_LINK_H
+#define OPENSWARM_EPUCK_LINK_H
+
+#include <stdint.h>
+#include <sys/types.h>
+
+#include "openswarm/epuck_world_link.h"
+
+typedef struct epuck_link {
+    pid_t pid;
+    int to, from; /* its standard input and output */
+    int index;    /* the robot's */
+    const char *controller;
+} epuck_link;
+
+/* Start the controller for robot index and read its first answer; -1
+ * after a message naming the controller and what went wrong. */
+int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_world_output *first);
+/* One exchange's halves: the input (and pixels when it carries a frame),
+ * then the answer. -1 after a message (the process ended or said nonsense). */
+int epuck_link_send(epuck_link *l, const epuck_world_input *in, const uint16_t *pixels);
+int epuck_link_receive(epuck_link *l, epuck_world_output *out);
+/* Tell it to stop, wait for it; its exit status (-1 if killed). */
+int epuck_link_stop(epuck_link *l);
+
+#endif

@@ -1,0 +1,151 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+#include "world/epuck_run.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "output/output.h"
+#include "world/epuck_link.h"
+#include "world/epuck_sensors.h"
+#include "world/world_random.h"
+
+#define STEP_MS 10           /* = WORLD_STEP_S: one exchange per physics step */
+#define FRAME_PERIOD_MS 100  /* the camera's 10 frames a second (docs/world.md) */
+
+typedef struct epuck_robot {
+    epuck_link link;
+    epuck_world_output last;
+    uint64_t rng;
+} epuck_robot;
+
+static epuck_robot *robots;
+static int n_robots;
+static output_robot *poses;
+static world_point *object_centres;
+static uint16_t frame[EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT];
+
+static void *allocate(size_t n, size_t size) {
+    void *p = calloc(n ? n : 1, size);
+    if (p == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for %zu e-pucks\n", n);
+        exit(EXIT_CRASH);
+    }
+    return p;
+}
+
+static int start_controllers(const options *o, const world_spec *spec) {
+    for (int i = 0; i < n_robots; i++) {
+        epuck_robot *r = &robots[i];
+        r->rng = (uint64_t)spec->seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0xE9u);
+        world_random_next(&r->rng);
+        if (epuck_link_start(&r->link, o->robot_elf[i], i, &r->last) != 0) return -1;
+    }
+    return 0;
+}
+
+/* One step's exchange with every controller: all inputs first, so the
+ * processes run the step side by side, then every answer. */
+static int exchange(const world *physics, uint32_t t_ms) {
+    int with_frame = t_ms % FRAME_PERIOD_MS == 0;
+    for (int i = 0; i < n_robots; i++) {
+        epuck_robot *r = &robots[i];
+        epuck_world_input in = {EPUCK_LINK_MAGIC, STEP_MS, EPUCK_LINK_PROXIMITY, 0, {0}, {0}, 0, 0};
+        epuck_proximity_read(physics, i, in.proximity_off, in.proximity_pulsed, &r->rng);
+        if (with_frame) {
+            epuck_camera_render(physics, i, frame);
+            in.frame_width = EPUCK_FRAME_WIDTH;
+            in.frame_height = EPUCK_FRAME_HEIGHT;
+        }
+        if (epuck_link_send(&r->link, &in, frame) != 0) return -1;
+    }
+    for (int i = 0; i < n_robots; i++)
+        if (epuck_link_receive(&robots[i].link, &robots[i].last) != 0) return -1;
+    return 0;
+}
+
+static unsigned faults_now(void) {
+    unsigned n = 0;
+    for (int i = 0; i < n_robots; i++) n += robots[i].last.faults;
+    return n;
+}
+
+static void observe(const world *physics, const world_spec *spec) {
+    for (int i = 0; i < n_robots; i++) {
+        output_robot *p = &poses[i];
+        world_robot_pose(physics, i, &p->x_mm, &p->y_mm, &p->heading_deg);
+        uint8_t rgb = robots[i].last.rgb_leds; /* EPUCK_RGB: 2 bits a channel */
+        p->led_r = rgb & 3;
+        p->led_g = (rgb >> 2) & 3;
+        p->led_b = (rgb >> 4) & 3;
+    }
+    for (int k = 0; k < spec->n_objects; k++)
+        world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
+}
+
+static int record(double t) {
+    output_sample s = {t, poses, object_centres, NULL, 0};
+    return output_sample_add(&s);
+}
+
+/* The run proper: steps until the time is up or a controller fails. */
+static int run_steps(const options *o, const world_spec *spec, world *physics, int recording) {
+    uint32_t steps = (uint32_t)llround(o->seconds * 1000.0 / STEP_MS);
+    double next_sample = spec->sample_period_s;
+    unsigned faults = 0;
+    for (uint32_t k = 0; k < steps; k++) {
+        uint32_t t_ms = k * STEP_MS;
+        if (exchange(physics, t_ms) != 0) return EXIT_CRASH;
+        if (faults_now() != faults) {
+            faults = faults_now();
+            fprintf(stderr, "openswarm-sim: a controller reported a kernel fault by %.2f s (its "
+                            "message is above)\n", (t_ms + STEP_MS) / 1000.0);
+        }
+        for (int i = 0; i < n_robots; i++)
+            world_epuck_wheels(physics, i, robots[i].last.wheel_left, robots[i].last.wheel_right);
+        double t = (t_ms + STEP_MS) / 1000.0;
+        world_step(physics, t);
+        observe(physics, spec);
+        if (recording && t + 1e-9 >= next_sample) {
+            if (record(t) != 0) return EXIT_USAGE;
+            next_sample += spec->sample_period_s;
+        }
+    }
+    return faults && !o->allow_faults ? EXIT_FAULT : 0;
+}
+
+static int stop_controllers(void) {
+    int failed = 0;
+    for (int i = 0; i < n_robots; i++)
+        if (robots[i].link.pid > 0 && epuck_link_stop(&robots[i].link) != 0) failed = 1;
+    return failed;
+}
+
+int epuck_world_run(const options *o, const world_spec *spec, world *physics) {
+    n_robots = spec->n_robots;
+    robots = allocate((size_t)n_robots, sizeof *robots);
+    poses = allocate((size_t)n_robots, sizeof *poses);
+    object_centres = allocate((size_t)spec->n_objects, sizeof *object_centres);
+    struct timespec began;
+    clock_gettime(CLOCK_MONOTONIC, &began);
+    int status = start_controllers(o, spec) != 0 ? EXIT_CRASH : 0;
+    int recording = 0;
+    if (status == 0 && o->out_dir != NULL) {
+        output_options out = {o->out_dir, o->video, o->quiet};
+        observe(physics, spec);
+        if (output_open(&out, spec) != 0 || record(0.0) != 0) status = EXIT_USAGE;
+        else recording = 1;
+    }
+    if (status == 0) status = run_steps(o, spec, physics, recording);
+    if (stop_controllers() && status == 0) status = EXIT_CRASH;
+    if (recording && output_close() != 0 && status == 0) status = EXIT_USAGE;
+    struct timespec ended;
+    clock_gettime(CLOCK_MONOTONIC, &ended);
+    double wall = (double)(ended.tv_sec - began.tv_sec) + (ended.tv_nsec - began.tv_nsec) / 1e9;
+    if (status == 0 && !o->quiet)
+        fprintf(stderr, "openswarm-sim: ran %.3f s of simulated time (%d e-puck%s) in %.1f s, "
+                        "%.1fx real time\n",
+                o->seconds, n_robots, n_robots == 1 ? "" : "s", wall, o->seconds / (wall > 0 ? wall : 1e-9));
+    return status;
+}
