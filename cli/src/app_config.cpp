@@ -1,6 +1,7 @@
 #include "app_config.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -139,6 +140,11 @@ void load_kernel(const fs::path &file, const json &k, AppConfig &c) {
     }
 }
 
+std::string upper_case(std::string s) {
+    for (char &ch : s) ch = (char)std::toupper((unsigned char)ch);
+    return s;
+}
+
 void load_events(const fs::path &file, const json &list, AppConfig &c) {
     if (!list.is_array()) fail(file, "events", "expected a list [ {\"name\": ...}, ... ], found " + found(list));
     for (size_t i = 0; i < list.size(); i++) {
@@ -149,7 +155,11 @@ void load_events(const fs::path &file, const json &list, AppConfig &c) {
         EventConfig ev;
         ev.name = identifier_at(file, path + ".name", require(file, e, "name", path));
         for (const auto &other : c.events)
-            if (other.name == ev.name) fail(file, path + ".name", "\"" + ev.name + "\" is declared twice");
+            if (upper_case(other.name) == upper_case(ev.name))
+                fail(file, path + ".name",
+                     "\"" + ev.name + "\" is declared twice" +
+                         (other.name == ev.name ? "" : " (as \"" + other.name + "\": both would be EV_" +
+                                                           upper_case(ev.name) + ")"));
         if (e.contains("type") && e.contains("size")) fail(file, path, "give \"type\" or \"size\", not both");
         if (e.contains("type")) {
             std::string t = string_at(file, path + ".type", e["type"], "a payload type");
@@ -177,6 +187,11 @@ void load_threads(const fs::path &file, const json &list, AppConfig &c) {
         check_keys(file, path, t, {"entry", "stack", "priority"});
         ThreadConfig th;
         th.entry = identifier_at(file, path + ".entry", require(file, t, "entry", path));
+        for (const auto &other : c.threads)
+            if (other.entry == th.entry)
+                fail(file, path + ".entry", "\"" + th.entry + "\" starts two threads: each thread's entry "
+                     "is a function of its own (two threads running one loop: write two functions "
+                     "that call it)");
         if (t.contains("stack")) th.stack = (unsigned)number_at(file, path + ".stack", t["stack"], 16, 4096);
         if (t.contains("priority")) th.priority = (unsigned)number_at(file, path + ".priority", t["priority"], 0, 255);
         c.threads.push_back(th);

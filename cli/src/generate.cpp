@@ -75,7 +75,31 @@ void check_max_threads(const AppConfig &c, const Libraries &libraries, size_t th
                       "; raise it, or leave it out and the build sizes it");
 }
 
+// A pool size the file gives must hold what the app and the port register,
+// or a registration fails at start-up and the app silently does nothing.
+void check_given_at_least(const AppConfig &c, const std::string &key, long needed,
+                          const std::string &what) {
+    auto given = c.kernel.find(key);
+    if (given == c.kernel.end() || given->second >= needed) return;
+    throw ConfigError(c.file.string() + ": \"kernel." + key + "\": " + what + " need " +
+                      std::to_string(needed) + ", found " + std::to_string(given->second) +
+                      "; raise it, or leave it out and the build sizes it");
+}
+
+void check_event_pools(const AppConfig &c, const PortInfo &port) {
+    unsigned data = port.device_event_bytes;
+    for (const auto &e : c.events) data += e.size;
+    check_given_at_least(c, "max_events", port.device_events + (long)c.events.size(),
+                         "the kernel's and the " + port.name + "'s " +
+                             std::to_string(port.device_events) + " events and openswarm.json's " +
+                             std::to_string(c.events.size()));
+    check_given_at_least(c, "event_data", data,
+                         "the data of the kernel's and the " + port.name + "'s events (" +
+                             std::to_string(port.device_event_bytes) + " bytes) and of openswarm.json's");
+}
+
 std::string config_header(const AppConfig &c, const PortInfo &port, const Libraries &libraries) {
+    check_event_pools(c, port);
     std::map<std::string, long> values = c.kernel;
     // Room for what the app declares, where the file leaves the size open.
     if (!c.events.empty()) {
@@ -95,6 +119,8 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
         unsigned guard = values.count("stack_check") && values["stack_check"] == 0 ? 0 : stack_guard_bytes;
         unsigned pool = 0;
         for (unsigned stack : stacks) pool += round_up(stack + guard, port.stack_block);
+        check_given_at_least(c, "stack_pool", pool,
+                             "the stacks of " + threads_starting(c, libraries) + ", as the pool carves them,");
         if (!values.count("stack_pool")) values["stack_pool"] = pool;
     }
     std::ostringstream h;

@@ -71,6 +71,18 @@ printf '{"name": "keep", "port": "kilobot", "events": [{"name": "a"}, {"name": "
 expect 2 "\"events\[1\].name\": \"a\" is declared twice" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 2}, "threads": [{"entry": "a"}, {"entry": "b"}]}' > keep/openswarm.json
 expect 2 "\"threads\": 2 threads and the system thread need kernel.max_threads >= 3, found 2" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "events": [{"name": "blink"}, {"name": "BLINK"}]}' > keep/openswarm.json
+expect 2 "\"events\[1\].name\": \"BLINK\" is declared twice \(as \"blink\": both would be EV_BLINK\)" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "a"}, {"entry": "a"}]}' > keep/openswarm.json
+expect 2 "\"threads\[1\].entry\": \"a\" starts two threads" "$openswarm" build -C keep
+# Pools given too small for what the app and the port register: refused
+# (they built, and the app silently did nothing).
+printf '{"name": "keep", "port": "kilobot", "events": [{"name": "a"}], "kernel": {"max_events": 10}}' > keep/openswarm.json
+expect 2 "\"kernel.max_events\": the kernel's and the kilobot's 10 events and openswarm.json's 1 need 11, found 10" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "kernel": {"event_data": 10}}' > keep/openswarm.json
+expect 2 "\"kernel.event_data\": .* need 81, found 10" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "a", "stack": 96}], "kernel": {"stack_pool": 50}}' > keep/openswarm.json
+expect 2 "\"kernel.stack_pool\": the stacks of 1 thread in openswarm.json, as the pool carves them, need 112, found 50" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "not an identifier"}]}' > keep/openswarm.json
 expect 2 "\"threads\[0\].entry\": \"not an identifier\" is not a C identifier" "$openswarm" build -C keep
 
@@ -115,6 +127,12 @@ expect 2 "openswarm: --clock-spread 9: give a percentage from 0 to 5" "$openswar
 "$openswarm" new my-robot >/dev/null && "$openswarm" build -C my-robot >/dev/null \
     && [ -s my-robot/build/kilobot/my-robot.elf ] && [ -s my-robot/build/kilobot/my-robot.hex ] \
     && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: my-robot did not build"; }
+
+# The smallest pools the checks accept run the app as declared.
+"$openswarm" new tight >/dev/null
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); j["kernel"] = {"max_events": 11, "event_data": 81, "stack_pool": 112}; json.dump(j, open(sys.argv[1], "w"))' tight/openswarm.json
+[ "$("$openswarm" run -C tight --time 1 2>&1 | grep -c '\] led ')" -ge 3 ] \
+    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: the smallest accepted pools do not run blinky"; }
 
 rm -rf empty-app && mkdir empty-app && printf '{"name": "e", "port": "kilobot"}' > empty-app/openswarm.json
 expect 2 "no tests: add tests/NAME.trace" "$openswarm" test -C empty-app
