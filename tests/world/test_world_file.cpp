@@ -264,7 +264,7 @@ TEST_F(WorldFile, NestedValuesAreLocated) {
 TEST_F(WorldFile, KeysWithEscapesAreLocated) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "a\/b\u00e9": 1})");
     EXPECT_EQ(err.substr(0, err.find('\n')),
-              "world.json:1:48: unknown key \"a/b\xc3\xa9\"; the keys here are description, arena, seed, duration_s, "
+              "world.json:1:48: unknown key \"a/b\xc3\xa9\"; the keys here are description, robot, arena, seed, duration_s, "
               "sample_period_s, ir, clock_spread_pct, light, obstacles, objects, robots");
 }
 
@@ -347,3 +347,33 @@ TEST_F(WorldFile, UidsAreUniqueAndInRange) {
 }
 
 } // namespace
+
+namespace {
+
+TEST_F(WorldFile, EpuckWorldsPlaceEpuckSizedRobots) {
+    world_spec w{};
+    ASSERT_EQ(load(R"({"robot": "epuck", "arena": {"width_mm": 400, "height_mm": 300},
+                      "robots": [{"poses": [{"x_mm": 100, "y_mm": 100}, {"x_mm": 180, "y_mm": 100}]}]})",
+                   &w),
+              "");
+    EXPECT_EQ(w.robot_kind, WORLD_ROBOT_EPUCK);
+    EXPECT_DOUBLE_EQ(w.robot_radius_mm, EPUCK_RADIUS_MM);
+    world_spec_free(&w);
+    // 60 mm apart: two Kilobots would fit, two e-pucks overlap.
+    EXPECT_NE(error_of(R"({"robot": "epuck", "arena": {"width_mm": 400, "height_mm": 300},
+                          "robots": [{"poses": [{"x_mm": 100, "y_mm": 100}, {"x_mm": 160, "y_mm": 100}]}]})")
+                  .find("e-pucks are 74 mm across"),
+              std::string::npos);
+    EXPECT_NE(error_of(R"({"robot": "epuck", "arena": {"width_mm": 400, "height_mm": 300},
+                          "robots": [{"poses": [{"x_mm": 20, "y_mm": 100}]}]})")
+                  .find("an e-puck's radius is 37 mm"),
+              std::string::npos);
+}
+
+TEST_F(WorldFile, UnknownRobotKindIsNamedWithTheNearestKnown) {
+    std::string err = error_of(R"({"robot": "epuk", "arena": {"width_mm": 400, "height_mm": 300}})");
+    EXPECT_EQ(err.substr(0, err.find('\n')),
+              "world.json:1:11: robot: unknown robot \"epuk\"; known: kilobot, epuck (did you mean \"epuck\"?)");
+}
+
+}  // namespace

@@ -521,7 +521,7 @@ class Reader {
     int kind_ = WORLD_ROBOT_KILOBOT;
     double ROBOT_R = KILOBOT_RADIUS_MM;
     double BODY = 2 * KILOBOT_RADIUS_MM; /* two centres closer overlap */
-    std::string robot_ = "a Kilobot";   /* for messages */
+    std::string robot_ = "a Kilobot", robots_plural_ = "Kilobots"; /* for messages */
     double w_ = 0, h_ = 0;
     std::vector<world_obstacle> obstacles_;
     std::vector<world_object> objects_;
@@ -569,6 +569,7 @@ void Reader::robot_kind(const Node &n) {
         ROBOT_R = EPUCK_RADIUS_MM;
         BODY = 2 * EPUCK_RADIUS_MM;
         robot_ = "an e-puck";
+        robots_plural_ = "e-pucks";
     } else if (k != "kilobot") {
         fail(n, "unknown robot \"" + k + "\"; known: kilobot, epuck" +
                     openswarm::did_you_mean(k, {"kilobot", "epuck"}, '"'));
@@ -769,7 +770,7 @@ std::optional<Reader::Conflict> Reader::robot_conflict(P c) const {
             }
         }
     if (nearest >= 0)
-        return Conflict{"overlaps " + robot_name(nearest) + ": centres " + mm(nearest_d) + " mm apart, Kilobots are " +
+        return Conflict{"overlaps " + robot_name(nearest) + ": centres " + mm(nearest_d) + " mm apart, " + robots_plural_ + " are " +
                             num(BODY) + " mm across",
                         "move them at least " + num(BODY) + " mm apart"};
     return std::nullopt;
