@@ -1,0 +1,149 @@
+#include "experiment_spec.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "json_checks.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace openswarm {
+
+namespace {
+
+const char *example = "docs/case-study.md has a whole one";
+
+void load_world(const fs::path &f, const json &doc, Experiment &e) {
+    const json &arena = require(f, doc, "arena");
+    check_keys(f, "arena", arena, {"width_mm", "height_mm"});
+    e.width_mm = real_at(f, "arena.width_mm", require(f, arena, "width_mm", "arena"), 100, 100000);
+    e.height_mm = real_at(f, "arena.height_mm", require(f, arena, "height_mm", "arena"), 100, 100000);
+    const json &marks = require(f, doc, "marks");
+    check_keys(f, "marks", marks, {"columns", "rows", "spacing_mm"});
+    e.columns = (int)number_at(f, "marks.columns", require(f, marks, "columns", "marks"), 1, 1000);
+    e.rows = (int)number_at(f, "marks.rows", require(f, marks, "rows", "marks"), 1, 1000);
+    e.spacing_mm = real_at(f, "marks.spacing_mm", require(f, marks, "spacing_mm", "marks"), 80, 10000);
+    if ((e.columns - 1) * e.spacing_mm + 2 * 50 > e.width_mm ||
+        (e.rows - 1) * e.spacing_mm + 2 * 50 > e.height_mm)
+        fail(f, "marks", "a grid of " + std::to_string(e.columns) + " x " + std::to_string(e.rows) +
+                             " marks this far apart does not fit the arena: fewer marks, or closer");
+    e.robots = (int)number_at(f, "robots", require(f, doc, "robots"), 1, 100);
+    const json &objects = require(f, doc, "objects");
+    check_keys(f, "objects", objects, {"count", "radius_mm", "mass_g", "friction"});
+    e.objects = (int)number_at(f, "objects.count", require(f, objects, "count", "objects"), 1, 1000);
+    if (objects.contains("radius_mm"))
+        e.object_radius_mm = real_at(f, "objects.radius_mm", objects["radius_mm"], 5, e.spacing_mm / 2 - 1);
+    if (objects.contains("mass_g")) e.object_mass_g = real_at(f, "objects.mass_g", objects["mass_g"], 0.1, 10000);
+    if (objects.contains("friction")) e.object_friction = real_at(f, "objects.friction", objects["friction"], 0, 2);
+    if (e.robots + e.objects > e.columns * e.rows)
+        fail(f, "objects.count", std::to_string(e.robots) + " robots and " + std::to_string(e.objects) +
+                                     " objects need as many marks, and the grid has " +
+                                     std::to_string(e.columns * e.rows) + ": fewer, or more marks");
+}
+
+void load_controllers(const fs::path &f, const json &doc, Experiment &e) {
+    const json &list = require(f, doc, "controllers");
+    if (!list.is_array() || list.empty())
+        fail(f, "controllers", "expected a list of {\"name\", \"program\"}, found " + found(list));
+    for (size_t i = 0; i < list.size(); i++) {
+        std::string path = "controllers[" + std::to_string(i) + "]";
+        const json &c = list[i];
+        if (!c.is_object()) fail(f, path, "expected {\"name\": ..., \"program\": ...}, found " + found(c));
+        check_keys(f, path, c, {"name", "program"});
+        ExperimentController ctl;
+        ctl.name = string_at(f, path + ".name", require(f, c, "name", path), "a name");
+        for (const auto &other : e.controllers)
+            if (other.name == ctl.name) fail(f, path + ".name", "\"" + ctl.name + "\" is named twice");
+        ctl.program = f.parent_path() / string_at(f, path + ".program", require(f, c, "program", path),
+                                                  "a controller program's path");
+        e.controllers.push_back(ctl);
+    }
+}
+
+void load_reference(const fs::path &f, const json &doc, Experiment &e) {
+    if (!doc.contains("reference")) return;
+    const json &r = doc["reference"];
+    check_keys(f, "reference", r, {"label", "time_s", "largest_cluster"});
+    e.reference_label = string_at(f, "reference.label", require(f, r, "label", "reference"), "a text");
+    e.reference_time_s = real_at(f, "reference.time_s", require(f, r, "time_s", "reference"), 0, e.duration_s);
+    e.reference_fraction =
+        real_at(f, "reference.largest_cluster", require(f, r, "largest_cluster", "reference"), 0, 1);
+}
+
+// splitmix64: the same draws on every machine.
+uint64_t next(uint64_t &s) {
+    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+}  // namespace
+
+Experiment load_experiment(const fs::path &file) {
+    std::ifstream in(file);
+    if (!in) throw ConfigError(file.string() + ": cannot read it; give an experiment file (" + example + ")");
+    std::stringstream text;
+    text << in.rdbuf();
+    json doc;
+    try {
+        doc = json::parse(text.str());
+    } catch (const json::parse_error &err) {
+        throw ConfigError(located_message(file, text.str(), err.byte ? err.byte - 1 : 0,
+                                          "invalid JSON (" + std::string(err.what()) + ")"));
+    }
+    Experiment e;
+    e.file = file;
+    if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }; " + std::string(example));
+    check_keys(file, "", doc, {"description", "arena", "marks", "robots", "objects", "duration_s",
+                               "sample_period_s", "trials", "seed", "controllers", "reference"});
+    load_world(file, doc, e);
+    e.duration_s = real_at(file, "duration_s", require(file, doc, "duration_s"), 1, 86400);
+    if (doc.contains("sample_period_s"))
+        e.sample_period_s = real_at(file, "sample_period_s", doc["sample_period_s"], 0.1, e.duration_s);
+    e.trials = (int)number_at(file, "trials", require(file, doc, "trials"), 1, 10000);
+    if (doc.contains("seed")) e.seed = (uint32_t)number_at(file, "seed", doc["seed"], 0, 4294967295L);
+    load_controllers(file, doc, e);
+    load_reference(file, doc, e);
+    return e;
+}
+
+std::string trial_world(const Experiment &e, uint32_t seed, const fs::path &program) {
+    // Marks in a random order: the first robots + objects of it are taken.
+    int n = e.columns * e.rows;
+    std::vector<int> marks(n);
+    for (int k = 0; k < n; k++) marks[k] = k;
+    uint64_t s = 0x6578706572696D65ull ^ ((uint64_t)seed << 17);
+    for (int k = n - 1; k > 0; k--) std::swap(marks[k], marks[next(s) % (uint64_t)(k + 1)]);
+    double x0 = (e.width_mm - (e.columns - 1) * e.spacing_mm) / 2;
+    double y0 = (e.height_mm - (e.rows - 1) * e.spacing_mm) / 2;
+    auto at = [&](int mark, json &j) {
+        j["x_mm"] = x0 + (mark % e.columns) * e.spacing_mm;
+        j["y_mm"] = y0 + (mark / e.columns) * e.spacing_mm;
+    };
+    json world = {{"robot", "epuck"},
+                  {"arena", {{"width_mm", e.width_mm}, {"height_mm", e.height_mm}}},
+                  {"seed", seed},
+                  {"duration_s", e.duration_s},
+                  {"sample_period_s", e.sample_period_s}};
+    json poses = json::array(), objects = json::array();
+    for (int k = 0; k < e.robots; k++) {
+        json p;
+        at(marks[k], p);
+        p["heading_deg"] = (double)(next(s) % 360);
+        poses.push_back(p);
+    }
+    for (int k = 0; k < e.objects; k++) {
+        json o = {{"radius_mm", e.object_radius_mm}, {"mass_g", e.object_mass_g}, {"friction", e.object_friction}};
+        at(marks[e.robots + k], o);
+        objects.push_back(o);
+    }
+    world["objects"] = objects;
+    world["robots"] = json::array({{{"poses", poses}, {"firmware", fs::absolute(program).string()}}});
+    return world.dump(2) + "\n";
+}
+
+}  // namespace openswarm

@@ -1,0 +1,44 @@
+// An experiment file (`openswarm experiment FILE`, docs/case-study.md):
+// the world every trial starts from - an arena, robots and objects placed
+// at random on a grid of marks, as in the paper's case study - the
+// controllers to compare, how many trials of each, how long, from which
+// seed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace openswarm {
+
+struct ExperimentController {
+    std::string name;              // as results.csv and the plot name it
+    std::filesystem::path program; // the controller built for the world
+};
+
+struct Experiment {
+    std::filesystem::path file;
+    double width_mm = 0, height_mm = 0;
+    int columns = 0, rows = 0;   // the grid of marks, centred in the arena
+    double spacing_mm = 0;
+    int robots = 0;
+    int objects = 0;
+    double object_radius_mm = 50, object_mass_g = 50, object_friction = 0.5;
+    double duration_s = 0, sample_period_s = 1;
+    int trials = 0;
+    uint32_t seed = 1;
+    std::vector<ExperimentController> controllers;
+    // A real-robot result to mark on the plot: this fraction at this time.
+    double reference_fraction = -1, reference_time_s = -1;
+    std::string reference_label;
+};
+
+// Read and check file; throws ConfigError naming the file, the key and the fix.
+Experiment load_experiment(const std::filesystem::path &file);
+
+// The world.json of one trial: robots and objects on distinct marks,
+// drawn from seed alone (every controller of a trial gets the same one).
+std::string trial_world(const Experiment &e, uint32_t seed, const std::filesystem::path &program);
+
+}  // namespace openswarm
