@@ -72,7 +72,7 @@ set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
 # epuck_world): the device layer over a board that takes its inputs from
 # the world and answers with its outputs (ports/epuck/host). The process's
 # main is the world link's; the app's own runs on the simulated CPU. Event
-# ids as on the e-puck2 (16 reserved for the port).
+# ids and pool sizes as on the e-puck2 (16 ids reserved for the port).
 set(OPENSWARM_BOARD_host_epuck_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/host/src/board_world.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/link_io.c
@@ -80,7 +80,8 @@ set(OPENSWARM_BOARD_host_epuck_world_SOURCES
     ${OPENSWARM_EPUCK_SOURCES})
 set(OPENSWARM_BOARD_host_epuck_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/include
     ${OPENSWARM_ROOT}/ports/epuck/host/include)
-set(OPENSWARM_BOARD_host_epuck_world_DEFINITIONS PORT_EVENT_COUNT=16)
+set(OPENSWARM_BOARD_host_epuck_world_DEFINITIONS PORT_EVENT_COUNT=16
+    "OPENSWARM_HOST_BOARD_CONFIG=\"openswarm/epuck_world_config.h\"")
 
 # The e-puck (dsPIC30F6014A, Microchip XC16): the CPU port, the board and
 # the device layer. Never built here: XC16 is not in Debian; the sources are
