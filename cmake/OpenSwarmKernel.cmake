@@ -1,4 +1,4 @@
-# openswarm_add_kernel(<target> PORT <port> [CONFIG <header>] [SANITIZE])
+# openswarm_add_kernel(<target> PORT <port> [BOARD <board>] [CONFIG <header>] [SANITIZE])
 #
 # The kernel's pools are sized at compile time, so each application (or
 # test suite) builds its own kernel library from the sources, for one port
@@ -68,6 +68,21 @@ set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
 set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
     ${OPENSWARM_ROOT}/ports/epuck/include)
 
+# The e-puck on the host port, as a robot of the world simulator (board
+# epuck_world): the device layer over a board that takes its inputs from
+# the world and answers with its outputs (ports/epuck/host). The process's
+# main is the world link's; the app's own runs on the simulated CPU. Event
+# ids and pool sizes as on the e-puck2 (16 ids reserved for the port).
+set(OPENSWARM_BOARD_host_epuck_world_SOURCES
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/board_world.c
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/link_io.c
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/world_link_main.c
+    ${OPENSWARM_EPUCK_SOURCES})
+set(OPENSWARM_BOARD_host_epuck_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/include
+    ${OPENSWARM_ROOT}/ports/epuck/host/include)
+set(OPENSWARM_BOARD_host_epuck_world_DEFINITIONS PORT_EVENT_COUNT=16
+    "OPENSWARM_HOST_BOARD_CONFIG=\"openswarm/epuck_world_config.h\"")
+
 # The e-puck (dsPIC30F6014A, Microchip XC16): the CPU port, the board and
 # the device layer. Never built here: XC16 is not in Debian; the sources are
 # type-checked with 16-bit int and pointers instead (ctest -L dspic).
@@ -102,14 +117,15 @@ function(openswarm_add_kernel target)
     message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown PORT '${K_PORT}' (known: host, kilobot, epuck2, epuck)")
   endif()
   set(board_sources)
-  if(K_PORT STREQUAL "epuck2")
-    if(NOT K_BOARD)
-      set(K_BOARD qemu)
+  if(K_PORT STREQUAL "epuck2" AND NOT K_BOARD)
+    set(K_BOARD qemu)
+  endif()
+  if(K_BOARD)
+    if(NOT DEFINED OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_SOURCES)
+      message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown BOARD '${K_BOARD}' for ${K_PORT} "
+        "(known: qemu for epuck2, epuck_world for host)")
     endif()
-    if(NOT DEFINED OPENSWARM_BOARD_epuck2_${K_BOARD}_SOURCES)
-      message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown BOARD '${K_BOARD}' for epuck2 (known: qemu)")
-    endif()
-    set(board_sources ${OPENSWARM_BOARD_epuck2_${K_BOARD}_SOURCES})
+    set(board_sources ${OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_SOURCES})
   endif()
   add_library(${target} STATIC ${OPENSWARM_KERNEL_SOURCES} ${OPENSWARM_PORT_${K_PORT}_SOURCES}
     ${board_sources})
@@ -123,13 +139,19 @@ function(openswarm_add_kernel target)
   if(K_PORT STREQUAL "kilobot")
     target_include_directories(${target} PUBLIC ${OPENSWARM_ROOT}/ports/kilobot/kilolib/include)
   endif()
+  if(DEFINED OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_INCLUDES)
+    target_include_directories(${target} PUBLIC ${OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_INCLUDES})
+  endif()
+  if(DEFINED OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_DEFINITIONS)
+    target_compile_definitions(${target} PUBLIC ${OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_DEFINITIONS})
+  endif()
   target_compile_options(${target} PRIVATE ${OPENSWARM_WARNINGS})
   # The kernel is C99 (it must build with every robot's compiler); the
   # host port uses C11 atomics.
   set_source_files_properties(${OPENSWARM_KERNEL_SOURCES} TARGET_DIRECTORY ${target}
     PROPERTIES COMPILE_OPTIONS "-std=c99")
   if(K_PORT STREQUAL "host")
-    set_source_files_properties(${OPENSWARM_PORT_host_SOURCES} TARGET_DIRECTORY ${target}
+    set_source_files_properties(${OPENSWARM_PORT_host_SOURCES} ${board_sources} TARGET_DIRECTORY ${target}
       PROPERTIES COMPILE_OPTIONS "-std=gnu11")
   elseif(K_PORT STREQUAL "kilobot")
     set(_c ${OPENSWARM_PORT_kilobot_SOURCES})

@@ -9,19 +9,23 @@
 #   PORT kilobot: -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/kilobot/cmake/avr-gcc.cmake
 #   PORT epuck2:  -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/cortex_m4/cmake/arm-none-eabi.cmake
 #   PORT epuck:   -DCMAKE_TOOLCHAIN_FILE=<openswarm>/ports/epuck/dspic/cmake/xc16.cmake (Microchip XC16)
+#   PORT epuck_world (an e-puck app as a robot of the world simulator, on
+#   the host port): the host's compiler, no toolchain file
 # (the openswarm tool does both for you).
 
 get_filename_component(OPENSWARM_SDK_ROOT "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
 include(${OPENSWARM_SDK_ROOT}/cmake/OpenSwarmKernel.cmake)
 set(OpenSwarm_FOUND TRUE)
 
-# openswarm_add_firmware(<name> PORT <kilobot|epuck2|epuck|host> SOURCES <files...> [CONFIG <header>])
+# openswarm_add_firmware(<name> PORT <kilobot|epuck2|epuck|epuck_world|host> SOURCES <files...>
+#                        [CONFIG <header>])
 # Builds the kernel for the port and configuration, and the application
-# against it: <name>.elf for a robot, <name> for the host.
+# against it: <name>.elf for a robot, <name> for the host and epuck_world
+# (a process the world simulator runs, ports/epuck/host).
 function(openswarm_add_firmware name)
   cmake_parse_arguments(F "" "PORT;CONFIG" "SOURCES" ${ARGN})
   if(NOT F_PORT)
-    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT is required (kilobot, epuck2, epuck or host)")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT is required (kilobot, epuck2, epuck, epuck_world or host)")
   endif()
   if(NOT F_SOURCES)
     message(FATAL_ERROR "openswarm_add_firmware(${name}): SOURCES is required")
@@ -55,9 +59,21 @@ function(openswarm_add_firmware name)
     get_filename_component(config "${F_CONFIG}" ABSOLUTE)
     set(config_args CONFIG ${config})
   endif()
-  openswarm_add_kernel(${name}_openswarm PORT ${F_PORT} ${config_args})
+  if(F_PORT STREQUAL "epuck_world")
+    openswarm_add_kernel(${name}_openswarm PORT host BOARD epuck_world ${config_args})
+  else()
+    openswarm_add_kernel(${name}_openswarm PORT ${F_PORT} ${config_args})
+  endif()
   add_executable(${name} ${F_SOURCES} ${generated_sources})
   target_link_libraries(${name} PRIVATE ${name}_openswarm)
+  if(F_PORT STREQUAL "epuck_world")
+    # The process's main is the world link's (ports/epuck/host); the app's
+    # own, renamed, is what it runs on the simulated CPU.
+    set_property(SOURCE ${F_SOURCES} TARGET_DIRECTORY ${name} APPEND PROPERTY
+      COMPILE_DEFINITIONS main=openswarm_robot_main)
+    set_property(SOURCE ${F_SOURCES} TARGET_DIRECTORY ${name} APPEND PROPERTY
+      COMPILE_OPTIONS -include openswarm/epuck_world_app.h)
+  endif()
   if(generated_sources)
     target_include_directories(${name} PRIVATE ${OPENSWARM_GENERATED_DIR})
   endif()

@@ -46,7 +46,6 @@ static host_clock clock_mode = HOST_CLOCK_REALTIME;
 static pthread_t timer;
 static atomic_bool timer_running;
 static pthread_mutex_t driver_lock = PTHREAD_MUTEX_INITIALIZER;
-static void (*cpu_setup)(void);
 
 static bool anything_pending(void) {
     return atomic_load(&pending_ticks) != 0 || atomic_load(&pending_isr) ||
@@ -272,8 +271,17 @@ bool host_cpu_wait_idle(uint32_t timeout_ms) {
     }
 }
 
+/* The CPU runs either the fixed start-up around a setup function or an
+ * app's own main, which starts the kernel itself. */
+static void (*cpu_setup)(void);
+static int (*cpu_app_main)(void);
+
 static void *cpu_main(void *unused) {
     (void)unused;
+    if (cpu_app_main != NULL) {
+        cpu_app_main();
+        return NULL;
+    }
     Sys_Init_Kernel();
     cpu_setup();
     Sys_Start_Kernel();
@@ -281,9 +289,8 @@ static void *cpu_main(void *unused) {
     return NULL;
 }
 
-void host_cpu_start(host_clock clock, void (*setup)(void)) {
+static void power_on(host_clock clock) {
     clock_mode = clock;
-    cpu_setup = setup;
     atomic_store(&cpu_alive, false);
     atomic_store(&acked, 0);
     atomic_store(&raised, 0);
@@ -301,6 +308,17 @@ void host_cpu_start(host_clock clock, void (*setup)(void)) {
     /* Return once the system thread runs threads, so that the caller's
      * first tick finds them running rather than the kernel starting up. */
     while (!atomic_load(&cpu_alive) || !atomic_load(&scheduling)) sched_yield();
+}
+
+void host_cpu_start(host_clock clock, void (*setup)(void)) {
+    cpu_setup = setup;
+    cpu_app_main = NULL;
+    power_on(clock);
+}
+
+void host_cpu_start_main(host_clock clock, int (*app_main)(void)) {
+    cpu_app_main = app_main;
+    power_on(clock);
 }
 
 void host_cpu_stop(void) {

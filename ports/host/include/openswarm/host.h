@@ -23,6 +23,11 @@ void host_set_clock(host_clock clock);
  * Sys_Start_Kernel() and Sys_Run_SystemThread(). */
 void host_cpu_start(host_clock clock, void (*setup)(void));
 
+/* Power on a CPU thread that runs an app's main, which initialises and
+ * starts the kernel itself (Sys_Init_Kernel ... Sys_Run_SystemThread);
+ * returns once the kernel runs its threads, like host_cpu_start. */
+void host_cpu_start_main(host_clock clock, int (*app_main)(void));
+
 /* Stop the kernel (Sys_Stop_Kernel from an interrupt) and join the CPU. */
 void host_cpu_stop(void);
 
