@@ -37,6 +37,7 @@ int main(int argc, char **argv) {
     add_ports_command(app, paths);
     add_templates_command(app, paths);
     add_test_command(app, paths);
+    add_experiment_command(app, paths);
     add_size_command(app, paths);
     add_config_command(app, paths);
     add_doctor_command(app, paths);

@@ -66,6 +66,14 @@ const std::vector<PortInfo> &ports() {
          "install Microchip XC16 from https://www.microchip.com/xc16 (it is not in Debian) and put "
          "its bin folder on PATH",
          "ports/epuck/dspic/cmake/xc16.cmake", "xc16-size", Runner::none},
+        // The e-puck app on the host port, one process per robot of a world
+        // (ports/epuck/host): event ids and pools as on the e-puck2.
+        {"epuck_world",
+         "e-puck in the world simulator: the app as a host program, one per robot (openswarm run "
+         "--world, openswarm experiment)",
+         0, 0, 2 + 16, 6 + 42, 16, 48, 1024, 64, {}, "cc",
+         "sudo apt-get install gcc (or run OpenSwarm's ./setup.sh)", "", "size", Runner::world, "", 0,
+         ""},
     };
     return all;
 }

@@ -26,7 +26,7 @@ using Libraries = std::vector<const PortLibrary *>;
 
 // What runs a port's images: openswarm-sim (simavr, cycle-exact), QEMU, or
 // nothing here (none: build only; run and test refuse the port).
-enum class Runner { simavr, qemu, none };
+enum class Runner { simavr, qemu, world, none };
 
 struct PortInfo {
     std::string name;
@@ -49,6 +49,9 @@ struct PortInfo {
     // Below this much RAM left for the main stack (main, interrupts, event
     // handlers), the build warns; 0: the port reserves it at link time.
     unsigned main_stack_minimum = 0;
+    // The image's file name after the app's: a robot's ELF, or a host
+    // program (no suffix, no toolchain file, no flash or RAM to fill).
+    std::string image_suffix = ".elf";
 };
 
 // A processor a device can use, as openswarm.json names it, and what the

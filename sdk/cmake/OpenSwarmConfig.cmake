@@ -89,3 +89,26 @@ function(openswarm_add_firmware name)
     add_custom_command(TARGET ${name} POST_BUILD COMMAND ${CMAKE_SIZE} $<TARGET_FILE:${name}>)
   endif()
 endfunction()
+
+# openswarm_add_plain_controller(<name> SOURCES <files...>)
+# A controller without the OS for the world simulator's e-pucks (the
+# hardware-near baseline, openswarm/epuck_plain.h): its own main() loops
+# on epuck_plain_wait_frame() and epuck_plain_set_wheels(); it may use the
+# e-puck layer's plain functions (epuck_classify_frame), nothing of the
+# kernel. Builds the host program <name>.
+function(openswarm_add_plain_controller name)
+  cmake_parse_arguments(F "" "" "SOURCES" ${ARGN})
+  if(NOT F_SOURCES)
+    message(FATAL_ERROR "openswarm_add_plain_controller(${name}): SOURCES is required")
+  endif()
+  add_executable(${name} ${F_SOURCES}
+    ${OPENSWARM_SDK_ROOT}/ports/epuck/src/camera_classifier.c
+    ${OPENSWARM_SDK_ROOT}/ports/epuck/host/src/plain_world.c
+    ${OPENSWARM_SDK_ROOT}/ports/epuck/host/src/link_io.c)
+  # The e-puck layer's header names kernel types: the host port's headers
+  # give them (nothing of the kernel is linked).
+  target_include_directories(${name} PRIVATE ${OPENSWARM_SDK_ROOT}/kernel/include
+    ${OPENSWARM_SDK_ROOT}/ports/host/include ${OPENSWARM_SDK_ROOT}/ports/epuck/include
+    ${OPENSWARM_SDK_ROOT}/ports/epuck/host/include ${OPENSWARM_SDK_ROOT}/ports/epuck/host/src)
+  target_compile_definitions(${name} PRIVATE PORT_EVENT_COUNT=16)
+endfunction()

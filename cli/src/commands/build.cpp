@@ -108,6 +108,11 @@ double one_decimal(double x) { return std::round(x * 10.0) / 10.0; }
 
 void print_summary(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
     const PortInfo &info = port_info(r.port);
+    if (info.flash_bytes == 0) { // a host program: no memory of a robot's to fill
+        std::printf("Built %s for %s: run it in a world, `openswarm run --world FILE` (docs/world.md)\n",
+                    r.image.string().c_str(), r.port.c_str());
+        return;
+    }
     std::printf("Flash %s\nRAM   %s\n", bar(r.flash, info.flash_bytes).c_str(),
                 bar(r.ram, info.ram_bytes).c_str());
     if (shares.empty()) {
@@ -160,7 +165,8 @@ std::vector<std::string> configure_command(const Paths &paths, const fs::path &d
                                           "-DOPENSWARM_GENERATED_DIR=" +
                                               fs::absolute(generated_dir(dir, port)).string()};
     if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
-    configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + (paths.root / port_info(port).toolchain).string());
+    const std::string &toolchain = port_info(port).toolchain;
+    if (!toolchain.empty()) configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + (paths.root / toolchain).string());
     return configure;
 }
 
@@ -232,7 +238,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     BuildResult result;
     result.port = port;
-    result.image = build_dir / (config.name + ".elf");
+    result.image = build_dir / (config.name + port_info(port).image_suffix);
     const PortInfo &info = port_info(port);
     if (!image_size(info, result.image, result.flash, result.ram)) {
         report("cannot read the size of " + result.image.string() + " with " + info.size_tool);
@@ -271,8 +277,10 @@ void add_build_command(CLI::App &app, const Paths &paths) {
         if (!r) return;
         std::string why = "not measured for a debug image (it has no link-time optimisation "
                           "to see through)";
-        auto shares = o->debug ? std::vector<Share>{}
-                               : measure_shares(paths, o->dir, *r, progress, why);
+        const bool host = port_info(r->port).flash_bytes == 0;
+        if (host) why = "a host program has no robot's memory to share";
+        auto shares = o->debug || host ? std::vector<Share>{}
+                                       : measure_shares(paths, o->dir, *r, progress, why);
         if (o->json)
             print_json(*r, shares, why);
         else

@@ -18,7 +18,7 @@ namespace {
 struct NewOptions {
     std::string name;
     std::string template_name = "blinky";
-    std::string port = "kilobot";
+    std::string port; // empty: the template's first (kilobot for most)
     std::string parent = ".";
     bool force = false;
 };
@@ -56,7 +56,7 @@ const TemplateInfo *find_template(const std::vector<TemplateInfo> &all, const st
     return nullptr;
 }
 
-int run_new(const NewOptions &o, const Paths &paths) {
+int run_new(NewOptions o, const Paths &paths) {
     if (!std::regex_match(o.name, std::regex(app_name_pattern))) {
         report("'" + o.name + "' is not a usable app name: use letters, digits, - and _ "
                "(starting with a letter), e.g. `openswarm new my-robot`");
@@ -72,6 +72,7 @@ int run_new(const NewOptions &o, const Paths &paths) {
                "; `openswarm templates` describes them");
         return EXIT_USAGE;
     }
+    if (o.port.empty() && !t->ports.empty()) o.port = t->ports.front();
     if (!is_port(o.port)) {
         report("unknown port '" + o.port + "'; ports: " + join(port_names()) +
                did_you_mean(o.port, port_names(), '\''));
@@ -104,7 +105,10 @@ int run_new(const NewOptions &o, const Paths &paths) {
         return EXIT_FAILED;
     }
     // A port nothing here runs is built, then flashed to the robot.
-    const char *next = port_info(o.port).runner == Runner::none ? "" : " && openswarm run";
+    Runner runner = port_info(o.port).runner;
+    const char *next = runner == Runner::none    ? ""
+                       : runner == Runner::world ? " && openswarm run --world WORLD.json"
+                                                 : " && openswarm run";
     std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build%s\n",
                 dir.string().c_str(), t->name.c_str(), o.port.c_str(), dir.string().c_str(), next);
     return EXIT_OK;
@@ -118,7 +122,9 @@ void add_new_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("name", o->name, "the app's name (and folder)")->required();
     cmd->add_option("-t,--template", o->template_name, "template to start from (openswarm templates)")
         ->capture_default_str();
-    cmd->add_option("-p,--port", o->port, "robot to build for (openswarm ports)")->capture_default_str();
+    cmd->add_option("-p,--port", o->port,
+                    "robot to build for (openswarm ports; default: the template's first, kilobot for "
+                    "most)");
     cmd->add_option("-C,--directory", o->parent, "where to create the folder")->capture_default_str();
     cmd->add_flag("-f,--force", o->force, "replace an existing folder of that name");
     cmd->callback([o, &paths] { exit_code = run_new(*o, paths); });

@@ -99,6 +99,26 @@ bool run_options_usable(const RunOptions &o) {
     return true;
 }
 
+// A port whose robots live in a world (epuck_world): a world file places
+// them; the Kilobot simulator's own options do not apply. False after
+// reporting.
+bool world_options_usable(const RunOptions &o, const std::string &port) {
+    if (o.world.empty()) {
+        report("the " + port + " port's robots run in a world: give --world FILE, a world.json with "
+               "\"robot\": \"epuck\" (docs/world.md; the object-clustering template's experiment "
+               "makes them)");
+        return false;
+    }
+    std::vector<std::string> refused;
+    for (const auto &name : o.simavr_only)
+        if (name != "--world" && name != "--out" && name != "--video" && name != "--trace")
+            refused.push_back(name);
+    if (refused.empty()) return true;
+    report(join(refused) + ": not for the " + port + " port, whose robots the world file places; "
+           "those are for Kilobot apps (--port kilobot)");
+    return false;
+}
+
 // A port QEMU runs: one robot, no world (yet), the console and the trace.
 int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &port) {
     if (!o.simavr_only.empty()) {
@@ -176,6 +196,8 @@ int run_app(RunOptions o, const Paths &paths) {
     std::string port = port_to_build(o);
     if (is_port(port) && refuse_unrunnable(port, "run")) return EXIT_FAILED;
     if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
+    if (is_port(port) && port_info(port).runner == Runner::world && !world_options_usable(o, port))
+        return EXIT_USAGE;
     if (!o.world.empty()) {
         if (!world_file_usable(o)) return EXIT_USAGE;
         if (o.out.empty())

@@ -173,6 +173,12 @@ bool runs_nowhere(const std::string &dir) {
     } catch (const std::exception &) {
         return false;
     }
+    if (is_port(port) && port_info(port).runner == Runner::world) {
+        report("`openswarm test` checks one robot's trace, and the " + port +
+               " port's robots run only in a world: `openswarm run --world FILE`, or an "
+               "experiment (`openswarm experiment FILE`)");
+        return true;
+    }
     return is_port(port) && refuse_unrunnable(port, "test");
 }
 

@@ -30,13 +30,8 @@ epuck_colour epuck_colour_of(uint16_t rgb565) {
     return EPUCK_COLOUR_OTHER;
 }
 
-uint8_t epuck_camera_classifier(sys_device *dev, const void *in, uint8_t size, void *out,
-                                uint8_t capacity) {
-    (void)dev;
-    const epuck_camera_frame *f = in;
-    if (size != sizeof *f || capacity < 1 || f->pixels == NULL || f->width < GRID ||
-        f->height < f->width / 4u)
-        return 0;
+bool epuck_classify_frame(const epuck_camera_frame *f, epuck_seen *seen) {
+    if (f->pixels == NULL || f->width < GRID || f->height < f->width / 4u) return false;
     uint16_t window = (uint16_t)(f->width / 4u);
     uint16_t x0 = (uint16_t)((f->width - window) / 2u), y0 = (uint16_t)((f->height - window) / 2u);
     unsigned red_or_dark = 0, green = 0;
@@ -51,8 +46,15 @@ uint8_t epuck_camera_classifier(sys_device *dev, const void *in, uint8_t size, v
             if (c == EPUCK_COLOUR_GREEN) green++;
         }
     }
-    uint8_t seen = red_or_dark >= 2u ? EPUCK_SEEN_OBJECT : green >= 2u ? EPUCK_SEEN_ROBOT
-                                                                          : EPUCK_SEEN_NOTHING;
-    *(uint8_t *)out = seen;
+    *seen = red_or_dark >= 2u ? EPUCK_SEEN_OBJECT : green >= 2u ? EPUCK_SEEN_ROBOT : EPUCK_SEEN_NOTHING;
+    return true;
+}
+
+uint8_t epuck_camera_classifier(sys_device *dev, const void *in, uint8_t size, void *out,
+                                uint8_t capacity) {
+    (void)dev;
+    epuck_seen seen;
+    if (size != sizeof(epuck_camera_frame) || capacity < 1 || !epuck_classify_frame(in, &seen)) return 0;
+    *(uint8_t *)out = (uint8_t)seen;
     return 1;
 }

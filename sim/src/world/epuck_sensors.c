@@ -18,8 +18,10 @@ static const double SENSOR_DEG[EPUCK_SENSOR_COUNT] = {-18, -45, -90, -142, 142, 
 #define NOISE_COUNTS 8.0
 #define RANGE_MM 120.0
 #define ADC_MAX 4095.0
-/* The camera's horizontal field of view, degrees (docs/world.md). */
+/* The camera's horizontal field of view, degrees, and how far it tells a
+ * robot or an object from the white walls behind (docs/world.md). */
 #define CAMERA_FOV_DEG 45.0
+#define CAMERA_RANGE_MM 1500.0
 #define GREEN565 0x07E0u
 #define RED565 0xF800u
 #define WHITE565 0xFFFFu
@@ -50,8 +52,11 @@ void epuck_proximity_read(const world *w, int robot, uint16_t off[EPUCK_SENSOR_C
     }
 }
 
-static uint16_t colour_of(int kind) {
-    switch (kind) {
+static uint16_t colour_of(world_hit hit) {
+    /* Farther, a robot or an object is too small in the frame to tell:
+     * the walls behind it show. */
+    if (hit.kind != WORLD_HIT_WALL && hit.distance_mm > CAMERA_RANGE_MM) return WHITE565;
+    switch (hit.kind) {
     case WORLD_HIT_ROBOT: return GREEN565;
     case WORLD_HIT_OBJECT: return RED565;
     case WORLD_HIT_WALL: return WHITE565;
@@ -68,7 +73,7 @@ void epuck_camera_render(const world *w, int robot,
     for (int col = 0; col < EPUCK_FRAME_WIDTH; col++) {
         /* Column 0 is the image's left: counter-clockwise of the heading. */
         double offset = CAMERA_FOV_DEG * (0.5 - (col + 0.5) / EPUCK_FRAME_WIDTH);
-        uint16_t c = colour_of(world_ray(w, robot, x, y, heading + offset, reach).kind);
+        uint16_t c = colour_of(world_ray(w, robot, x, y, heading + offset, reach));
         for (int row = 0; row < EPUCK_FRAME_HEIGHT; row++) pixels[row * EPUCK_FRAME_WIDTH + col] = c;
     }
 }

@@ -17,6 +17,8 @@
 #ifndef OPENSWARM_EPUCK_H
 #define OPENSWARM_EPUCK_H
 
+#include <stdbool.h>
+
 #include "openswarm/event.h"
 #include "openswarm/hal.h"
 #include "openswarm/types.h"
@@ -101,6 +103,10 @@ typedef enum epuck_seen { EPUCK_SEEN_NOTHING = 0, EPUCK_SEEN_ROBOT, EPUCK_SEEN_O
  * else 2 or more green: a robot; else nothing. */
 uint8_t epuck_camera_classifier(sys_device *dev, const void *in, uint8_t size, void *out,
                                 uint8_t capacity);
+/* The same judgement on its own, for code without the kernel (a plain
+ * loop): false if the frame is too small to judge (under 20 pixels wide, or
+ * shorter than a quarter of its width). */
+bool epuck_classify_frame(const epuck_camera_frame *frame, epuck_seen *seen);
 /* The colour class of one RGB565 pixel, as the classifier sees it. */
 typedef enum epuck_colour {
     EPUCK_COLOUR_OTHER = 0,

@@ -1,0 +1,283 @@
+// openswarm experiment FILE: trials of controllers in generated worlds, in
+// parallel, with the clustering metrics over time, a plot and a summary
+// (docs/case-study.md).
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "../app_config.hpp"
+#include "../cluster_metrics.hpp"
+#include "../experiment_plot.hpp"
+#include "../experiment_spec.hpp"
+#include "../process.hpp"
+#include "../suggest.hpp"
+#include "commands.hpp"
+
+namespace fs = std::filesystem;
+
+namespace openswarm {
+
+namespace {
+
+struct ExperimentOptions {
+    std::string file;
+    std::string out; // default: <file's folder>/<file's stem>-results
+    unsigned jobs = 0;
+    int trials = 0;         // 0: the file's
+    double duration_s = 0;  // 0: the file's
+};
+
+struct Sample {
+    double time_s, cluster, compactness;
+};
+
+struct Job {
+    int trial;
+    size_t controller;
+    uint32_t seed;
+    fs::path dir;
+    std::vector<Sample> samples;
+    std::string failure; // empty when it ran
+};
+
+std::string slug(const std::string &name) {
+    std::string s;
+    for (char c : name) s += std::isalnum((unsigned char)c) ? (char)std::tolower((unsigned char)c) : '-';
+    return s;
+}
+
+// objects.csv (time_s,object,x_mm,y_mm) to the metrics at each time.
+std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
+    std::ifstream in(objects_csv);
+    std::string line;
+    std::getline(in, line); // header
+    std::map<double, std::vector<ObjectPosition>> at;
+    while (std::getline(in, line)) {
+        double t, x, y;
+        int k;
+        if (std::sscanf(line.c_str(), "%lf,%d,%lf,%lf", &t, &k, &x, &y) == 4) at[t].push_back({x, y});
+    }
+    std::vector<Sample> samples;
+    for (const auto &[t, objects] : at)
+        samples.push_back({t, largest_cluster_fraction(objects, radius_mm), compactness(objects, radius_mm)});
+    return samples;
+}
+
+void run_job(const Experiment &e, const Paths &paths, Job &job) {
+    const ExperimentController &c = e.controllers[job.controller];
+    fs::create_directories(job.dir);
+    std::ofstream(job.dir / "world.json") << trial_world(e, job.seed, c.program);
+    std::string output;
+    int status = capture_program_and_errors({paths.simulator.string(), "--quiet", "--no-progress",
+                                             "--world", (job.dir / "world.json").string(), "--out",
+                                             job.dir.string()},
+                                            output);
+    if (status != 0) {
+        job.failure = simulator_failure(status) + ":\n" + output;
+        return;
+    }
+    job.samples = metrics_of(job.dir / "objects.csv", e.object_radius_mm);
+    if (job.samples.empty()) job.failure = "no objects.csv samples in " + job.dir.string();
+}
+
+std::string duration_text(double seconds) {
+    char text[32];
+    if (seconds < 60) std::snprintf(text, sizeof text, "%.0f s", seconds);
+    else std::snprintf(text, sizeof text, "%dm %02ds", (int)seconds / 60, (int)seconds % 60);
+    return text;
+}
+
+// Jobs shared out among workers; progress after each, with the time left.
+void run_all(const Experiment &e, const Paths &paths, std::vector<Job> &jobs, unsigned workers) {
+    std::atomic<size_t> next{0};
+    std::mutex print;
+    size_t done = 0;
+    auto began = std::chrono::steady_clock::now();
+    auto work = [&] {
+        for (size_t k; (k = next++) < jobs.size();) {
+            run_job(e, paths, jobs[k]);
+            std::lock_guard<std::mutex> lock(print);
+            done++;
+            double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+            const Job &j = jobs[k];
+            std::printf("[%zu/%zu] %s, trial %d: %s; about %s left\n", done, jobs.size(),
+                        e.controllers[j.controller].name.c_str(), j.trial + 1,
+                        j.failure.empty()
+                            ? ("largest cluster " + std::to_string((int)std::lround(j.samples.back().cluster * 100)) +
+                               "% at " + duration_text(j.samples.back().time_s)).c_str()
+                            : "FAILED",
+                        duration_text(spent / (double)done * (double)(jobs.size() - done)).c_str());
+            std::fflush(stdout);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < workers; w++) pool.emplace_back(work);
+    for (auto &t : pool) t.join();
+}
+
+bool write_results(const Experiment &e, const std::vector<Job> &jobs, const fs::path &out) {
+    std::ofstream csv(out / "results.csv");
+    csv << "trial,controller,seed,time_s,largest_cluster,compactness\n";
+    char row[256];
+    for (const Job &j : jobs)
+        for (const Sample &s : j.samples) {
+            std::snprintf(row, sizeof row, "%d,%s,%u,%.3f,%.4f,%.4f\n", j.trial + 1,
+                          e.controllers[j.controller].name.c_str(), j.seed, s.time_s, s.cluster,
+                          s.compactness);
+            csv << row;
+        }
+    return (bool)csv;
+}
+
+// Mean and standard deviation over a controller's trials, sample by sample.
+std::vector<ControllerCurves> curves_of(const Experiment &e, const std::vector<Job> &jobs) {
+    std::vector<ControllerCurves> curves;
+    for (size_t c = 0; c < e.controllers.size(); c++) {
+        ControllerCurves cc{e.controllers[c].name, {}, {}, {}, {}, {}};
+        std::vector<const Job *> mine;
+        for (const Job &j : jobs)
+            if (j.controller == c && j.failure.empty()) mine.push_back(&j);
+        size_t n = mine.empty() ? 0 : mine[0]->samples.size();
+        for (const Job *j : mine) n = std::min(n, j->samples.size());
+        for (size_t k = 0; k < n; k++) {
+            auto stats = [&](double Sample::*field, std::vector<double> &mean, std::vector<double> &sd) {
+                double sum = 0, squares = 0;
+                for (const Job *j : mine) sum += j->samples[k].*field;
+                double m = sum / (double)mine.size();
+                for (const Job *j : mine) squares += (j->samples[k].*field - m) * (j->samples[k].*field - m);
+                mean.push_back(m);
+                sd.push_back(mine.size() > 1 ? std::sqrt(squares / (double)(mine.size() - 1)) : 0.0);
+            };
+            cc.time_s.push_back(mine[0]->samples[k].time_s);
+            stats(&Sample::cluster, cc.cluster_mean, cc.cluster_sd);
+            stats(&Sample::compactness, cc.compact_mean, cc.compact_sd);
+        }
+        curves.push_back(cc);
+    }
+    return curves;
+}
+
+// The value of a curve at the sample nearest time t.
+size_t nearest(const ControllerCurves &c, double t) {
+    size_t best = 0;
+    for (size_t k = 0; k < c.time_s.size(); k++)
+        if (std::fabs(c.time_s[k] - t) < std::fabs(c.time_s[best] - t)) best = k;
+    return best;
+}
+
+void print_table(const Experiment &e, const std::vector<ControllerCurves> &curves) {
+    double mid = e.reference_fraction >= 0 ? e.reference_time_s : e.duration_s / 2;
+    std::printf("\n%-16s %22s %22s %18s\n", "controller",
+                ("largest cluster " + duration_text(mid)).c_str(),
+                ("largest cluster " + duration_text(e.duration_s)).c_str(), "compactness end");
+    for (const auto &c : curves) {
+        if (c.time_s.empty()) {
+            std::printf("%-16s %22s\n", c.name.c_str(), "no trial ran");
+            continue;
+        }
+        size_t m = nearest(c, mid), end = c.time_s.size() - 1;
+        char a[40], b[40], d[40];
+        std::snprintf(a, sizeof a, "%.1f%% +- %.1f", c.cluster_mean[m] * 100, c.cluster_sd[m] * 100);
+        std::snprintf(b, sizeof b, "%.1f%% +- %.1f", c.cluster_mean[end] * 100, c.cluster_sd[end] * 100);
+        std::snprintf(d, sizeof d, "%.1f +- %.1f", c.compact_mean[end], c.compact_sd[end]);
+        std::printf("%-16s %22s %22s %18s\n", c.name.c_str(), a, b, d);
+    }
+    if (e.reference_fraction >= 0) {
+        char r[40];
+        std::snprintf(r, sizeof r, "%.1f%%", e.reference_fraction * 100);
+        std::printf("%-16s %22s   (%s)\n", "reference", r, e.reference_label.c_str());
+    }
+}
+
+// Every controller program must exist before hours of trials start.
+bool programs_present(const Experiment &e) {
+    for (const auto &c : e.controllers) {
+        std::error_code ec;
+        if (fs::is_regular_file(c.program, ec)) continue;
+        report(e.file.string() + ": controller \"" + c.name + "\": " + c.program.string() +
+               " does not exist: build it first (openswarm build --port epuck_world in its app)");
+        return false;
+    }
+    return true;
+}
+
+int run_experiment(const ExperimentOptions &o, const Paths &paths) {
+    Experiment e;
+    try {
+        e = load_experiment(o.file);
+    } catch (const ConfigError &err) {
+        report(err.what());
+        return EXIT_USAGE;
+    }
+    if (o.trials) e.trials = o.trials;
+    if (o.duration_s > 0) e.duration_s = o.duration_s;
+    if (e.reference_time_s > e.duration_s) e.reference_fraction = -1; // off the plot
+    if (!programs_present(e)) return EXIT_USAGE;
+    if (paths.simulator.empty()) {
+        report("openswarm-sim was not found next to this tool; build it with "
+               "`cmake --build <openswarm>/build --target openswarm-sim`");
+        return EXIT_FAILED;
+    }
+    fs::path file(o.file);
+    fs::path out = o.out.empty() ? file.parent_path() / (file.stem().string() + "-results") : fs::path(o.out);
+    std::vector<Job> jobs;
+    for (int t = 0; t < e.trials; t++)
+        for (size_t c = 0; c < e.controllers.size(); c++) {
+            char name[64];
+            std::snprintf(name, sizeof name, "trial-%02d-", t + 1);
+            jobs.push_back({t, c, e.seed + (uint32_t)t, out / (name + slug(e.controllers[c].name)), {}, {}});
+        }
+    unsigned workers = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
+    std::printf("Running %zu trials (%d per controller, %zu controllers) of %s each, %u at a time, "
+                "into %s\n",
+                jobs.size(), e.trials, e.controllers.size(), duration_text(e.duration_s).c_str(),
+                workers, out.string().c_str());
+    std::fflush(stdout);
+    auto began = std::chrono::steady_clock::now();
+    fs::create_directories(out);
+    run_all(e, paths, jobs, workers);
+    auto curves = curves_of(e, jobs);
+    std::string why;
+    bool written = write_results(e, jobs, out) && write_experiment_plot(e, curves, out, why);
+    print_table(e, curves);
+    size_t failed = 0;
+    for (const Job &j : jobs)
+        if (!j.failure.empty()) {
+            failed++;
+            report(e.controllers[j.controller].name + ", trial " + std::to_string(j.trial + 1) +
+                   " (" + j.dir.string() + ") failed: " + j.failure);
+        }
+    double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    if (!written) report("cannot write the results into " + out.string() + ": " + why);
+    std::printf("\n%zu of %zu trials ran in %s: %s, %s and .svg, each trial's final.png and "
+                "viewer.html\n",
+                jobs.size() - failed, jobs.size(), duration_text(spent).c_str(),
+                (out / "results.csv").string().c_str(), (out / "results.png").string().c_str());
+    return failed || !written ? EXIT_FAILED : EXIT_OK;
+}
+
+}  // namespace
+
+void add_experiment_command(CLI::App &app, const Paths &paths) {
+    auto o = std::make_shared<ExperimentOptions>();
+    CLI::App *cmd = app.add_subcommand(
+        "experiment", "Run trials of controllers in worlds an experiment file describes, and compare them");
+    cmd->add_option("file", o->file, "the experiment (docs/case-study.md), e.g. experiments/paper.json")
+        ->required();
+    cmd->add_option("-o,--out", o->out, "where the results go (default: next to FILE, <FILE's name>-results)");
+    cmd->add_option("-j,--jobs", o->jobs, "trials run at once (default: one per core)")
+        ->check(CLI::Range(1u, 1024u));
+    cmd->add_option("--trials", o->trials, "trials per controller instead of the file's (a quick look)")
+        ->check(CLI::Range(1, 10000));
+    cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
+        ->check(CLI::Range(1.0, 86400.0));
+    cmd->callback([o, &paths] { exit_code = run_experiment(*o, paths); });
+}
+
+}  // namespace openswarm
