@@ -14,6 +14,7 @@ packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi # e-puck2 (STM32F407) firmware
   qemu-system-arm gdb-multiarch             # running it under QEMU, debugging it
   gdb-avr                                   # debugging Kilobot firmware at source level
+  openmpi-bin libopenmpi-dev                # experiments spread over ranks and machines (mpirun)
 )
 
 missing=()

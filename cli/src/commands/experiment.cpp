@@ -14,6 +14,7 @@
 #include "../app_config.hpp"
 #include "../cluster_metrics.hpp"
 #include "../experiment_plot.hpp"
+#include "../experiment_ranks.hpp"
 #include "../experiment_spec.hpp"
 #include "../process.hpp"
 #include "../suggest.hpp"
@@ -93,32 +94,62 @@ std::string duration_text(double seconds) {
     return text;
 }
 
-// Jobs shared out among workers; progress after each, with the time left.
-void run_all(const Experiment &e, const Paths &paths, std::vector<Job> &jobs, unsigned workers) {
+// Which rank runs a job: trial and controller both rotate the ranks, so
+// each gets its share of every controller (some are much slower).
+size_t slot_of(const Job &j) { return (size_t)j.trial + j.controller; }
+
+// This rank's jobs shared out among workers; progress after each, with the
+// time left.
+void run_all(const Experiment &e, const Paths &paths, std::vector<Job> &jobs, const Ranks &ranks,
+             unsigned workers) {
+    std::vector<size_t> mine;
+    for (size_t k = 0; k < jobs.size(); k++)
+        if (ranks.mine(slot_of(jobs[k]))) mine.push_back(k);
     std::atomic<size_t> next{0};
     std::mutex print;
     size_t done = 0;
+    const std::string who = ranks.size() > 1 ? "rank " + std::to_string(ranks.rank()) + " " : "";
     auto began = std::chrono::steady_clock::now();
     auto work = [&] {
-        for (size_t k; (k = next++) < jobs.size();) {
+        for (size_t i; (i = next++) < mine.size();) {
+            size_t k = mine[i];
             run_job(e, paths, jobs[k]);
             std::lock_guard<std::mutex> lock(print);
             done++;
             double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
             const Job &j = jobs[k];
-            std::printf("[%zu/%zu] %s, trial %d: %s; about %s left\n", done, jobs.size(),
+            std::printf("[%s%zu/%zu] %s, trial %d: %s; about %s left\n", who.c_str(), done, mine.size(),
                         e.controllers[j.controller].name.c_str(), j.trial + 1,
                         j.failure.empty()
                             ? ("largest cluster " + std::to_string((int)std::lround(j.samples.back().cluster * 100)) +
                                "% at " + duration_text(j.samples.back().time_s)).c_str()
                             : "FAILED",
-                        duration_text(spent / (double)done * (double)(jobs.size() - done)).c_str());
+                        duration_text(spent / (double)done * (double)(mine.size() - done)).c_str());
             std::fflush(stdout);
         }
     };
     std::vector<std::thread> pool;
     for (unsigned w = 0; w < workers; w++) pool.emplace_back(work);
     for (auto &t : pool) t.join();
+}
+
+// Every job's samples and failure on rank 0, wherever it ran.
+void gather(const Ranks &ranks, std::vector<Job> &jobs) {
+    std::vector<TrialOutcome> outcomes(jobs.size());
+    for (size_t k = 0; k < jobs.size(); k++) {
+        for (const Sample &s : jobs[k].samples)
+            outcomes[k].samples.insert(outcomes[k].samples.end(), {s.time_s, s.cluster, s.compactness});
+        outcomes[k].failure = jobs[k].failure;
+        outcomes[k].here = ranks.mine(slot_of(jobs[k]));
+    }
+    ranks.gather(outcomes);
+    for (size_t k = 0; k < jobs.size(); k++) {
+        if (outcomes[k].here) continue;
+        jobs[k].samples.clear();
+        const auto &v = outcomes[k].samples;
+        for (size_t i = 0; i + 3 <= v.size(); i += 3) jobs[k].samples.push_back({v[i], v[i + 1], v[i + 2]});
+        jobs[k].failure = outcomes[k].failure;
+    }
 }
 
 bool write_results(const Experiment &e, const std::vector<Job> &jobs, const fs::path &out) {
@@ -207,7 +238,7 @@ bool programs_present(const Experiment &e) {
     return true;
 }
 
-int run_experiment(const ExperimentOptions &o, const Paths &paths) {
+int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &ranks) {
     Experiment e;
     try {
         e = load_experiment(o.file);
@@ -233,15 +264,22 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths) {
             std::snprintf(name, sizeof name, "trial-%02d-", t + 1);
             jobs.push_back({t, c, e.seed + (uint32_t)t, out / (name + slug(e.controllers[c].name)), {}, {}});
         }
-    unsigned workers = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-    std::printf("Running %zu trials (%d per controller, %zu controllers) of %s each, %u at a time, "
-                "into %s\n",
-                jobs.size(), e.trials, e.controllers.size(), duration_text(e.duration_s).c_str(),
-                workers, out.string().c_str());
+    // Ranks on one machine share its cores.
+    unsigned cores = std::max(1u, std::thread::hardware_concurrency() / (unsigned)ranks.local_size());
+    unsigned workers = o.jobs ? o.jobs : cores;
+    if (ranks.rank() == 0)
+        std::printf("Running %zu trials (%d per controller, %zu controllers) of %s each, %u at a time%s, "
+                    "into %s\n",
+                    jobs.size(), e.trials, e.controllers.size(), duration_text(e.duration_s).c_str(),
+                    workers,
+                    ranks.size() > 1 ? (" on each of " + std::to_string(ranks.size()) + " ranks").c_str() : "",
+                    out.string().c_str());
     std::fflush(stdout);
     auto began = std::chrono::steady_clock::now();
     fs::create_directories(out);
-    run_all(e, paths, jobs, workers);
+    run_all(e, paths, jobs, ranks, workers);
+    gather(ranks, jobs);
+    if (ranks.rank() != 0) return EXIT_OK;
     auto curves = curves_of(e, jobs);
     std::string why;
     bool written = write_results(e, jobs, out) && write_experiment_plot(e, curves, out, why);
@@ -277,7 +315,10 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
         ->check(CLI::Range(1.0, 86400.0));
-    cmd->callback([o, &paths] { exit_code = run_experiment(*o, paths); });
+    cmd->callback([o, &paths] {
+        Ranks ranks;
+        exit_code = ranks.agree(run_experiment(*o, paths, ranks));
+    });
 }
 
 }  // namespace openswarm
