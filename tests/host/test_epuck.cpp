@@ -177,6 +177,28 @@ TEST(EpuckCamera, ClassifiesWhatIsInFrontOfTheRobot) {
         << "a smaller frame: the same share of it";
 }
 
+TEST(EpuckCamera, ThePlainJudgementIsTheProcessors) {
+    // The world's frames (40 x 30, a colour per column) and others: the
+    // function a plain loop calls says what the processor says.
+    std::vector<Frame> frames = {Frame(40, 30, WHITE), Frame(40, 30, WHITE).paint(0.4, 0, 0.6, 1, RED),
+                                 Frame(40, 30, WHITE).paint(0.3, 0, 0.7, 1, GREEN),
+                                 Frame(40, 30, GREEN).paint(0.48, 0, 0.6, 1, RED),
+                                 Frame(640, 480, WHITE).paint(0.45, 0.4, 0.55, 0.6, RED)};
+    const uint8_t expected[] = {EPUCK_SEEN_NOTHING, EPUCK_SEEN_OBJECT, EPUCK_SEEN_ROBOT, EPUCK_SEEN_OBJECT,
+                                EPUCK_SEEN_OBJECT};
+    for (size_t k = 0; k < frames.size(); k++) {
+        epuck_camera_frame f = {frames[k].pixels.data(), frames[k].width, frames[k].height};
+        epuck_seen seen = EPUCK_SEEN_NOTHING;
+        ASSERT_TRUE(epuck_classify_frame(&f, &seen)) << "frame " << k;
+        EXPECT_EQ(expected[k], seen) << "frame " << k;
+        EXPECT_EQ(expected[k], frames[k].seen()) << "frame " << k;
+    }
+    std::vector<uint16_t> tiny(10 * 10, WHITE);
+    epuck_camera_frame small = {tiny.data(), 10, 10};
+    epuck_seen seen;
+    EXPECT_FALSE(epuck_classify_frame(&small, &seen));
+}
+
 TEST(EpuckCamera, RefusesWhatIsNotAFrame) {
     sys_device dev{};
     uint8_t out = 0;
