@@ -22,6 +22,8 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/switch.S
     ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/fault_report.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/system_control.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/overhead_control.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/devices.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/led.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motors.c

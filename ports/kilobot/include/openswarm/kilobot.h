@@ -154,6 +154,32 @@ uint8_t kilobot_linear_table(sys_device *dev, const void *in, uint8_t size, void
 /* Register the LED and the motors (and their events). */
 sys_status kilobot_devices_init(void);
 
+/* ---- the overhead controller, for apps on the OpenSwarm API ----
+ * Its system messages (IR frames whose type, byte 9, is 0x80 or more) are
+ * the robot's, not the app's: BOOT enters the IR bootloader, RESET starts
+ * the program afresh, SLEEP, WAKEUP (KiloGUI's "pause"), CHARGE and
+ * VOLTAGE hold it (motors off; the LED dark while asleep, dim blue
+ * otherwise) until RUN starts it afresh. The calibration messages (CALIB,
+ * READUID) and the bootloader's own are dropped: calibrate with a kilolib
+ * program. robot_devices_init() starts it (robot.h); kilolib apps have
+ * their own (kilolib's overhead_controller.c). */
+#define KILOBOT_MESSAGE_SYSTEM 0x80u /* the first system message type */
+/* After the devices: acts on a restart that asked for a hold (and then
+ * never returns: the kernel runs the held robot), else takes the system
+ * messages from now on. */
+void kilobot_overhead_control_start(void);
+/* For the IR device's Rx processors: a system message the overhead
+ * control acted on (true: no app event for it). */
+bool kilobot_overhead_control_take(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]);
+
+/* The ways out of a program: the IR bootloader (at 0x7000), and a restart
+ * from scratch (peripherals as at power-up, then address 0) that leaves the
+ * next run a mark, read (and cleared) by kilobot_restart_mark: 0 after
+ * power-up. */
+void kilobot_enter_bootloader(void) __attribute__((noreturn));
+void kilobot_restart(uint16_t mark) __attribute__((noreturn));
+uint16_t kilobot_restart_mark(void);
+
 /* Called every 1 ms from the tick interrupt (NULL: nothing). For clocks an
  * application keeps in interrupt context, such as kilolib's kilo_ticks. Set
  * it before Sys_Start_Kernel or with interrupts masked: the tick must not

@@ -3,6 +3,10 @@
  * kernel). Each port has its own robot.h; this is the Kilobot's.
  *
  *   robot_devices_init()   register the robot's devices (after Sys_Init_Kernel)
+ *                          and answer the overhead controller (kilobot.h:
+ *                          BOOT, RESET, SLEEP, RUN, ...): define
+ *                          KILOBOT_OVERHEAD_CONTROL 0 before including this
+ *                          to get its messages as KILOBOT_EVENT_IR_RX instead
  *   ROBOT_EVENT_LED        command: one byte, ROBOT_RGB(r, g, b), 0..3 each:
  *                          the robot's status light
  */
@@ -14,6 +18,14 @@
 #define ROBOT_EVENT_LED KILOBOT_EVENT_LED
 #define ROBOT_RGB(r, g, b) KILOBOT_RGB(r, g, b)
 
-static inline sys_status robot_devices_init(void) { return kilobot_devices_init(); }
+#ifndef KILOBOT_OVERHEAD_CONTROL
+#define KILOBOT_OVERHEAD_CONTROL 1
+#endif
+
+static inline sys_status robot_devices_init(void) {
+    sys_status st = kilobot_devices_init();
+    if (KILOBOT_OVERHEAD_CONTROL && st == SYS_OK) kilobot_overhead_control_start();
+    return st;
+}
 
 #endif

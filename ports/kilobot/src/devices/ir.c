@@ -233,7 +233,8 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
 
 /* ---- the HAL comm device ---- */
 
-/* Rx: a frame whose CRC checks becomes a KILOBOT_EVENT_IR_RX. */
+/* Rx: a frame whose CRC checks becomes a KILOBOT_EVENT_IR_RX, unless it
+ * is a system message the overhead control takes. */
 uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
     (void)dev;
     const kilobot_ir_rx *r = in;
@@ -243,6 +244,7 @@ uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void
         count(&stats.bad_crc);
         return 0;
     }
+    if (kilobot_overhead_control_take(r->frame)) return 0; /* the robot's, not the app's */
     memcpy(out, r, sizeof *r);
     return sizeof *r;
 }

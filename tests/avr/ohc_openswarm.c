@@ -1,0 +1,40 @@
+/* An app on the OpenSwarm API under the overhead controller: robot_devices_init()
+ * answers its system messages (avr.ohc_*). The app says when it starts
+ * and what IR frames reach it, and blinks green every 100 ms. Built also
+ * with KILOBOT_OVERHEAD_CONTROL 0 (ohc_opt_out): the system messages then
+ * reach the app as frames. */
+#include "openswarm/kernel.h"
+#include "openswarm/kilobot_sim.h"
+#include "openswarm/robot.h"
+
+static bool heard(sys_pid pid, sys_event_id event, const sys_event_data *data) {
+    (void)pid;
+    (void)event;
+    const kilobot_ir_rx *rx = (const kilobot_ir_rx *)data->value;
+    sim_puts_P(PSTR("app heard a frame of type "));
+    sim_put_uint(rx->frame[9]);
+    sim_putc('\n');
+    return true;
+}
+
+static void blinker(void) {
+    for (;;) {
+        uint8_t colour = ROBOT_RGB(0, 3, 0);
+        Sys_Send_Event(ROBOT_EVENT_LED, &colour, 1);
+        Sys_Sleep(100);
+        colour = ROBOT_RGB(0, 0, 0);
+        Sys_Send_Event(ROBOT_EVENT_LED, &colour, 1);
+        Sys_Sleep(100);
+    }
+}
+
+int main(void) {
+    Sys_Init_Kernel();
+    robot_devices_init();
+    sim_puts_P(PSTR("app starts\n"));
+    Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, heard, NULL);
+    Sys_Start_Process(blinker);
+    Sys_Start_Kernel();
+    Sys_Run_SystemThread();
+    return 0;
+}
