@@ -31,13 +31,19 @@ static sys_status block_current(os_wait *w, sys_event_id event, bool timed, uint
     return w->status;
 }
 
+/* Only a thread of the app's may wait: not the system thread (handlers),
+ * an interrupt or a critical section. */
+static inline bool may_block(void) {
+    return (os.isr_depth | os.lock_depth) == 0 && os.current != OS_SYSTEM;
+}
+
 /* The running thread waits as w says (the caller sets what an event's
  * waker reads: buffer, condition, capacity, size): the status it is woken
  * with, or why it cannot wait. The event and the kind of wait come as
  * arguments, not through w, so a caller's constants fold: a sleep's tests
  * vanish and it sets only what the tick and the wakers read. */
 static sys_status block(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
-    if ((os.isr_depth | os.lock_depth) != 0 || os.current == OS_SYSTEM) return SYS_E_CONTEXT;
+    if (!may_block()) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     sys_status st;
     if (event != OS_NO_EVENT && !os_event_registered(event))
@@ -91,6 +97,20 @@ sys_status Sys_Sleep(uint32_t ms) {
     os_wait w; /* only woken by its timeout: no buffer, condition or size */
     sys_status st = block(&w, OS_NO_EVENT, true, ms);
     return st == SYS_E_TIMEOUT ? SYS_OK : st;
+}
+
+sys_status Sys_Sleep_Until(uint32_t *wake_ms, uint32_t period_ms) {
+    if (wake_ms == NULL) return SYS_E_INVALID;
+    if (!may_block()) return SYS_E_CONTEXT;
+    /* The time left is taken with interrupts masked, through to blocking:
+     * a tick in between would make the wake-up a millisecond late. */
+    port_irq_state_t s = port_irq_save();
+    uint32_t target = *wake_ms + period_ms;
+    int32_t left = (int32_t)(target - os.now_ms);
+    *wake_ms = target;
+    sys_status st = left <= 0 ? SYS_OK : Sys_Sleep((uint32_t)left);
+    port_irq_restore(s);
+    return st;
 }
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */

@@ -339,3 +339,61 @@ TEST_F(Time, ANearDeadlineIsMetBesideTheFarthestOne) {
     ticks(8);
     EXPECT_EQ("b@3 b@5", joined());
 }
+
+// Sys_Sleep_Until: a loop whose work takes 15 ms (a sleep standing in for
+// it) wakes every 100 ms on the dot, where a Sys_Sleep(100) loop drifts by
+// the work's 15 ms each time; work longer than a period catches up.
+TEST_F(Time, SleepUntilKeepsAPeriodWhateverTheWorkTakes) {
+    std::vector<uint32_t> periodic, drifting;
+    boot([&] {
+        spawn([&] {
+            uint32_t wake = Sys_Get_SystemTime();
+            for (int k = 0; k < 4; k++) {
+                EXPECT_STATUS(SYS_OK, Sys_Sleep_Until(&wake, 100));
+                periodic.push_back(Sys_Get_SystemTime());
+                Sys_Sleep(15);
+            }
+            Sys_Sleep(1000000);
+        });
+        spawn([&] {
+            for (int k = 0; k < 4; k++) {
+                Sys_Sleep(100);
+                drifting.push_back(Sys_Get_SystemTime());
+                Sys_Sleep(15);
+            }
+            Sys_Sleep(1000000);
+        });
+    });
+    settle();
+    ticks(500);
+    EXPECT_EQ((std::vector<uint32_t>{100, 200, 300, 400}), periodic);
+    EXPECT_EQ((std::vector<uint32_t>{100, 215, 330, 445}), drifting);
+}
+
+TEST_F(Time, SleepUntilCatchesUpAfterLongWorkAndRefusesBadCalls) {
+    std::vector<uint32_t> woke;
+    sys_status null_status = SYS_OK, in_setup = SYS_OK, in_setup_valid = SYS_OK;
+    boot([&] {
+        in_setup = Sys_Sleep_Until(nullptr, 10);
+        uint32_t now = 0;
+        in_setup_valid = Sys_Sleep_Until(&now, 10);
+        spawn([&] {
+            null_status = Sys_Sleep_Until(nullptr, 10);
+            uint32_t wake = Sys_Get_SystemTime();
+            Sys_Sleep(250); // work that overran two and a half periods
+            for (int k = 0; k < 4; k++) {
+                EXPECT_STATUS(SYS_OK, Sys_Sleep_Until(&wake, 100));
+                woke.push_back(Sys_Get_SystemTime());
+            }
+            Sys_Sleep(1000000);
+        });
+    });
+    settle();
+    ticks(400);
+    // Targets 100 and 200 have passed at 250: it returns at once for both,
+    // then keeps the period: 300, 400.
+    EXPECT_EQ((std::vector<uint32_t>{250, 250, 300, 400}), woke);
+    EXPECT_STATUS(SYS_E_INVALID, null_status);
+    EXPECT_STATUS(SYS_E_INVALID, in_setup) << "NULL is checked first";
+    EXPECT_STATUS(SYS_E_CONTEXT, in_setup_valid) << "not a thread: it may not wait";
+}

@@ -194,6 +194,8 @@ extern void (*kilobot_tick_hook)(void);
 #define KILOBOT_EEPROM_STRAIGHT_LEFT 0x0C
 #define KILOBOT_EEPROM_STRAIGHT_RIGHT 0x14
 #define KILOBOT_EEPROM_UID 0xB0 /* little-endian uint16_t */
+/* The robot's own id, as KiloGUI set it (EEPROM 0xB0; 0xFFFF erased). */
+uint16_t kilobot_uid(void);
 
 /* The lower layers, for code that bypasses events (interrupts, kilolib). */
 void kilobot_led_apply(uint8_t rgb);

@@ -7,6 +7,7 @@
  *                          BOOT, RESET, SLEEP, RUN, ...): define
  *                          KILOBOT_OVERHEAD_CONTROL 0 before including this
  *                          to get its messages as KILOBOT_EVENT_IR_RX instead
+ *   robot_id()             the robot's own id (the Kilobot's uid, EEPROM 0xB0)
  *   ROBOT_EVENT_LED        command: one byte, ROBOT_RGB(r, g, b), 0..3 each:
  *                          the robot's status light
  */
@@ -17,6 +18,8 @@
 
 #define ROBOT_EVENT_LED KILOBOT_EVENT_LED
 #define ROBOT_RGB(r, g, b) KILOBOT_RGB(r, g, b)
+
+static inline uint16_t robot_id(void) { return kilobot_uid(); }
 
 #ifndef KILOBOT_OVERHEAD_CONTROL
 #define KILOBOT_OVERHEAD_CONTROL 1

@@ -1,4 +1,6 @@
 /* Registering the Kilobot's devices with the HAL. */
+#include <avr/eeprom.h>
+
 #include "openswarm/kilobot.h"
 
 #include "devices_internal.h"
@@ -11,3 +13,5 @@ sys_status kilobot_devices_init(void) {
     if (st == SYS_OK) kilobot_ir_start();
     return st;
 }
+
+uint16_t kilobot_uid(void) { return eeprom_read_word((const uint16_t *)KILOBOT_EEPROM_UID); }
