@@ -1,7 +1,10 @@
 /* The robot's own id without EEPROM code (robot_id()), and a periodic
  * loop that keeps its period exactly whatever its work takes
  * (Sys_Sleep_Until): a Sys_Sleep(1000) loop with 13 ms of work drifted to
- * 1.013, 2.026, 3.039 s (avr.periodic_id). */
+ * 1.013, 2.026, 3.039 s; and printf without kilolib's headers
+ * (robot_console_init) (avr.periodic_id). */
+#include <stdio.h>
+
 #include "openswarm/kernel.h"
 #include "openswarm/kilobot_sim.h"
 #include "openswarm/robot.h"
@@ -21,6 +24,8 @@ static void periodic(void) {
 int main(void) {
     Sys_Init_Kernel();
     robot_devices_init();
+    robot_console_init();
+    printf("printf says %d\n", 42);
     sim_puts_P(PSTR("robot id "));
     sim_put_uint(robot_id());
     sim_putc('\n');

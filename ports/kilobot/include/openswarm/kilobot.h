@@ -194,6 +194,10 @@ extern void (*kilobot_tick_hook)(void);
 #define KILOBOT_EEPROM_STRAIGHT_LEFT 0x0C
 #define KILOBOT_EEPROM_STRAIGHT_RIGHT 0x14
 #define KILOBOT_EEPROM_UID 0xB0 /* little-endian uint16_t */
+/* printf and puts to the debug serial port (38400 baud, 8N1 on PD1; the
+ * simulator prints its lines like the console). */
+void kilobot_console_init(void);
+
 /* The robot's own id, as KiloGUI set it (EEPROM 0xB0; 0xFFFF erased). */
 uint16_t kilobot_uid(void);
 

@@ -8,6 +8,7 @@
  *                          KILOBOT_OVERHEAD_CONTROL 0 before including this
  *                          to get its messages as KILOBOT_EVENT_IR_RX instead
  *   robot_id()             the robot's own id (the Kilobot's uid, EEPROM 0xB0)
+ *   robot_console_init()   printf from here on goes to the robot's console
  *   ROBOT_EVENT_LED        command: one byte, ROBOT_RGB(r, g, b), 0..3 each:
  *                          the robot's status light
  */
@@ -20,6 +21,7 @@
 #define ROBOT_RGB(r, g, b) KILOBOT_RGB(r, g, b)
 
 static inline uint16_t robot_id(void) { return kilobot_uid(); }
+static inline void robot_console_init(void) { kilobot_console_init(); }
 
 #ifndef KILOBOT_OVERHEAD_CONTROL
 #define KILOBOT_OVERHEAD_CONTROL 1
