@@ -64,7 +64,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     adc_trigger_attach(r->avr);
     char prefix[sizeof r->console.prefix] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
-    console_attach(r, o->quiet, prefix);
+    console_attach(r, o->quiet, o->timestamps, prefix);
     if (o->trace || csv != NULL || o->world != NULL) trace_attach(r, o->trace, csv);
     if (measure_attach(r, o) != 0) return -1;
     return debug_attach(r, o);

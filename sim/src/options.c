@@ -32,6 +32,7 @@ static void usage(FILE *out) {
             "      --mask-limit MS  a firmware running with interrupts masked for longer fails\n"
             "                       the run, exit 7 (default 1000; 0: never)\n"
             "      --main-stack     print each robot's main stack's worst use at the end\n"
+            "      --timestamps     begin every console and serial line with its time\n"
             "                       (main, interrupts and event handlers run there)\n"
             "  -q, --quiet          do not print the consoles\n"
             "      --trace          print the robots' LED colour and motor duty changes\n"
@@ -203,6 +204,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
         {"allow-faults", no_argument, 0, 'A' + 256},
         {"mask-limit", required_argument, 0, 'M' + 256}, {"main-stack", no_argument, 0, 'S' + 256},
+        {"timestamps", no_argument, 0, 'T' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -224,6 +226,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'A' + 256: o->allow_faults = 1; break;
         case 'M' + 256: if ((v = number("--mask-limit", optarg, 0, 3600000, "1000")) < 0) return -1; o->mask_limit_ms = (double)v; break;
         case 'S' + 256: o->main_stack = 1; break;
+        case 'T' + 256: o->timestamps = 1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;

@@ -62,6 +62,7 @@ typedef struct options {
     int allow_faults; /* kernel faults do not fail the run */
     double mask_limit_ms; /* interrupts masked longer than this fail the run; 0: never */
     int main_stack;     /* print each robot's main stack's worst use */
+    int timestamps;     /* console and serial lines begin with their time */
     int marks;
     int profile;        /* cycles by function, printed at the end */
     int watched[MAX_WATCHED_IRQS];
@@ -113,6 +114,8 @@ double placement_distance_of(int a, int b, void *ctx);
 /* A line-buffered text output of one robot (its console or serial port). */
 typedef struct console {
     char prefix[24];
+    const avr_t *avr;     /* its robot's, for the time of a line */
+    int timestamps;       /* each line begins with its time, as trace lines do */
     char line[256];
     size_t len;
     int quiet;            /* lines dropped; kernel faults still reported */
@@ -212,7 +215,7 @@ void profile_charge(uint32_t pc, int was_asleep, uint64_t cycles);
 void profile_print(int robots);
 
 /* console.c */
-void console_attach(robot *r, int quiet, const char *prefix);
+void console_attach(robot *r, int quiet, int timestamps, const char *prefix);
 
 /* robot_trace.c */
 void trace_attach(robot *r, int print, FILE *csv);

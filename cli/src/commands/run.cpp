@@ -36,6 +36,7 @@ struct RunOptions {
     bool robots_given = false;
     int gdb = 0;
     bool debug = false; // the debug image (build --debug)
+    bool timestamps = false; // console lines begin with their time
     std::string vcd;
     std::vector<std::string> ohc; // overhead-controller messages, MSG@SECONDS
     bool profile = false;
@@ -242,6 +243,7 @@ int run_app(RunOptions o, const Paths &paths) {
     if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
     for (const auto &message : o.ohc) argv.insert(argv.end(), {"--ohc", message});
     if (o.profile) argv.push_back("--profile");
+    if (o.timestamps) argv.push_back("--timestamps");
     if (o.ir_log) argv.push_back("--ir-log");
     if (!o.clock_spread.empty()) argv.insert(argv.end(), {"--clock-spread", o.clock_spread});
     if (!o.ir_loss.empty()) argv.insert(argv.end(), {"--ir-loss", o.ir_loss});
@@ -320,6 +322,8 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "calib-left:70, ...; repeatable)")
         ->type_name("MSG@SECONDS");
     cmd->add_flag("--profile", o->profile, "print where the CPU cycles went, by function");
+    cmd->add_flag("--timestamps", o->timestamps,
+                  "begin every console line with its simulated time, as the trace's lines");
     cmd->add_flag("--ir-log", o->ir_log,
                   "print every frame the robots send, decoded by the Kilobot wire format");
     cmd->add_option("--clock-spread", o->clock_spread,
@@ -346,7 +350,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
         o->time_given = time->count() > 0;
         o->simavr_only.clear();
         for (const char *name : {"--robots", "--distance", "--line", "--positions", "--world",
-                                 "--ir-range", "--vcd", "--ohc", "--profile", "--ir-log",
+                                 "--ir-range", "--vcd", "--ohc", "--profile", "--ir-log", "--timestamps",
                                  "--clock-spread", "--ir-loss", "--first", "--trace", "--out",
                                  "--video"})
             if (cmd->count(name) > 0) o->simavr_only.push_back(name);

@@ -25,7 +25,11 @@ static void put(console *c, uint8_t v) {
     if (c->quiet) return;
     if (v == '\n' || c->len == sizeof c->line - 1) {
         c->line[c->len] = '\0';
-        printf("%s%s\n", c->prefix, c->line);
+        if (c->timestamps)
+            printf("%s[%10.6f s] %s\n", c->prefix, (double)c->avr->cycle / (double)c->avr->frequency,
+                   c->line);
+        else
+            printf("%s%s\n", c->prefix, c->line);
         fflush(stdout);
         c->len = 0;
     } else if (v != '\r') {
@@ -88,9 +92,11 @@ static void serial_output(struct avr_irq_t *irq, uint32_t value, void *param) {
     put(param, (uint8_t)value);
 }
 
-void console_attach(robot *r, int quiet, const char *prefix) {
+void console_attach(robot *r, int quiet, int timestamps, const char *prefix) {
     snprintf(r->console.prefix, sizeof r->console.prefix, "%s", prefix);
     snprintf(r->serial.prefix, sizeof r->serial.prefix, "%s", prefix);
+    r->console.avr = r->serial.avr = r->avr;
+    r->console.timestamps = r->serial.timestamps = timestamps;
     r->console.quiet = quiet;
     avr_register_io_write(r->avr, GPIOR1_ADDR, console_write, &r->console);
     if (!quiet)
