@@ -17,6 +17,17 @@ get_filename_component(OPENSWARM_SDK_ROOT "${CMAKE_CURRENT_LIST_DIR}/../.." ABSO
 include(${OPENSWARM_SDK_ROOT}/cmake/OpenSwarmKernel.cmake)
 set(OpenSwarm_FOUND TRUE)
 
+# The app's own code is built with warnings on (`if (count = 3)` says so);
+# OPENSWARM_WERROR (openswarm build --werror) makes them errors.
+option(OPENSWARM_WERROR "the app's warnings are errors" OFF)
+function(openswarm_app_warnings target)
+  set(flags -Wall -Wextra)
+  if(OPENSWARM_WERROR)
+    list(APPEND flags -Werror)
+  endif()
+  target_compile_options(${target} PRIVATE $<$<COMPILE_LANGUAGE:C,CXX>:${flags}>)
+endfunction()
+
 # openswarm_add_firmware(<name> PORT <kilobot|epuck2|epuck|epuck_world|host> SOURCES <files...>
 #                        [CONFIG <header>])
 # Builds the kernel for the port and configuration, and the application
@@ -66,6 +77,7 @@ function(openswarm_add_firmware name)
   endif()
   add_executable(${name} ${F_SOURCES} ${generated_sources})
   target_link_libraries(${name} PRIVATE ${name}_openswarm)
+  openswarm_app_warnings(${name})
   if(F_PORT STREQUAL "epuck_world")
     # The process's main is the world link's (ports/epuck/host); the app's
     # own, renamed, is what it runs on the simulated CPU.
@@ -105,6 +117,7 @@ function(openswarm_add_plain_controller name)
     ${OPENSWARM_SDK_ROOT}/ports/epuck/src/camera_classifier.c
     ${OPENSWARM_SDK_ROOT}/ports/epuck/host/src/plain_world.c
     ${OPENSWARM_SDK_ROOT}/ports/epuck/host/src/link_io.c)
+  openswarm_app_warnings(${name})
   # The e-puck layer's header names kernel types: the host port's headers
   # give them (nothing of the kernel is linked).
   target_include_directories(${name} PRIVATE ${OPENSWARM_SDK_ROOT}/kernel/include

@@ -128,6 +128,15 @@ expect 2 "openswarm: --clock-spread 9: give a percentage from 0 to 5" "$openswar
     && [ -s my-robot/build/kilobot/my-robot.elf ] && [ -s my-robot/build/kilobot/my-robot.hex ] \
     && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: my-robot did not build"; }
 
+# The app's code is built with warnings on; --werror makes them fail the build.
+"$openswarm" new warned >/dev/null
+sed -i 's/^    blinks++;$/    if (blinks = 3) {}\n    blinks++;/' warned/main.c
+out=$("$openswarm" build -C warned 2>&1); status=$?
+[ "$status" -eq 0 ] && printf '%s' "$out" | grep -q "main.c:[0-9]*:[0-9]*: warning: suggest parentheses around assignment" \
+    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: no warning for if (blinks = 3): exit $status"; }
+"$openswarm" build -C warned --werror >/dev/null 2>&1; status=$?
+[ "$status" -eq 1 ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: --werror built a warned app: exit $status"; }
+
 # The smallest pools the checks accept run the app as declared.
 "$openswarm" new tight >/dev/null
 python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); j["kernel"] = {"max_events": 11, "event_data": 81, "stack_pool": 112}; json.dump(j, open(sys.argv[1], "w"))' tight/openswarm.json

@@ -81,6 +81,7 @@ struct BuildOptions {
     std::string port;
     bool json = false;
     bool debug = false;
+    bool werror = false;
 };
 
 // The kernel's and the app's shares of the image, from a second build
@@ -176,7 +177,7 @@ fs::path generated_dir(const fs::path &dir, const std::string &port) {
 
 std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
                                      const std::string &port_option, Progress progress,
-                                     Variant variant) {
+                                     Variant variant, bool werror) {
     FILE *out = progress == Progress::on_stdout ? stdout : stderr;
     auto run = progress == Progress::on_stdout ? run_program : run_program_to_stderr;
     AppConfig config;
@@ -216,6 +217,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
     configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
+    configure.push_back(std::string("-DOPENSWARM_WERROR=") + (werror ? "ON" : "OFF"));
     std::fprintf(out, "Configuring %s for %s%s\n", config.name.c_str(), port.c_str(),
                  debug ? " (debug: -Og, no link-time optimisation)" : "");
     if (run(configure) != 0) {
@@ -267,13 +269,14 @@ void add_build_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
     cmd->add_flag("--json", o->json, "print the result as JSON (progress goes to standard error)");
+    cmd->add_flag("--werror", o->werror, "the app's compiler warnings are errors (they are on: -Wall -Wextra)");
     cmd->add_flag("--debug", o->debug,
                   "a debug image in build/<port>-debug: -Og -g, no link-time optimisation, so "
                   "the debugger (openswarm run --debug --gdb PORT) knows every line and variable");
     cmd->callback([o, &paths] {
         Progress progress = o->json ? Progress::on_stderr : Progress::on_stdout;
         auto r = build_app(paths, o->dir, o->port, progress,
-                           o->debug ? Variant::debug : Variant::release);
+                           o->debug ? Variant::debug : Variant::release, o->werror);
         if (!r) return;
         std::string why = "not measured for a debug image (it has no link-time optimisation "
                           "to see through)";

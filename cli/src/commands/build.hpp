@@ -39,7 +39,7 @@ enum class Variant { release, debug };
 std::optional<BuildResult> build_app(const Paths &paths, const std::filesystem::path &dir,
                                      const std::string &port,
                                      Progress progress = Progress::on_stdout,
-                                     Variant variant = Variant::release);
+                                     Variant variant = Variant::release, bool werror = false);
 
 // For a port nothing here runs (Runner::none): report that command cannot
 // run its images, and what building them needs if it is missing; true then.
