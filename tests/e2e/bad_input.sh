@@ -143,6 +143,17 @@ python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); j["kernel"] = {"
 [ "$("$openswarm" run -C tight --time 1 2>&1 | grep -c '\] led ')" -ge 3 ] \
     && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: the smallest accepted pools do not run blinky"; }
 
+# run keeps the build's output apart: one line, then the run's own.
+rm -rf tight/build
+out=$("$openswarm" run -C tight --time 0.3 2>&1)
+first=$(printf '%s\n' "$out" | head -1)
+if [[ "$first" =~ ^Built\ tight/build/kilobot/tight\.elf\ \(flash\ [0-9]+\ of\ 28672\ bytes ]] \
+    && ! printf '%s\n' "$out" | grep -Eq '^(\[[0-9]+/[0-9]+\]|Configuring|-- )'; then
+    passed=$((passed + 1))
+else
+    failed=$((failed + 1)); echo "FAILED: run shows the build's output:"; printf '%s\n' "$out" | head -5
+fi
+
 rm -rf empty-app && mkdir empty-app && printf '{"name": "e", "port": "kilobot"}' > empty-app/openswarm.json
 expect 2 "no tests: add tests/NAME.trace" "$openswarm" test -C empty-app
 

@@ -179,7 +179,21 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
                                      const std::string &port_option, Progress progress,
                                      Variant variant, bool werror) {
     FILE *out = progress == Progress::on_stdout ? stdout : stderr;
-    auto run = progress == Progress::on_stdout ? run_program : run_program_to_stderr;
+    const bool brief = progress == Progress::brief;
+    std::string log; // brief: what CMake said, shown if it fails
+    auto run = [&](const std::vector<std::string> &argv) {
+        if (!brief) return progress == Progress::on_stdout ? run_program(argv) : run_program_to_stderr(argv);
+        std::string said;
+        int status = capture_program_and_errors(argv, said);
+        log += said;
+        return status;
+    };
+    auto say = [&](const std::string &line) {
+        if (!brief) std::fprintf(out, "%s\n", line.c_str());
+    };
+    auto failed_log = [&] {
+        if (brief) std::fprintf(stderr, "%s", log.c_str());
+    };
     AppConfig config;
     try {
         config = load_app_config(dir);
@@ -218,21 +232,28 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
     configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
     configure.push_back(std::string("-DOPENSWARM_WERROR=") + (werror ? "ON" : "OFF"));
-    std::fprintf(out, "Configuring %s for %s%s\n", config.name.c_str(), port.c_str(),
-                 debug ? " (debug: -Og, no link-time optimisation)" : "");
+    say("Configuring " + config.name + " for " + port +
+        (debug ? " (debug: -Og, no link-time optimisation)" : ""));
     if (run(configure) != 0) {
+        failed_log();
         report("configuring failed (CMake's messages are above); check " +
                (dir / "CMakeLists.txt").string());
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    std::fprintf(out, "Building %s\n", config.name.c_str());
+    say("Building " + config.name);
     LinkOverflows overflows;
     auto show = [&](const std::string &line) {
-        std::fprintf(out, "%s\n", line.c_str());
+        if (brief) {
+            log += line + "\n";
+            if (line.find(": warning:") != std::string::npos) std::fprintf(stderr, "%s\n", line.c_str());
+        } else {
+            std::fprintf(out, "%s\n", line.c_str());
+        }
         overflows.scan(line);
     };
     if (run_program_lines({"cmake", "--build", build_dir.string()}, show, 0, true) != 0) {
+        failed_log();
         auto why = overflows.explain(config, generated / "openswarm_config.h");
         report(why ? *why : "the build failed (the compiler's messages are above)");
         exit_code = EXIT_FAILED;
@@ -248,6 +269,11 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         return std::nullopt;
     }
     warn_main_stack(info, result, config);
+    if (brief && info.flash_bytes)
+        std::printf("Built %s (flash %u of %u bytes, RAM %u of %u)\n", result.image.string().c_str(),
+                    result.flash, info.flash_bytes, result.ram, info.ram_bytes);
+    else if (brief)
+        std::printf("Built %s\n", result.image.string().c_str());
     return result;
 }
 

@@ -25,8 +25,10 @@ std::vector<std::string> configure_command(const Paths &paths, const std::filesy
                                            const std::string &port);
 
 // Where a command's progress (and CMake's) goes: standard error when
-// standard output carries a result (--json).
-enum class Progress { on_stdout, on_stderr };
+// standard output carries a result (--json); brief: one line when it
+// builds (the compiler's warnings kept), all of it when it fails - for
+// run and test, whose own output follows.
+enum class Progress { on_stdout, on_stderr, brief };
 
 // A release image (-Os, link-time optimisation: what goes to the robot)
 // or a debug one (-Og, no LTO: every line and variable for the debugger),

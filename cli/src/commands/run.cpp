@@ -129,7 +129,7 @@ int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &
         return EXIT_USAGE;
     }
     double seconds = *number_in(o.time, 's', 0, 86400);
-    auto built = build_app(paths, o.dir, o.port, Progress::on_stdout,
+    auto built = build_app(paths, o.dir, o.port, Progress::brief,
                            o.debug ? Variant::debug : Variant::release);
     if (!built) return exit_code;
     QemuRun r;
@@ -204,7 +204,7 @@ int run_app(RunOptions o, const Paths &paths) {
         if (o.out.empty())
             o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
     }
-    auto built = build_app(paths, o.dir, o.port, Progress::on_stdout,
+    auto built = build_app(paths, o.dir, o.port, Progress::brief,
                            o.debug ? Variant::debug : Variant::release);
     if (!built) return exit_code;
     if (paths.simulator.empty()) {

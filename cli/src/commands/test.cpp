@@ -195,7 +195,7 @@ int run_tests(const std::string &dir, const Paths &paths) {
         return EXIT_USAGE;
     }
     if (runs_nowhere(dir)) return EXIT_FAILED;
-    auto built = build_app(paths, dir, "");
+    auto built = build_app(paths, dir, "", Progress::brief);
     if (!built) return exit_code;
     int passed = 0, failed = 0;
     std::vector<std::pair<std::string, std::string>> rows;
