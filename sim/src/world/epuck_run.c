@@ -12,7 +12,7 @@
 #include "world/world_random.h"
 
 #define STEP_MS 10           /* = WORLD_STEP_S: one exchange per physics step */
-#define FRAME_PERIOD_MS 100  /* the camera's 10 frames a second (docs/world.md) */
+#define FRAME_PERIOD_MS 250  /* the camera's 4 frames a second (docs/world.md) */
 
 typedef struct epuck_robot {
     epuck_link link;

@@ -20,7 +20,7 @@ static const double SENSOR_DEG[EPUCK_SENSOR_COUNT] = {-18, -45, -90, -142, 142, 
 #define ADC_MAX 4095.0
 /* The camera's horizontal field of view, degrees, and how far it tells a
  * robot or an object from the white walls behind (docs/world.md). */
-#define CAMERA_FOV_DEG 45.0
+#define CAMERA_FOV_DEG 56.0
 #define CAMERA_RANGE_MM 1500.0
 #define GREEN565 0x07E0u
 #define RED565 0xF800u
