@@ -15,6 +15,7 @@ packages=(
   qemu-system-arm gdb-multiarch             # running it under QEMU, debugging it
   gdb-avr                                   # debugging Kilobot firmware at source level
   openmpi-bin libopenmpi-dev                # experiments spread over ranks and machines (mpirun)
+  clang libclang-rt-14-dev                  # fuzzing the file readers (libFuzzer)
 )
 
 missing=()

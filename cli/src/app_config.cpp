@@ -197,7 +197,9 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
     if (!devices.is_object())
         fail(file, "devices", "expected an object {\"motors\": {\"processor\": ...}}, found " + found(devices));
     const auto &known = devices_of(c.port);
-    for (const auto &[name, d] : devices.items()) {
+    for (const auto &item : devices.items()) {
+        const std::string name = item.key();
+        const json &d = item.value();
         std::string path = "devices." + name;
         auto device = std::find_if(known.begin(), known.end(), [&](const DeviceInfo &i) { return i.name == name; });
         if (device == known.end()) {
@@ -258,16 +260,7 @@ AppConfig load_app_config(const fs::path &dir) {
     std::stringstream buffer;
     buffer << in.rdbuf();
     std::string text = buffer.str();
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::parse_error &e) {
-        std::string what = e.what();
-        size_t colon = what.rfind(": ");
-        std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
-        throw ConfigError(located_message(config.file, text, e.byte > 0 ? e.byte - 1 : 0,
-                                          "invalid JSON: " + reason));
-    }
+    json doc = parse_json_file(config.file, text);
     const fs::path &file = config.file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
     check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices"});

@@ -88,13 +88,7 @@ Experiment load_experiment(const fs::path &file) {
     if (!in) throw ConfigError(file.string() + ": cannot read it; give an experiment file (" + example + ")");
     std::stringstream text;
     text << in.rdbuf();
-    json doc;
-    try {
-        doc = json::parse(text.str());
-    } catch (const json::parse_error &err) {
-        throw ConfigError(located_message(file, text.str(), err.byte ? err.byte - 1 : 0,
-                                          "invalid JSON (" + std::string(err.what()) + ")"));
-    }
+    json doc = parse_json_file(file, text.str());
     Experiment e;
     e.file = file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }; " + std::string(example));

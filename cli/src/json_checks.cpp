@@ -50,6 +50,23 @@ long number_at(const fs::path &file, const std::string &path, const json &v, lon
     return v.get<long>();
 }
 
+json parse_json_file(const fs::path &file, const std::string &text) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error &e) {
+        std::string what = e.what();
+        size_t colon = what.rfind(": ");
+        std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
+        throw ConfigError(located_message(file, text, e.byte > 0 ? e.byte - 1 : 0, "invalid JSON: " + reason));
+    } catch (const json::exception &e) { // a number beyond a double's range: no place given
+        std::string what = e.what();
+        size_t bracket = what.find("] ");
+        throw ConfigError(file.string() + ": invalid JSON: " +
+                          (bracket == std::string::npos ? what : what.substr(bracket + 2)) +
+                          "; write a smaller number");
+    }
+}
+
 double real_at(const fs::path &file, const std::string &path, const json &v, double min, double max) {
     if (!v.is_number() || v.get<double>() < min || v.get<double>() > max) {
         char range[64];

@@ -13,6 +13,10 @@
 
 namespace openswarm {
 
+// The JSON document in text (read from file); a ConfigError at the
+// place of a syntax error, or naming a number too large to hold.
+nlohmann::json parse_json_file(const std::filesystem::path &file, const std::string &text);
+
 [[noreturn]] void fail(const std::filesystem::path &file, const std::string &path,
                        const std::string &message);
 // A value as the message shows it: its type and (the start of) its text.

@@ -53,6 +53,9 @@ printf '%s\n' "$err" | grep -q '^      "port": "kilobot",,$' && printf '%s\n' "$
 
 printf '{"name": "keep", "port": "kilobott"}' > keep/openswarm.json
 expect 2 "\"port\": unknown port \"kilobott\".*did you mean \"kilobot\"" "$openswarm" build -C keep
+# A number beyond a double's range (found by fuzz.app_config: it crashed the tool).
+printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 5e555}}' > keep/openswarm.json
+expect 2 "keep/openswarm.json: invalid JSON: number overflow parsing '5e555'; write a smaller number" "$openswarm" build -C keep
 printf '{"name": "keep"}' > keep/openswarm.json
 expect 2 "\"port\": missing" "$openswarm" build -C keep
 printf '{"name": 7, "port": "kilobot"}' > keep/openswarm.json

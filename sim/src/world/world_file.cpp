@@ -415,7 +415,7 @@ struct Origin {
 
 class Reader {
   public:
-    Reader(const std::string &path, const std::string &text, const Scanner &s) : path_(path), text_(text), s_(s) {}
+    Reader(const std::string &path, const Scanner &s) : path_(path), s_(s) {}
 
     [[noreturn]] void fail(const Node &n, const std::string &message) const {
         auto at = s_.value_at.find(n.ptr);
@@ -514,7 +514,6 @@ class Reader {
 
   private:
     std::string path_;
-    const std::string &text_;
     const Scanner &s_;
 
     /* The world under construction. */
@@ -1072,7 +1071,7 @@ extern "C" int world_spec_load(const char *path, world_spec *out) {
             /* What the scanner lets through and nlohmann does not: invalid UTF-8. */
             throw Mistake{0, std::string("not readable as JSON: ") + e.what() + "; save the file as UTF-8"};
         }
-        Reader reader(path, text, scanner);
+        Reader reader(path, scanner);
         w = reader.load(doc);
         reader.export_to(w);
     } catch (const Mistake &m) {

@@ -1,0 +1,30 @@
+// A fuzzer's input as a file: the readers under test take paths.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+// A folder of this process's own, made once, removed at exit.
+struct FuzzDir {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("openswarm-fuzz-" + std::to_string(getpid()));
+    FuzzDir() { std::filesystem::create_directories(path); }
+    ~FuzzDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+    }
+};
+
+inline const std::filesystem::path &fuzz_dir() {
+    static const FuzzDir dir;
+    return dir.path;
+}
+
+inline std::filesystem::path write_input(const std::string &name, const uint8_t *data, size_t size) {
+    std::filesystem::path p = fuzz_dir() / name;
+    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char *>(data), (std::streamsize)size);
+    return p;
+}
