@@ -5,12 +5,15 @@
 // "# run: <simulator options>" (e.g. --time 1.2 --robots 2), then one
 // expected change a line, "time_s,device,a,b,c" (robot 0) or
 // "time_s,robot,device,a,b,c"; times may be 5 ms off. Each robot's changes
-// are compared in order.
+// are compared in order. Lines "> TEXT" are console lines the run must
+// print, in that order (others may come between). `test --record NAME`
+// writes such a file from a run.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "../app_config.hpp"
@@ -44,9 +47,15 @@ std::vector<std::string> split(const std::string &s, char sep) {
     return parts;
 }
 
+struct ConsoleLine {
+    std::string text;
+    int line; // in the expectation
+};
+
 struct Expectation {
     std::vector<std::string> options;
     std::vector<Change> changes;
+    std::vector<ConsoleLine> console;
 };
 
 Expectation read_expectation(const fs::path &file) {
@@ -58,6 +67,10 @@ Expectation read_expectation(const fs::path &file) {
             std::istringstream words(line.substr(6));
             std::string w;
             while (words >> w) e.options.push_back(w);
+            continue;
+        }
+        if (line.rfind("> ", 0) == 0) {
+            e.console.push_back({line.substr(2), n});
             continue;
         }
         if (line.empty() || line[0] == '#') continue;
@@ -121,16 +134,62 @@ std::vector<std::string> compare(const fs::path &file, const std::vector<Change>
     return problems;
 }
 
+// The expected console lines, in order, among those printed.
+std::vector<std::string> compare_console(const fs::path &file, const std::vector<ConsoleLine> &want,
+                                         const std::vector<std::string> &got) {
+    size_t at = 0;
+    for (const auto &w : want) {
+        while (at < got.size() && got[at] != w.text) at++;
+        if (at == got.size())
+            return {file.string() + ":" + std::to_string(w.line) + ": expected the console line '" +
+                    w.text + "'" + (w.line == want.front().line ? "" : " after the ones before it") +
+                    ", not printed"};
+        at++;
+    }
+    return {};
+}
+
+// A run in the simulator: its LED and motor changes, its console lines
+// (the simulator's own lines left out); the failure if it failed.
+struct SimulatorRun {
+    std::vector<Change> changes;
+    std::vector<std::string> console;
+    std::string failure;
+};
+
+SimulatorRun run_in_simulator(const std::string &name, const std::vector<std::string> &options,
+                              const fs::path &image, const Paths &paths) {
+    fs::path csv = image.parent_path() / (name + ".trace.csv");
+    std::vector<std::string> argv = {paths.simulator.string(), "--no-progress", "--trace-csv", csv.string()};
+    argv.insert(argv.end(), options.begin(), options.end());
+    argv.push_back(image.string());
+    std::string output;
+    SimulatorRun run;
+    int status = capture_program_and_errors(argv, output);
+    std::istringstream lines(output);
+    std::string simulator_said; // its own lines: shown when the run failed
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("openswarm-sim:", 0) == 0)
+            simulator_said += line + "\n";
+        else
+            run.console.push_back(line);
+    }
+    if (status != 0) {
+        std::fprintf(stderr, "%s", simulator_said.c_str());
+        run.failure = simulator_failure(status);
+        return run;
+    }
+    run.changes = read_trace(csv);
+    return run;
+}
+
 std::vector<std::string> run_in_simulator_and_compare(const fs::path &file, const Expectation &e,
                                                       const fs::path &image, const Paths &paths) {
-    fs::path csv = image.parent_path() / (file.stem().string() + ".trace.csv");
-    std::vector<std::string> argv = {paths.simulator.string(), "--quiet", "--trace-csv", csv.string()};
-    argv.insert(argv.end(), e.options.begin(), e.options.end());
-    argv.push_back(image.string());
-    std::string ignored;
-    int status = capture_program(argv, ignored);
-    if (status != 0) return {simulator_failure(status)};
-    return compare(file, e.changes, read_trace(csv));
+    SimulatorRun run = run_in_simulator(file.stem().string(), e.options, image, paths);
+    if (!run.failure.empty()) return {run.failure};
+    auto problems = compare(file, e.changes, run.changes);
+    for (auto &p : compare_console(file, e.console, run.console)) problems.push_back(p);
+    return problems;
 }
 
 // A test of a port QEMU runs: one robot, and of the options only --time.
@@ -182,6 +241,64 @@ bool runs_nowhere(const std::string &dir) {
     return is_port(port) && refuse_unrunnable(port, "test");
 }
 
+struct TestOptions {
+    std::string dir = ".";
+    std::string record;               // a test to write from a run
+    std::vector<std::string> options; // the run's, after --
+    bool force = false;
+};
+
+// tests/NAME.trace from a run with the options given: what the robots
+// did and printed, to be checked from now on.
+int record_test(const TestOptions &o, const Paths &paths) {
+    if (!std::regex_match(o.record, std::regex("[A-Za-z0-9_-]+"))) {
+        report("--record " + o.record + ": a test's name is letters, digits, - and _ (it names tests/NAME.trace)");
+        return EXIT_USAGE;
+    }
+    fs::path file = fs::path(o.dir) / "tests" / (o.record + ".trace");
+    if (fs::exists(file) && !o.force) {
+        report(file.string() + " exists: pass --force to record it again");
+        return EXIT_USAGE;
+    }
+    if (runs_nowhere(o.dir)) return EXIT_FAILED;
+    auto built = build_app(paths, o.dir, "", Progress::brief);
+    if (!built) return exit_code;
+    if (port_info(built->port).runner != Runner::simavr) {
+        report("--record runs the Kilobot simulator; the " + built->port + " port's tests are written by hand");
+        return EXIT_USAGE;
+    }
+    std::vector<std::string> options = o.options.empty() ? std::vector<std::string>{"--time", "1"} : o.options;
+    SimulatorRun run = run_in_simulator(o.record, options, built->image, paths);
+    if (!run.failure.empty()) {
+        report("the run failed, so nothing was recorded: " + run.failure);
+        return EXIT_FAILED;
+    }
+    bool several = false;
+    for (const auto &c : run.changes) several |= c.robot != 0;
+    fs::create_directories(file.parent_path());
+    std::ofstream out(file);
+    out << "# run:";
+    for (const auto &w : options) out << " " << w;
+    out << "\n# Recorded by `openswarm test --record " << o.record
+        << "`: what the robots did and printed; edit freely.\n";
+    for (const auto &line : run.console) out << "> " << line << "\n";
+    char row[128];
+    for (const auto &c : run.changes) {
+        if (several)
+            std::snprintf(row, sizeof row, "%.3f,%d,%s,%d,%d,%d\n", c.t, c.robot, c.device.c_str(), c.a, c.b, c.c);
+        else
+            std::snprintf(row, sizeof row, "%.3f,%s,%d,%d,%d\n", c.t, c.device.c_str(), c.a, c.b, c.c);
+        out << row;
+    }
+    if (!out) {
+        report("cannot write " + file.string());
+        return EXIT_FAILED;
+    }
+    std::printf("Recorded %s: %zu changes, %zu console lines; `openswarm test` checks them from now on\n",
+                file.string().c_str(), run.changes.size(), run.console.size());
+    return EXIT_OK;
+}
+
 int run_tests(const std::string &dir, const Paths &paths) {
     fs::path tests = fs::path(dir) / "tests";
     std::vector<fs::path> files;
@@ -224,13 +341,29 @@ int run_tests(const std::string &dir, const Paths &paths) {
 }  // namespace
 
 void add_test_command(CLI::App &app, const Paths &paths) {
-    auto dir = std::make_shared<std::string>(".");
+    auto o = std::make_shared<TestOptions>();
     CLI::App *cmd = app.add_subcommand("test", "Run the app's tests (tests/*.trace) in the simulator");
     cmd->footer("A test is tests/NAME.trace: a line \"# run: <simulator options>\" (e.g. --time 1.2\n"
                 "--robots 2), then one expected LED or motor change a line: time_s,device,a,b,c\n"
-                "(robot 0) or time_s,robot,device,a,b,c. Times may be 5 ms off.");
-    cmd->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
-    cmd->callback([dir, &paths] { exit_code = run_tests(*dir, paths); });
+                "(robot 0) or time_s,robot,device,a,b,c. Times may be 5 ms off. Lines \"> TEXT\" are\n"
+                "console lines the run must print, in order. `openswarm test --record NAME -- --time 2\n"
+                "--robots 3` writes tests/NAME.trace from a run.");
+    cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
+    cmd->add_option("--record", o->record,
+                    "run once and write tests/NAME.trace from what the robots did and printed "
+                    "(simulator options after --; default --time 1)")
+        ->type_name("NAME");
+    cmd->add_flag("-f,--force", o->force, "with --record: replace an existing test");
+    cmd->add_option("simulator-options", o->options, "after --: the recorded run's simulator options")
+        ->type_name("");
+    cmd->callback([o, &paths] {
+        if (o->record.empty() && (!o->options.empty() || o->force)) {
+            report("options after -- and --force go with --record NAME");
+            exit_code = EXIT_USAGE;
+            return;
+        }
+        exit_code = o->record.empty() ? run_tests(o->dir, paths) : record_test(*o, paths);
+    });
 }
 
 }  // namespace openswarm
