@@ -68,6 +68,12 @@ static int device_index(const sys_device *dev) {
     return -1;
 }
 
+/* The events a registration made, undone if a later step fails: a refused
+ * device leaves the kernel as it found it. */
+static void unregister_new(sys_event_id event, bool made) {
+    if (made) Sys_Unregister_Event(event);
+}
+
 static sys_status register_device(sys_device *dev) {
     if (device_index(dev) >= 0) return SYS_E_EXISTS;
     /* One command event drives one device: a second would never be written. */
@@ -79,12 +85,19 @@ static sys_status register_device(sys_device *dev) {
         os_count(&os.stats.device_table_full);
         return SYS_E_POOL_FULL;
     }
+    const bool comm = dev->kind == SYS_DEVICE_COMM;
+    const bool new_event = !Sys_IsEventRegistered(dev->event);
+    const bool new_tx = comm && !Sys_IsEventRegistered(dev->tx_event);
     sys_status st = ensure_registered(dev->event);
-    if (st == SYS_OK && dev->kind == SYS_DEVICE_COMM) st = ensure_registered(dev->tx_event);
-    if (st != SYS_OK) return st;
-    if (dev->kind != SYS_DEVICE_INPUT) {
+    if (st == SYS_OK && comm) st = ensure_registered(dev->tx_event);
+    if (st == SYS_OK && dev->kind != SYS_DEVICE_INPUT) {
         st = Sys_Subscribe_to_Event(command_event(dev), SYS_PID_SYSTEM, command_handler, NULL);
-        if (st != SYS_OK && st != SYS_E_EXISTS) return st;
+        if (st == SYS_E_EXISTS) st = SYS_OK;
+    }
+    if (st != SYS_OK) {
+        unregister_new(dev->event, new_event);
+        unregister_new(dev->tx_event, new_tx);
+        return st;
     }
     devices[slot] = dev;
     return SYS_OK;

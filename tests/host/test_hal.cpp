@@ -506,6 +506,30 @@ TEST_F(Hal, RegisterDeviceRegistersItsEventsWithTheHalCapacity) {
     EXPECT_EQ("tx:72 61 77", joined());
 }
 
+// A device refused part-way (here: no subscription left for its command
+// handler) leaves no event of its own registered behind.
+TEST_F(Hal, ARefusedRegistrationLeavesNoEventBehind) {
+    sys_device uart = uart_device(); // registers EV_A and EV_B, subscribes to EV_B
+    sys_status st = SYS_OK;
+    bool rx = true, tx = true, other = false;
+    boot([&] {
+        for (int k = 0; k < OS_CFG_MAX_SUBSCRIPTIONS; k++) { // fill the subscription pool
+            sys_event_id e = (sys_event_id)(EV_C + k);
+            Sys_Register_Event(e);
+            Sys_Subscribe_to_Event(e, SYS_PID_SYSTEM, note_int16, nullptr);
+        }
+        st = Sys_Register_Device(&uart);
+        rx = Sys_IsEventRegistered(EV_A);
+        tx = Sys_IsEventRegistered(EV_B);
+        other = Sys_IsEventRegistered(EV_C);
+    });
+    settle();
+    EXPECT_STATUS(SYS_E_POOL_FULL, st);
+    EXPECT_FALSE(rx) << "its receive event stayed registered";
+    EXPECT_FALSE(tx) << "its transmit event stayed registered";
+    EXPECT_TRUE(other) << "events registered before are left alone";
+}
+
 TEST_F(Hal, UnregisterDeviceStopsItsOutputPath) {
     sys_device left = make_device("left", SYS_DEVICE_OUTPUT, EV_B, nullptr, nullptr);
     sys_device right = make_device("right", SYS_DEVICE_OUTPUT, EV_C, nullptr, nullptr);

@@ -23,6 +23,9 @@ using Status = sys_status;
 // An event whose data is one T (a plain struct or number).
 template <typename T>
 class Event {
+    // Sizes travel as uint8_t: a bigger T would be cut short, silently.
+    static_assert(sizeof(T) <= 253, "an event's data is at most 253 bytes (openswarm.json's limit)");
+
   public:
     using Handler = void (*)(const T &);
     using Condition = bool (*)(const T &);
