@@ -206,8 +206,17 @@ void main_stack_paint(robot *r, const char *elf_path);
 int main_stack_report(const robot *r, int print);
 
 /* interrupt_watch.c: a robot running with interrupts masked for more than
- * limit_ms (0: never reported) is reported once and marked hung. */
+ * limit_ms (0: never reported) is reported once and marked hung. Each
+ * instruction's I flag is noted (inline: it runs at every instruction), so
+ * one instruction with interrupts on - a reti, a sei - restarts the count,
+ * wherever the window ends fall. */
 void interrupt_watch_check(robot *r, double limit_ms);
+static inline void interrupt_watch_step(robot *r) {
+    if (r->avr->sreg[S_I])
+        r->masked_since = 0;
+    else if (r->masked_since == 0)
+        r->masked_since = r->avr->cycle ? r->avr->cycle : 1;
+}
 
 /* profile.c: --profile */
 int profile_load(const char *elf_path);

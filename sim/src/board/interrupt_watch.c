@@ -1,23 +1,17 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* A firmware that masks interrupts and never unmasks them hangs: no tick,
  * no events, and the kernel's own watch on handlers (which runs from the
- * tick) cannot see it. Checked between lockstep windows: a robot whose
- * I flag has been clear at every check for longer than the limit, while it
- * runs (not asleep, not stopped by a debugger), is reported once and fails
- * the run. A short section that unmasks in between restarts the count. */
+ * tick) cannot see it. Every instruction notes the I flag
+ * (interrupt_watch_step, sim.h); between lockstep windows a robot whose
+ * flag has stayed clear for longer than the limit, while it runs (not
+ * asleep, not stopped by a debugger), is reported once and fails the run.
+ * (Sampling the flag only at window ends saw a robot that sleeps between
+ * ticks always inside the tick's interrupt, I clear, and called it hung.) */
 #include "sim.h"
 
 void interrupt_watch_check(robot *r, double limit_ms) {
     avr_t *avr = r->avr;
-    if (limit_ms <= 0 || r->hung || r->state != cpu_Running) return;
-    if (avr->sreg[S_I]) {
-        r->masked_since = 0;
-        return;
-    }
-    if (r->masked_since == 0) {
-        r->masked_since = avr->cycle ? avr->cycle : 1;
-        return;
-    }
+    if (limit_ms <= 0 || r->hung || r->state != cpu_Running || r->masked_since == 0) return;
     double masked_ms = 1000.0 * (double)(avr->cycle - r->masked_since) / avr->frequency;
     if (masked_ms <= limit_ms) return;
     r->hung = 1;
