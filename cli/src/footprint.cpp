@@ -1,9 +1,8 @@
 #include "footprint.hpp"
 
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include "generate.hpp"
 #include "ports.hpp"
 
 namespace fs = std::filesystem;
@@ -31,20 +30,6 @@ const PortCosts &costs_of(const std::string &port) {
     for (const auto &c : all)
         if (c.port == port) return c;
     throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp: add them");
-}
-
-// The OS_CFG_* values the build used: the generated header's, or the port's.
-std::map<std::string, unsigned> generated_values(const fs::path &header) {
-    std::map<std::string, unsigned> values;
-    std::ifstream in(header);
-    std::string line;
-    while (std::getline(in, line)) {
-        std::istringstream fields(line);
-        std::string define, macro;
-        unsigned value = 0;
-        if (fields >> define >> macro >> value && define == "#define") values[macro] = value;
-    }
-    return values;
 }
 
 unsigned value_or(const std::map<std::string, unsigned> &values, const std::string &macro,
@@ -117,7 +102,7 @@ Footprint footprint_of(const AppConfig &config, const Attribution &a,
                        const fs::path &generated_config) {
     const PortInfo &port = port_info(config.port);
     const PortCosts &costs = costs_of(config.port);
-    auto values = generated_values(generated_config);
+    auto values = generated_config_values(generated_config);
     Footprint f{};
     f.stack_extra = costs.stack_extra;
     f.stack_guard = value_or(values, "OS_CFG_STACK_CHECK", 1) ? stack_guard_bytes : 0;

@@ -227,4 +227,17 @@ void generate_app_files(const AppConfig &config, const Libraries &libraries, con
     write_if_changed(out_dir / "openswarm_app.c", app_source(config));
 }
 
+std::map<std::string, unsigned> generated_config_values(const fs::path &header) {
+    std::map<std::string, unsigned> values;
+    std::ifstream in(header);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        std::string define, macro;
+        unsigned value = 0;
+        if (fields >> define >> macro >> value && define == "#define") values[macro] = value;
+    }
+    return values;
+}
+
 }  // namespace openswarm

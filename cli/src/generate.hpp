@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "app_config.hpp"
 #include "ports.hpp"
@@ -16,5 +18,9 @@ namespace openswarm {
 // max_threads the file gives that leaves them no slot is a ConfigError.
 void generate_app_files(const AppConfig &config, const Libraries &libraries,
                         const std::filesystem::path &out_dir);
+
+// The OS_CFG_* values a generated openswarm_config.h sets (empty if it
+// cannot be read); the port's defaults hold for the others.
+std::map<std::string, unsigned> generated_config_values(const std::filesystem::path &header);
 
 }  // namespace openswarm

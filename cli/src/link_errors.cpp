@@ -1,10 +1,9 @@
 #include "link_errors.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <regex>
-#include <sstream>
 
+#include "generate.hpp"
 #include "ports.hpp"
 
 namespace fs = std::filesystem;
@@ -12,18 +11,6 @@ namespace fs = std::filesystem;
 namespace openswarm {
 
 namespace {
-
-// A macro's value in the generated openswarm_config.h; 0 if it is not there.
-long generated_value(const fs::path &header, const std::string &macro) {
-    std::ifstream in(header);
-    std::string define, name;
-    long value = 0;
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream fields(line);
-        if (fields >> define >> name >> value && define == "#define" && name == macro) return value;
-    }
-    return 0;
-}
 
 // The thread stacks openswarm.json asks for, biggest first: "blinker 1250,
 // sensor 96".
@@ -39,8 +26,8 @@ std::string stacks_by_size(const AppConfig &config, unsigned default_stack) {
 
 std::string ram_explanation(long over, const AppConfig &config, const fs::path &generated) {
     const PortInfo &port = port_info(config.port);
-    long pool = generated_value(generated, "OS_CFG_STACK_POOL_BYTES");
-    long data = generated_value(generated, "OS_CFG_EVENT_DATA_BYTES");
+    auto values = generated_config_values(generated);
+    unsigned pool = values["OS_CFG_STACK_POOL_BYTES"], data = values["OS_CFG_EVENT_DATA_BYTES"];
     std::string owners = "the thread stack pool, " + std::to_string(pool) + " bytes";
     if (!config.threads.empty())
         owners += " (openswarm.json's \"stack\": " + stacks_by_size(config, port.default_stack) +
