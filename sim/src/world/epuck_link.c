@@ -1,37 +1,14 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 #include "world/epuck_link.h"
 
+#include "link_io.h" /* the robot's end has the same (ports/epuck/host) */
+
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-static int write_all(int fd, const void *data, size_t size) {
-    const char *p = data;
-    while (size > 0) {
-        ssize_t n = write(fd, p, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return -1;
-        p += n;
-        size -= (size_t)n;
-    }
-    return 0;
-}
-
-/* 0, or -1 at the end of the stream or an error. */
-static int read_all(int fd, void *data, size_t size) {
-    char *p = data;
-    while (size > 0) {
-        ssize_t n = read(fd, p, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return -1;
-        p += n;
-        size -= (size_t)n;
-    }
-    return 0;
-}
 
 /* Why the controller is gone, reaped. */
 static void report_gone(epuck_link *l, const char *doing) {
@@ -80,8 +57,8 @@ int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_wor
 
 int epuck_link_send(epuck_link *l, const epuck_world_input *in, const uint16_t *pixels) {
     size_t n_pixels = (size_t)in->frame_width * in->frame_height;
-    if (write_all(l->to, in, sizeof *in) != 0 ||
-        (n_pixels && write_all(l->to, pixels, n_pixels * sizeof *pixels) != 0)) {
+    if (!link_write(l->to, in, sizeof *in) ||
+        (n_pixels && !link_write(l->to, pixels, n_pixels * sizeof *pixels))) {
         report_gone(l, "taking its inputs");
         return -1;
     }
@@ -89,7 +66,7 @@ int epuck_link_send(epuck_link *l, const epuck_world_input *in, const uint16_t *
 }
 
 int epuck_link_receive(epuck_link *l, epuck_world_output *out) {
-    if (read_all(l->from, out, sizeof *out) != 0) {
+    if (link_read(l->from, out, sizeof *out) != sizeof *out) {
         report_gone(l, "running");
         return -1;
     }

@@ -13,9 +13,7 @@
 #include "openswarm/epuck_plain.h"
 #include "openswarm/epuck_world_link.h"
 
-#define MAX_FRAME_PIXELS (640u * 480u)
-
-static uint16_t pixels[MAX_FRAME_PIXELS];
+static uint16_t pixels[EPUCK_LINK_MAX_PIXELS];
 static epuck_camera_frame frame = {pixels, 0, 0};
 static int link_out;
 static uint32_t now_ms;
@@ -34,18 +32,13 @@ static void answer(void) {
 }
 
 static void read_input(epuck_world_input *in) {
-    if (link_read(STDIN_FILENO, in, sizeof *in) != sizeof *in) broken("the world's input ended");
-    if (in->magic != EPUCK_LINK_MAGIC) broken("an input without the link's magic");
-    size_t n = (size_t)in->frame_width * in->frame_height;
-    if (n > MAX_FRAME_PIXELS) broken("a frame larger than 640 x 480");
-    if (n && link_read(STDIN_FILENO, pixels, n * sizeof pixels[0]) != n * sizeof pixels[0])
-        broken("the world's input ended inside a frame");
+    const char *why = link_read_input(STDIN_FILENO, in, pixels);
+    if (why != NULL) broken(why);
 }
 
 void epuck_plain_start(void) {
-    /* The link keeps standard output; the program's printf goes to stderr. */
-    link_out = dup(STDOUT_FILENO);
-    if (link_out < 0 || dup2(STDERR_FILENO, STDOUT_FILENO) < 0) broken("cannot set up stdout");
+    link_out = link_take_stdout();
+    if (link_out < 0) broken("cannot set up stdout");
     answer(); /* time 0: up */
 }
 
@@ -60,7 +53,7 @@ const epuck_camera_frame *epuck_plain_wait_frame(void) {
             answer();
             exit(0);
         }
-        if (in.frame_width != 0) {
+        if (in.frame_width != 0 && in.frame_height != 0) {
             frame.width = in.frame_width;
             frame.height = in.frame_height;
             return &frame;

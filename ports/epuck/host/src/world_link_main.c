@@ -26,12 +26,11 @@ _Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the link is little-en
 _Static_assert(sizeof(epuck_world_input) == 48, "epuck_world_input has no padding");
 _Static_assert(sizeof(epuck_world_output) == 20, "epuck_world_output has no padding");
 
-#define MAX_FRAME_PIXELS (640u * 480u)
 /* Wall-clock time the robot gets to finish a step's work (handlers,
  * threads woken) before it answers: far more than any controller needs. */
 #define IDLE_TIMEOUT_MS 2000u
 
-static uint16_t frame[MAX_FRAME_PIXELS];
+static uint16_t frame[EPUCK_LINK_MAX_PIXELS];
 static int link_out; /* the original standard output */
 
 static void link_broken(const char *what, ...) __attribute__((format(printf, 1, 2), noreturn));
@@ -44,14 +43,6 @@ static void link_broken(const char *what, ...) {
     fputc('\n', stderr);
     va_end(args);
     exit(2);
-}
-
-/* The link keeps the original standard output; the app's printf goes to
- * standard error instead, where it cannot corrupt a message. */
-static void take_stdout(void) {
-    link_out = dup(STDOUT_FILENO);
-    if (link_out < 0 || dup2(STDERR_FILENO, STDOUT_FILENO) < 0) link_broken("cannot set up stdout");
-    setvbuf(stdout, NULL, _IOLBF, 0);
 }
 
 /* Let the robot finish what the step started. A thread that never blocks
@@ -72,25 +63,8 @@ static void answer(void) {
 }
 
 static void read_input(epuck_world_input *in) {
-    size_t got = link_read(STDIN_FILENO, in, sizeof *in);
-    if (got != sizeof *in)
-        link_broken("the input ended after %zu of an epuck_world_input's %zu bytes", got, sizeof *in);
-    if (in->magic != EPUCK_LINK_MAGIC)
-        link_broken("an input begins with 0x%08X, not the magic 0x%08X (\"EPK1\")",
-                    (unsigned)in->magic, (unsigned)EPUCK_LINK_MAGIC);
-}
-
-/* The frame's pixels, which follow the input; its size in pixels. */
-static size_t read_frame(const epuck_world_input *in) {
-    size_t pixels = (size_t)in->frame_width * in->frame_height;
-    if (pixels > MAX_FRAME_PIXELS)
-        link_broken("a frame of %u x %u pixels is larger than 640 x 480", in->frame_width,
-                    in->frame_height);
-    size_t got = link_read(STDIN_FILENO, frame, pixels * sizeof frame[0]);
-    if (got != pixels * sizeof frame[0])
-        link_broken("the input ended after %zu of a %u x %u frame's %zu bytes", got,
-                    in->frame_width, in->frame_height, pixels * sizeof frame[0]);
-    return pixels;
+    const char *why = link_read_input(STDIN_FILENO, in, frame);
+    if (why != NULL) link_broken("%s", why);
 }
 
 static void apply(const epuck_world_input *in) {
@@ -101,12 +75,13 @@ static void apply(const epuck_world_input *in) {
         memcpy(samples.pulsed, in->proximity_pulsed, sizeof samples.pulsed);
         board_world_deliver_proximity(&samples);
     }
-    if (in->frame_width != 0 && read_frame(in) != 0)
+    if (in->frame_width != 0 && in->frame_height != 0)
         board_world_deliver_frame(frame, in->frame_width, in->frame_height);
 }
 
 int main(void) {
-    take_stdout();
+    link_out = link_take_stdout();
+    if (link_out < 0) link_broken("cannot set up stdout");
     host_cpu_start_main(HOST_CLOCK_MANUAL, openswarm_robot_main);
     settle();
     answer(); /* time 0: the world knows the robot is up */
