@@ -52,9 +52,11 @@ static bool command_handler(sys_pid pid, sys_event_id event, const sys_event_dat
     return true;
 }
 
-static sys_status ensure_registered(sys_event_id event) {
-    if (Sys_IsEventRegistered(event)) return SYS_OK;
-    return Sys_Register_Event_Sized(event, OS_CFG_HAL_MAX_VALUE);
+/* Register event with room for any device value unless it is already;
+ * *made says whether this call registered it (to undo on a later failure). */
+static sys_status ensure_registered(sys_event_id event, bool *made) {
+    *made = !Sys_IsEventRegistered(event);
+    return *made ? Sys_Register_Event_Sized(event, OS_CFG_HAL_MAX_VALUE) : SYS_OK;
 }
 
 /* The event whose data an output or comm device writes out. */
@@ -85,11 +87,9 @@ static sys_status register_device(sys_device *dev) {
         os_count(&os.stats.device_table_full);
         return SYS_E_POOL_FULL;
     }
-    const bool comm = dev->kind == SYS_DEVICE_COMM;
-    const bool new_event = !Sys_IsEventRegistered(dev->event);
-    const bool new_tx = comm && !Sys_IsEventRegistered(dev->tx_event);
-    sys_status st = ensure_registered(dev->event);
-    if (st == SYS_OK && comm) st = ensure_registered(dev->tx_event);
+    bool new_event = false, new_tx = false;
+    sys_status st = ensure_registered(dev->event, &new_event);
+    if (st == SYS_OK && dev->kind == SYS_DEVICE_COMM) st = ensure_registered(dev->tx_event, &new_tx);
     if (st == SYS_OK && dev->kind != SYS_DEVICE_INPUT) {
         st = Sys_Subscribe_to_Event(command_event(dev), SYS_PID_SYSTEM, command_handler, NULL);
         if (st == SYS_E_EXISTS) st = SYS_OK;
