@@ -1,4 +1,6 @@
-/* Names of status codes, for logs and test failure messages. */
+/* Names of status codes and faults, for logs, consoles and test failure
+ * messages. */
+#include "openswarm/fault.h"
 #include "openswarm/types.h"
 
 const char *Sys_Status_Name(sys_status status) {
@@ -15,5 +17,15 @@ const char *Sys_Status_Name(sys_status status) {
     case SYS_E_TRUNCATED: return "SYS_E_TRUNCATED";
     case SYS_E_NOT_FOUND: return "SYS_E_NOT_FOUND";
     default: return "SYS_E_UNKNOWN";
+    }
+}
+
+const char *Sys_Fault_Name(uint8_t fault) {
+    switch (fault) {
+    case SYS_FAULT_STACK_OVERFLOW: return "stack overflow";
+    case SYS_FAULT_CRITICAL_LEAK: return "critical section left open";
+    case SYS_FAULT_CPU: return "CPU fault";
+    case SYS_FAULT_HANDLER_OVERRUN: return "an event handler ran past its limit";
+    default: return "fault";
     }
 }

@@ -150,3 +150,14 @@ TEST_F(Faults, AThreadWithinItsStackRaisesNoFault) {
     EXPECT_EQ(0, hook_calls.load());
     EXPECT_EQ(0u, stats().stack_overflows);
 }
+
+// The names the ports' consoles print ("kernel fault: stack overflow in
+// thread 3"), and one for what no fault is.
+TEST(FaultNames, EachFaultHasTheConsolesName) {
+    EXPECT_STREQ("stack overflow", Sys_Fault_Name(SYS_FAULT_STACK_OVERFLOW));
+    EXPECT_STREQ("critical section left open", Sys_Fault_Name(SYS_FAULT_CRITICAL_LEAK));
+    EXPECT_STREQ("CPU fault", Sys_Fault_Name(SYS_FAULT_CPU));
+    EXPECT_STREQ("an event handler ran past its limit", Sys_Fault_Name(SYS_FAULT_HANDLER_OVERRUN));
+    EXPECT_STREQ("fault", Sys_Fault_Name(0));
+    EXPECT_STREQ("fault", Sys_Fault_Name(200));
+}

@@ -20,6 +20,10 @@ typedef enum sys_fault {
                                      (reported once, with SYS_PID_SYSTEM; it runs on) */
 } sys_fault;
 
+/* A fault as a port's console names it: "stack overflow", ... ("fault" for
+ * a value it does not know). */
+const char *Sys_Fault_Name(uint8_t fault);
+
 /* Data of SYS_EVENT_FAULT. */
 typedef struct sys_fault_info {
     uint8_t fault; /* sys_fault */
