@@ -199,6 +199,12 @@ typedef struct robot {
 int firmware_check(const char *path);
 avr_t *firmware_load(const char *path);
 
+/* firmware_symbols.c: each(name (NULL if unreadable), value, size, type
+ * (STT_*), ctx) for every symbol of the ELF at path; -1 if it has none to
+ * read (a .hex). */
+typedef void (*firmware_symbol_fn)(const char *name, uint32_t value, uint32_t size, int type, void *ctx);
+int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx);
+
 /* main_stack.c: the main stack's worst use, from a pattern painted over
  * its room at load; report prints it (print) and says if it overflowed
  * (returns 1). */

@@ -7,10 +7,7 @@
  * firmware starts, the simulator paints the room between with a pattern;
  * at the end, the lowest byte that changed tells how deep the stack went
  * (a frame reserved deeper but never written would not show). */
-#include <fcntl.h>
-#include <gelf.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "sim.h"
 
@@ -18,39 +15,41 @@
 /* Data-space addresses in the ELF are offset by this (avr-libc's scripts). */
 #define AVR_DATA_OFFSET 0x800000u
 
-/* The value of symbol name in the ELF at path; 0 if it has none. */
-static uint32_t elf_symbol(const char *path, const char *name) {
-    elf_version(EV_CURRENT);
-    int fd = open(path, O_RDONLY);
-    Elf *elf = fd < 0 ? NULL : elf_begin(fd, ELF_C_READ, NULL);
-    uint32_t value = 0;
-    for (Elf_Scn *scn = NULL; elf != NULL && value == 0 && (scn = elf_nextscn(elf, scn)) != NULL;) {
-        GElf_Shdr shdr;
-        if (gelf_getshdr(scn, &shdr) == NULL || shdr.sh_type != SHT_SYMTAB) continue;
-        Elf_Data *data = elf_getdata(scn, NULL);
-        size_t n = shdr.sh_entsize ? shdr.sh_size / shdr.sh_entsize : 0;
-        for (size_t i = 0; i < n; i++) {
-            GElf_Sym sym;
-            if (gelf_getsym(data, (int)i, &sym) == NULL) continue;
-            const char *s = elf_strptr(elf, shdr.sh_link, sym.st_name);
-            if (s != NULL && strcmp(s, name) == 0) {
-                value = (uint32_t)sym.st_value;
-                break;
-            }
-        }
+/* What the paint needs of an image: where its RAM ends, and whether it
+ * has a heap in the same room. */
+typedef struct image_ram {
+    uint32_t end; /* _end, a data-space address; 0: none */
+    int has_malloc;
+} image_ram;
+
+static void note_symbol(const char *name, uint32_t value, uint32_t size, int type, void *ctx) {
+    (void)size;
+    (void)type;
+    image_ram *ram = ctx;
+    if (name == NULL) return;
+    if (strcmp(name, "_end") == 0 && ram->end == 0) ram->end = value;
+    if (strcmp(name, "malloc") == 0 && value != 0) ram->has_malloc = 1;
+}
+
+/* Read once per firmware file: robots that share one share the answer. */
+static image_ram ram_of(const char *elf_path) {
+    static const char *read_path;
+    static image_ram ram;
+    if (elf_path != read_path) {
+        ram = (image_ram){0, 0};
+        firmware_symbols(elf_path, note_symbol, &ram);
+        read_path = elf_path;
     }
-    if (elf != NULL) elf_end(elf);
-    if (fd >= 0) close(fd);
-    return value;
+    return ram;
 }
 
 void main_stack_paint(robot *r, const char *elf_path) {
     /* Unmeasured: a .hex (no symbols), or a firmware whose heap grows
      * into the same room (malloc). */
-    uint32_t end = elf_symbol(elf_path, "_end");
+    image_ram ram = ram_of(elf_path);
+    uint32_t end = ram.end;
     r->main_stack_floor = 0;
-    if (end < AVR_DATA_OFFSET || end - AVR_DATA_OFFSET > r->avr->ramend) return;
-    if (elf_symbol(elf_path, "malloc") != 0) return;
+    if (end < AVR_DATA_OFFSET || end - AVR_DATA_OFFSET > r->avr->ramend || ram.has_malloc) return;
     r->main_stack_floor = (uint16_t)(end - AVR_DATA_OFFSET);
     memset(r->avr->data + r->main_stack_floor, PAINT, r->avr->ramend + 1u - r->main_stack_floor);
 }

@@ -3,11 +3,9 @@
  * cycles (an interrupt's entry included) are charged to the function that
  * holds it, found in the ELF's symbol table; cycles spent asleep are
  * counted apart. The table is printed when the run ends. */
-#include <fcntl.h>
 #include <gelf.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "sim.h"
 
@@ -33,41 +31,30 @@ static int by_cycles(const void *a, const void *b) {
     return x->cycles > y->cycles ? -1 : x->cycles < y->cycles;
 }
 
-static void add_symbols(Elf *elf, Elf_Scn *scn, const GElf_Shdr *shdr) {
-    Elf_Data *data = elf_getdata(scn, NULL);
-    size_t n = shdr->sh_entsize ? shdr->sh_size / shdr->sh_entsize : 0;
-    function *grown = realloc(functions, (n_functions + n) * sizeof *functions);
-    if (grown == NULL) return;
-    functions = grown;
-    for (size_t i = 0; i < n; i++) {
-        GElf_Sym sym;
-        if (gelf_getsym(data, (int)i, &sym) == NULL) continue;
-        int type = GELF_ST_TYPE(sym.st_info); /* assembly routines are often untyped */
-        if ((type != STT_FUNC && type != STT_NOTYPE) || sym.st_size == 0) continue;
-        const char *name = elf_strptr(elf, shdr->sh_link, sym.st_name);
-        function *f = &functions[n_functions++];
-        f->start = (uint32_t)sym.st_value;
-        f->end = (uint32_t)(sym.st_value + sym.st_size);
-        f->name = strdup(name != NULL ? name : "?");
-        f->cycles = 0;
+static size_t room;
+
+static void add_function(const char *name, uint32_t value, uint32_t size, int type, void *ctx) {
+    (void)ctx;
+    if ((type != STT_FUNC && type != STT_NOTYPE) || size == 0) return; /* asm routines are often untyped */
+    if (n_functions == room) {
+        size_t more = room ? 2 * room : 256;
+        function *grown = realloc(functions, more * sizeof *functions);
+        if (grown == NULL) return;
+        functions = grown;
+        room = more;
     }
+    function *f = &functions[n_functions++];
+    f->start = value;
+    f->end = value + size;
+    f->name = strdup(name != NULL ? name : "?");
+    f->cycles = 0;
 }
 
 int profile_load(const char *path) {
-    elf_version(EV_CURRENT);
-    int fd = open(path, O_RDONLY);
-    Elf *elf = fd < 0 ? NULL : elf_begin(fd, ELF_C_READ, NULL);
-    if (elf == NULL) {
+    if (firmware_symbols(path, add_function, NULL) != 0) {
         fprintf(stderr, "openswarm-sim: --profile: cannot read the symbols of %s\n", path);
-        if (fd >= 0) close(fd);
         return -1;
     }
-    for (Elf_Scn *scn = NULL; (scn = elf_nextscn(elf, scn)) != NULL;) {
-        GElf_Shdr shdr;
-        if (gelf_getshdr(scn, &shdr) != NULL && shdr.sh_type == SHT_SYMTAB) add_symbols(elf, scn, &shdr);
-    }
-    elf_end(elf);
-    close(fd);
     qsort(functions, n_functions, sizeof *functions, by_start);
     return 0;
 }
