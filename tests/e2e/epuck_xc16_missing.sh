@@ -11,21 +11,7 @@ if command -v xc16-gcc >/dev/null; then
     exit 77
 fi
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-passed=0 failed=0
-check() { # check DESCRIPTION EXPECTED_STATUS REGEX COMMAND...
-    local what=$1 status=$2 regex=$3
-    shift 3
-    local out
-    out=$("$@" 2>&1)
-    local got=$?
-    if [ "$got" -eq "$status" ] && printf '%s' "$out" | grep -Ezq -- "$regex"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAILED: $what: exit $got (expected $status):"
-        printf '%s\n' "$out"
-    fi
-}
+source "$(dirname "$0")/check.sh"
 install="install Microchip XC16 from https://www.microchip.com/xc16 \(it is not in Debian\)"
 check "ports lists epuck" 0 \
     "epuck +e-puck: dsPIC30F6014A at 14.7456 MIPS; needs Microchip XC16, not in Debian: build only, no simulator" \

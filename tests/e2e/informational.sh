@@ -4,21 +4,7 @@
 set -uo pipefail
 openswarm=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-passed=0 failed=0
-check() { # check DESCRIPTION EXPECTED_STATUS REGEX COMMAND...
-    local what=$1 status=$2 regex=$3
-    shift 3
-    local out
-    out=$("$@" 2>&1)
-    local got=$?
-    if [ "$got" -eq "$status" ] && printf '%s' "$out" | grep -Ezq -- "$regex"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAILED: $what: exit $got (expected $status):"
-        printf '%s\n' "$out"
-    fi
-}
+source "$(dirname "$0")/check.sh"
 check "version" 0 "openswarm [0-9]+\.[0-9]+\.[0-9]+" "$openswarm" --version
 check "help names every command" 0 "new.*build.*run.*ports.*templates.*config.*doctor" "$openswarm" --help
 check "help of a command" 0 "--template" "$openswarm" new --help

@@ -1,0 +1,19 @@
+# Sourced by e2e scripts: check DESCRIPTION EXPECTED_STATUS REGEX COMMAND...
+# runs COMMAND and counts it in passed or failed: its exit status must be
+# EXPECTED_STATUS and its output (standard output and error) match REGEX
+# (grep -E, across lines); a failure prints what came instead.
+passed=0 failed=0
+check() {
+    local what=$1 status=$2 regex=$3
+    shift 3
+    local out
+    out=$("$@" 2>&1)
+    local got=$?
+    if [ "$got" -eq "$status" ] && printf '%s' "$out" | grep -Ezq -- "$regex"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAILED: $what: exit $got (expected $status):"
+        printf '%s\n' "$out"
+    fi
+}
