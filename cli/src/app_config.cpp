@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
-#include <regex>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "json_checks.hpp"
+#include "names.hpp"
 #include "ports.hpp"
 #include "suggest.hpp"
 
@@ -15,23 +19,42 @@ using nlohmann::json;
 
 namespace openswarm {
 
+namespace {
+
+bool continues_character(char c) { return ((unsigned char)c & 0xC0u) == 0x80u; }
+
+// Characters (not bytes) in text[from, to): where the caret goes.
+size_t characters(const std::string &text, size_t from, size_t to) {
+    size_t n = 0;
+    for (size_t i = from; i < to; i++) n += continues_character(text[i]) ? 0 : 1;
+    return n;
+}
+
+}  // namespace
+
+// The line with the place marked: at most 60 bytes either side of it, cut
+// between UTF-8 characters (a 1 MB line is not echoed whole).
 std::string located_message(const fs::path &file, const std::string &text, size_t byte,
                             const std::string &message) {
+    constexpr size_t context = 60;
+    byte = std::min(byte, text.size());
     size_t line = 1, line_start = 0;
-    for (size_t i = 0; i < byte && i < text.size(); i++) {
+    for (size_t i = 0; i < byte; i++) {
         if (text[i] == '\n') {
             line++;
             line_start = i + 1;
         }
     }
-    size_t line_end = text.find('\n', line_start);
-    std::string source = text.substr(line_start, line_end == std::string::npos ? std::string::npos
-                                                                                : line_end - line_start);
-    size_t column = byte >= line_start ? byte - line_start + 1 : 1;
+    size_t line_end = std::min(text.find('\n', line_start), text.size());
+    size_t from = byte - line_start > context ? byte - context : line_start;
+    while (from > line_start && continues_character(text[from])) from--;
+    size_t to = line_end - byte > context ? byte + context : line_end;
+    while (to < line_end && continues_character(text[to])) to++;
     std::ostringstream out;
-    out << file.string() << ":" << line << ":" << column << ": " << message << "\n"
-        << "    " << source << "\n"
-        << "    " << std::string(column > 0 ? column - 1 : 0, ' ') << "^";
+    out << file.string() << ":" << line << ":" << characters(text, line_start, byte) + 1 << ": " << message
+        << "\n    " << (from > line_start ? "..." : "") << text.substr(from, to - from)
+        << (to < line_end ? "..." : "") << "\n    "
+        << std::string((from > line_start ? 3 : 0) + characters(text, from, byte), ' ') << "^";
     return out.str();
 }
 
@@ -69,8 +92,7 @@ const std::map<std::string, unsigned> payload_types = {
 
 std::string identifier_at(const fs::path &file, const std::string &path, const json &v) {
     std::string id = string_at(file, path, v, "a C identifier");
-    if (!std::regex_match(id, std::regex("[A-Za-z_][A-Za-z0-9_]*")))
-        fail(file, path, "\"" + id + "\" is not a C identifier (letters, digits, _)");
+    if (!is_c_identifier(id)) fail(file, path, quoted_start(id) + " is not a C identifier (letters, digits, _)");
     return id;
 }
 
@@ -107,6 +129,7 @@ std::string upper_case(std::string s) {
 
 void load_events(const fs::path &file, const json &list, AppConfig &c) {
     if (!list.is_array()) fail(file, "events", "expected a list [ {\"name\": ...}, ... ], found " + found(list));
+    std::map<std::string, std::string> macros; // EV_ name -> the name that made it
     for (size_t i = 0; i < list.size(); i++) {
         std::string path = "events[" + std::to_string(i) + "]";
         const json &e = list[i];
@@ -114,12 +137,12 @@ void load_events(const fs::path &file, const json &list, AppConfig &c) {
         check_keys(file, path, e, {"name", "type", "size"});
         EventConfig ev;
         ev.name = identifier_at(file, path + ".name", require(file, e, "name", path));
-        for (const auto &other : c.events)
-            if (upper_case(other.name) == upper_case(ev.name))
-                fail(file, path + ".name",
-                     "\"" + ev.name + "\" is declared twice" +
-                         (other.name == ev.name ? "" : " (as \"" + other.name + "\": both would be EV_" +
-                                                           upper_case(ev.name) + ")"));
+        auto [other, fresh] = macros.emplace(upper_case(ev.name), ev.name);
+        if (!fresh)
+            fail(file, path + ".name",
+                 "\"" + ev.name + "\" is declared twice" +
+                     (other->second == ev.name ? "" : " (as \"" + other->second + "\": both would be EV_" +
+                                                          other->first + ")"));
         if (e.contains("type") && e.contains("size")) fail(file, path, "give \"type\" or \"size\", not both");
         if (e.contains("type")) {
             std::string t = string_at(file, path + ".type", e["type"], "a payload type");
@@ -131,6 +154,7 @@ void load_events(const fs::path &file, const json &list, AppConfig &c) {
                          did_you_mean(t, names));
             }
             ev.size = it->second;
+            ev.type = t;
         } else if (e.contains("size")) {
             ev.size = (unsigned)number_at(file, path + ".size", e["size"], 0, 253);
         }
@@ -140,6 +164,7 @@ void load_events(const fs::path &file, const json &list, AppConfig &c) {
 
 void load_threads(const fs::path &file, const json &list, AppConfig &c) {
     if (!list.is_array()) fail(file, "threads", "expected a list [ {\"entry\": ...}, ... ], found " + found(list));
+    std::set<std::string> entries;
     for (size_t i = 0; i < list.size(); i++) {
         std::string path = "threads[" + std::to_string(i) + "]";
         const json &t = list[i];
@@ -147,9 +172,8 @@ void load_threads(const fs::path &file, const json &list, AppConfig &c) {
         check_keys(file, path, t, {"entry", "stack", "priority"});
         ThreadConfig th;
         th.entry = identifier_at(file, path + ".entry", require(file, t, "entry", path));
-        for (const auto &other : c.threads)
-            if (other.entry == th.entry)
-                fail(file, path + ".entry", "\"" + th.entry + "\" starts two threads: each thread's entry "
+        if (!entries.insert(th.entry).second)
+            fail(file, path + ".entry", "\"" + th.entry + "\" starts two threads: each thread's entry "
                      "is a function of its own (two threads running one loop: write two functions "
                      "that call it)");
         if (t.contains("stack")) th.stack = (unsigned)number_at(file, path + ".stack", t["stack"], 16, 4096);
@@ -252,11 +276,18 @@ bool is_kernel_switch(const std::string &key) {
 AppConfig load_app_config(const fs::path &dir) {
     AppConfig config;
     config.file = dir / "openswarm.json";
-    std::ifstream in(config.file);
-    if (!in)
+    std::error_code error;
+    if (fs::is_directory(config.file, error))
+        throw ConfigError(config.file.string() + ": a folder, not a file; the app's configuration is a JSON "
+                          "file of that name (move the folder away; `openswarm new` shows one)");
+    if (!fs::exists(config.file, error))
         throw ConfigError(config.file.string() +
                           ": not found; run this in an app folder, or make one with "
                           "`openswarm new NAME --template blinky`");
+    std::ifstream in(config.file);
+    if (!in)
+        throw ConfigError(config.file.string() + ": cannot be read (" + std::strerror(errno) +
+                          "); check its permissions");
     std::stringstream buffer;
     buffer << in.rdbuf();
     std::string text = buffer.str();
@@ -265,9 +296,13 @@ AppConfig load_app_config(const fs::path &dir) {
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
     check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices"});
     config.name = string_at(file, "name", require(file, doc, "name"), "the app's name");
-    if (!std::regex_match(config.name, std::regex(app_name_pattern)))
-        fail(file, "name", "\"" + config.name + "\" is not a usable app name: letters, digits, - "
-                           "and _, starting with a letter (it names the image file)");
+    if (!is_app_name(config.name))
+        fail(file, "name", quoted_start(config.name) + " is not a usable app name: letters, digits, - and _, "
+                           "starting with a letter, at most " + std::to_string(app_name_max) +
+                           " characters (it names the image file)");
+    if (!taken_app_name(config.name).empty())
+        fail(file, "name", "\"" + config.name + "\" cannot name an app: " + taken_app_name(config.name) +
+                               "; choose another name");
     config.port = string_at(file, "port", require(file, doc, "port"), "a port name");
     if (!is_port(config.port)) {
         fail(file, "port", "unknown port \"" + config.port + "\"; known: " + join(port_names()) +

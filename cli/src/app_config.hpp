@@ -20,6 +20,7 @@ struct ConfigError : std::runtime_error {
 struct EventConfig {
     std::string name;  // C identifier; the app uses EV_<NAME>
     unsigned size = 0; // bytes of data
+    std::string type;  // "uint16", ...: openswarm.json's "type"; "" when it gave "size"
 };
 
 struct ThreadConfig {
@@ -46,10 +47,6 @@ struct AppConfig {
     std::vector<ThreadConfig> threads;
     std::vector<DeviceConfig> devices; // processors chosen in openswarm.json
 };
-
-// An app's name: it names the folder, the CMake project and the image
-// (my-robot.elf), never a C symbol, so hyphens are fine.
-constexpr const char *app_name_pattern = "[A-Za-z][A-Za-z0-9_-]*";
 
 // The guard pattern at the bottom of every thread stack while the kernel's
 // stack check is on (OS_STACK_GUARD_BYTES, kernel/src/kernel_internal.h):

@@ -11,27 +11,6 @@ namespace openswarm {
 
 namespace {
 
-// What the RAM accounting needs to know of a port beyond ports.hpp.
-struct PortCosts {
-    const char *port;
-    unsigned stack_extra; // PORT_STACK_EXTRA, added to every stack (port_arch.h)
-    // Equation (1)'s measured terms (bench/avr_bench.py, docs/benchmarks.md):
-    // the minimal kernel (the system thread, 6 event slots, 1 subscription,
-    // a 16-byte queue), a thread's control block, an event slot.
-    unsigned fixed, per_thread, per_event;
-};
-
-const PortCosts &costs_of(const std::string &port) {
-    static const std::vector<PortCosts> all = {
-        {"kilobot", 64, /* C */ 154, /* per thread */ 12, /* per event */ 4},
-        // bench/qemu_bench.py
-        {"epuck2", 384, /* C */ 208, /* per thread */ 24, /* per event */ 8},
-    };
-    for (const auto &c : all)
-        if (c.port == port) return c;
-    throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp: add them");
-}
-
 unsigned value_or(const std::map<std::string, unsigned> &values, const std::string &macro,
                   unsigned port_default) {
     auto it = values.find(macro);

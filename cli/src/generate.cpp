@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include "app_limits.hpp"
 #include "ports.hpp"
 #include "suggest.hpp"
 
@@ -99,6 +101,7 @@ void check_event_pools(const AppConfig &c, const PortInfo &port) {
 }
 
 std::string config_header(const AppConfig &c, const PortInfo &port, const Libraries &libraries) {
+    check_app_limits(c, port, libraries);
     check_event_pools(c, port);
     std::map<std::string, long> values = c.kernel;
     // Room for what the app declares, where the file leaves the size open.
@@ -122,7 +125,12 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
         check_given_at_least(c, "stack_pool", pool,
                              "the stacks of " + threads_starting(c, libraries) + ", as the pool carves them,");
         if (!values.count("stack_pool")) values["stack_pool"] = pool;
+        std::map<std::string, long> pools = values; // the port's own sizes where the app sets none
+        pools.emplace("max_events", port.default_max_events);
+        pools.emplace("event_data", port.device_event_bytes);
+        check_declared_ram(c, port, pools);
     }
+    check_stack_pool_blocks(c, port);
     std::ostringstream h;
     h << banner << "#ifndef OPENSWARM_APP_CONFIG_H\n#define OPENSWARM_APP_CONFIG_H\n\n";
     for (const auto &[key, macro] : kernel_setting_macros()) {
@@ -134,16 +142,45 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
     return h.str();
 }
 
+// The C++ type of an event's data: openswarm.json's type, or its bytes.
+std::string cpp_event_type(const EventConfig &e) {
+    static const std::map<std::string, std::string> types = {
+        {"none", "void"},       {"int8", "int8_t"},   {"uint8", "uint8_t"},   {"int16", "int16_t"},
+        {"uint16", "uint16_t"}, {"int32", "int32_t"}, {"uint32", "uint32_t"},
+    };
+    if (!e.type.empty()) return types.at(e.type);
+    return e.size == 0 ? "void" : "openswarm::Bytes<" + std::to_string(e.size) + ">";
+}
+
+// C and C++ both include it: the declarations keep C linkage, so a thread
+// entry defined in a .cpp file is the function the start-up code calls;
+// C++ also gets each event as a typed openswarm::Event.
 std::string app_header(const AppConfig &c) {
     std::ostringstream h;
     h << banner << "#ifndef OPENSWARM_APP_H\n#define OPENSWARM_APP_H\n\n#include \"openswarm/kernel.h\"\n\n";
     for (size_t i = 0; i < c.events.size(); i++)
         h << "#define EV_" << upper(c.events[i].name) << " ((sys_event_id)(SYS_EVENT_FIRST_FREE + " << i
           << ")) /* " << c.events[i].size << " bytes */\n";
-    h << "\n/* Registers the events, installs the device processors and starts the\n"
+    h << "\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n";
+    if (!c.threads.empty()) {
+        h << "/* The threads' entries, defined by the app. */\n";
+        for (const auto &t : c.threads) h << "void " << t.entry << "(void);\n";
+        h << "\n";
+    }
+    h << "/* Registers the events, installs the device processors and starts the\n"
          " * threads openswarm.json declares; call it between the port's device set-up\n"
-         " * (kilobot_devices_init) and Sys_Start_Kernel. */\n"
-         "sys_status openswarm_app_start(void);\n\n#endif\n";
+         " * (robot_devices_init) and Sys_Start_Kernel. */\n"
+         "sys_status openswarm_app_start(void);\n\n#ifdef __cplusplus\n}\n";
+    if (!c.events.empty()) {
+        h << "\n#include \"openswarm/openswarm.hpp\"\n\n"
+             "/* The events with the data types openswarm.json declares: sending,\n"
+             " * waiting for or handling another type does not compile. */\n"
+             "namespace openswarm {\nnamespace events {\n";
+        for (const auto &e : c.events)
+            h << "constexpr Event<" << cpp_event_type(e) << "> " << e.name << "{EV_" << upper(e.name) << "};\n";
+        h << "}  // namespace events\n}  // namespace openswarm\n";
+    }
+    h << "#endif\n\n#endif\n";
     return h.str();
 }
 
@@ -192,7 +229,7 @@ std::string app_source(const AppConfig &c) {
         if (!p.c_params_type.empty()) s << processor_params(d, p);
     }
     for (const auto &t : c.threads)
-        s << "void " << t.entry << "(void);\nstatic void start_" << t.entry << "(void *arg) {\n    (void)arg;\n    "
+        s << "static void start_" << t.entry << "(void *arg) {\n    (void)arg;\n    "
           << t.entry << "();\n}\n\n";
     s << "sys_status openswarm_app_start(void) {\n    sys_status st = SYS_OK;\n";
     if (names_to_simulator) s << "    sys_pid pid = SYS_PID_NONE;\n";
@@ -217,6 +254,11 @@ std::string app_source(const AppConfig &c) {
 }
 
 }  // namespace
+
+void check_app_files(const AppConfig &config, const Libraries &libraries) {
+    config_header(config, port_info(config.port), libraries);
+    app_source(config);
+}
 
 void generate_app_files(const AppConfig &config, const Libraries &libraries, const fs::path &out_dir) {
     const PortInfo &port = port_info(config.port);

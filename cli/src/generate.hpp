@@ -19,6 +19,9 @@ namespace openswarm {
 void generate_app_files(const AppConfig &config, const Libraries &libraries,
                         const std::filesystem::path &out_dir);
 
+// Everything generate_app_files checks, without writing: `config check`.
+void check_app_files(const AppConfig &config, const Libraries &libraries);
+
 // The OS_CFG_* values a generated openswarm_config.h sets (empty if it
 // cannot be read); the port's defaults hold for the others.
 std::map<std::string, unsigned> generated_config_values(const std::filesystem::path &header);

@@ -14,11 +14,16 @@ namespace openswarm {
     throw ConfigError(file.string() + ": " + (path.empty() ? "" : "\"" + path + "\": ") + message);
 }
 
-std::string found(const json &v) {
-    std::string text = v.dump();
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return std::string(v.type_name()) + " " + text;
+std::string text_start(const std::string &text, size_t bytes) {
+    if (text.size() <= bytes) return text;
+    size_t cut = bytes;
+    while (cut > 0 && ((unsigned char)text[cut] & 0xC0u) == 0x80u) cut--; // not inside a character
+    return text.substr(0, cut) + "...";
 }
+
+std::string quoted_start(const std::string &text) { return "\"" + text_start(text, 40) + "\""; }
+
+std::string found(const json &v) { return std::string(v.type_name()) + " " + text_start(v.dump(), 37); }
 
 void check_keys(const fs::path &file, const std::string &path, const json &object,
                 const std::vector<std::string> &allowed) {
@@ -50,7 +55,42 @@ long number_at(const fs::path &file, const std::string &path, const json &v, lon
     return v.get<long>();
 }
 
+namespace {
+
+// The first byte nested deeper than max_depth (outside strings), or npos:
+// the checks print and copy values recursively, and no file we read needs
+// more than a few levels.
+size_t too_deep(const std::string &text, size_t max_depth) {
+    size_t depth = 0;
+    bool in_string = false, escaped = false;
+    for (size_t i = 0; i < text.size(); i++) {
+        char c = text[i];
+        if (in_string) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max_depth) return i;
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            depth--;
+        }
+    }
+    return std::string::npos;
+}
+
+}  // namespace
+
 json parse_json_file(const fs::path &file, const std::string &text) {
+    size_t nul = text.find('\0');
+    if (nul != std::string::npos)
+        throw ConfigError(located_message(file, text, nul, "a NUL byte: a JSON file is text; "
+                                                           "remove it (and whatever was written after it)"));
+    size_t deep = too_deep(text, max_json_depth);
+    if (deep != std::string::npos)
+        throw ConfigError(located_message(file, text, deep, "nested more than " + std::to_string(max_json_depth) +
+                                                                " levels deep; the file needs a few at most"));
     try {
         return json::parse(text);
     } catch (const json::parse_error &e) {

@@ -19,6 +19,13 @@ nlohmann::json parse_json_file(const std::filesystem::path &file, const std::str
 
 [[noreturn]] void fail(const std::filesystem::path &file, const std::string &path,
                        const std::string &message);
+// JSON nested deeper is refused before it is parsed.
+constexpr size_t max_json_depth = 64;
+
+// At most bytes of text, cut between UTF-8 characters, "..." if cut.
+std::string text_start(const std::string &text, size_t bytes);
+// A user's string in a message: quoted, at most 40 bytes of it.
+std::string quoted_start(const std::string &text);
 // A value as the message shows it: its type and (the start of) its text.
 std::string found(const nlohmann::json &v);
 // Only these keys; another gets "did you mean".

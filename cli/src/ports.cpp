@@ -117,4 +117,22 @@ const PortInfo &port_info(const std::string &name) {
     throw std::out_of_range(name);
 }
 
+const PortCosts *costs_for(const std::string &port) {
+    static const std::vector<PortCosts> all = {
+        {"kilobot", 64, /* C */ 154, /* per thread */ 12, /* per event */ 4, /* devices */ 169},
+        // bench/qemu_bench.py; its devices not measured (0 keeps the RAM
+        // check a lower bound; 192 KB leave room)
+        {"epuck2", 384, /* C */ 208, /* per thread */ 24, /* per event */ 8, /* devices */ 0},
+    };
+    for (const auto &c : all)
+        if (c.port == port) return &c;
+    return nullptr;
+}
+
+const PortCosts &costs_of(const std::string &port) {
+    const PortCosts *costs = costs_for(port);
+    if (costs == nullptr) throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp: add them");
+    return *costs;
+}
+
 }  // namespace openswarm

@@ -89,4 +89,24 @@ std::vector<std::string> port_names();
 bool is_port(const std::string &name);
 const PortInfo &port_info(const std::string &name);
 
+// What the RAM accounting (openswarm size, the configuration's RAM check)
+// needs to know of a port: measured costs.
+struct PortCosts {
+    const char *port;
+    unsigned stack_extra; // PORT_STACK_EXTRA, added to every stack (port_arch.h)
+    // Equation (1)'s measured terms (bench/avr_bench.py, docs/benchmarks.md):
+    // the minimal kernel (the system thread, 6 event slots, 1 subscription,
+    // a 16-byte queue), a thread's control block, an event slot.
+    unsigned fixed, per_thread, per_event;
+    // Beyond equation (1) in an app with the port's default pools: the
+    // devices' state, the port's longer queue and its subscriptions
+    // (openswarm size's "the rest" on the blinky template).
+    unsigned devices;
+};
+
+// A port's costs: nullptr for a port without them (the host's, XC16's).
+const PortCosts *costs_for(const std::string &port);
+// The same, a logic_error for a port without them.
+const PortCosts &costs_of(const std::string &port);
+
 }  // namespace openswarm

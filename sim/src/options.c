@@ -134,12 +134,16 @@ static int percentage(const char *option, const char *text, double max, const ch
     return 0;
 }
 
+#define MAX_SECONDS 1000000 /* 11.6 days of robot time: 8e12 cycles, far from 64 bits' end */
+
 static int parse_time(const char *text, options *o) {
     char *end;
     o->seconds = strtod(text, &end);
     if (*end == 's') end++;
-    if (*end != '\0' || o->seconds <= 0) {
-        fprintf(stderr, "openswarm-sim: --time '%s': expected seconds, e.g. --time 2.5\n", text);
+    /* !(a && b): NaN fails both (it never ended); inf and 3e12 ran in no time. */
+    if (*end != '\0' || !(o->seconds > 0 && o->seconds <= MAX_SECONDS)) {
+        fprintf(stderr, "openswarm-sim: --time '%s': expected seconds, more than 0 and at most %d, e.g. --time 2.5\n",
+                text, MAX_SECONDS);
         return -1;
     }
     return 0;
@@ -300,6 +304,13 @@ int options_check_robots(options *o) {
         fprintf(stderr, "openswarm-sim: --gdb and --vcd follow one robot: drop --robots (or "
                         "use a world of one robot)\n");
         return -1;
+    }
+    for (int i = 0; i < o->n_ohc; i++) {
+        if (o->ohc[i].seconds > o->seconds) {
+            fprintf(stderr, "openswarm-sim: --ohc at %g s: after the end of the run (--time %g); give a time "
+                            "within it, or a longer --time\n", o->ohc[i].seconds, o->seconds);
+            return -1;
+        }
     }
     if (o->robots > 1 && o->uid < 0) o->uid = 1;
     if (o->uid >= 0 && o->uid + o->robots - 1 > 65535) {

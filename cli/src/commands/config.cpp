@@ -3,6 +3,8 @@
 #include <cctype>
 
 #include "../app_config.hpp"
+#include "../app_sources.hpp"
+#include "../generate.hpp"
 #include "../ports.hpp"
 #include "commands.hpp"
 
@@ -20,6 +22,8 @@ void add_config_command(CLI::App &app, const Paths &) {
         sub->callback([dir, show] {
             try {
                 AppConfig c = load_app_config(*dir);
+                // What the build would refuse (pools, limits, names) is refused here.
+                check_app_files(c, libraries_used(*dir, port_info(c.port)));
                 if (show) {
                     const PortInfo &p = port_info(c.port);
                     std::printf("name  %s\nport  %s (%s)\nimage build/%s/%s.elf\n", c.name.c_str(),

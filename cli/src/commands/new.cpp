@@ -1,9 +1,10 @@
 // openswarm new NAME --template T --port P: scaffold an app folder.
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "../app_config.hpp"
+#include "../json_checks.hpp"
+#include "../names.hpp"
 #include "../ports.hpp"
 #include "../suggest.hpp"
 #include "../templates.hpp"
@@ -56,10 +57,64 @@ const TemplateInfo *find_template(const std::vector<TemplateInfo> &all, const st
     return nullptr;
 }
 
+// Build the app beside its final place and move it in at the end, so a
+// failure leaves nothing half-made; an app it replaces (--force) is moved
+// aside first and removed only once the new one is in place, so a folder
+// that cannot be removed loses nothing.
+int place_app(const TemplateInfo &t, const NewOptions &o, const fs::path &dir) {
+    fs::path staging = fs::path(o.parent) / ("." + o.name + ".openswarm-new");
+    fs::path old = fs::path(o.parent) / ("." + o.name + ".openswarm-old");
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    try {
+        fs::create_directory(staging);
+        copy_template(t, staging, o);
+    } catch (const std::exception &e) {
+        fs::remove_all(staging, ec);
+        report(std::string("could not create ") + dir.string() + ": " + e.what() +
+               "; check that the folder is writable");
+        return EXIT_FAILED;
+    }
+    bool replacing = fs::exists(dir, ec);
+    if (replacing) {
+        fs::remove_all(old, ec);
+        fs::rename(dir, old, ec);
+        if (ec) {
+            fs::remove_all(staging, ec);
+            report("could not replace " + dir.string() + " (" + ec.message() + "); it is as it was");
+            return EXIT_FAILED;
+        }
+    }
+    fs::rename(staging, dir, ec);
+    if (ec) {
+        std::error_code back;
+        if (replacing) fs::rename(old, dir, back);
+        fs::remove_all(staging, back);
+        report("could not create " + dir.string() + " (" + ec.message() + ")" +
+               (replacing ? "; the old app is back in place" : ""));
+        return EXIT_FAILED;
+    }
+    if (replacing && (fs::remove_all(old, ec), ec))
+        std::fprintf(stderr, "openswarm: warning: the replaced app is kept in %s (%s); remove it yourself\n",
+                     old.string().c_str(), ec.message().c_str());
+    // A port nothing here runs is built, then flashed to the robot.
+    Runner runner = port_info(o.port).runner;
+    const char *next = runner == Runner::none    ? ""
+                       : runner == Runner::world ? " && openswarm run --world WORLD.json"
+                                                 : " && openswarm run";
+    std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build%s\n",
+                dir.string().c_str(), t.name.c_str(), o.port.c_str(), dir.string().c_str(), next);
+    return EXIT_OK;
+}
+
 int run_new(NewOptions o, const Paths &paths) {
-    if (!std::regex_match(o.name, std::regex(app_name_pattern))) {
-        report("'" + o.name + "' is not a usable app name: use letters, digits, - and _ "
-               "(starting with a letter), e.g. `openswarm new my-robot`");
+    if (!is_app_name(o.name)) {
+        report(quoted_start(o.name) + " is not a usable app name: use letters, digits, - and _ (starting with a "
+               "letter, at most " + std::to_string(app_name_max) + " characters), e.g. `openswarm new my-robot`");
+        return EXIT_USAGE;
+    }
+    if (!taken_app_name(o.name).empty()) {
+        report("\"" + o.name + "\" cannot name an app: " + taken_app_name(o.name) + "; choose another name");
         return EXIT_USAGE;
     }
     auto all = list_templates(paths.templates());
@@ -83,35 +138,18 @@ int run_new(NewOptions o, const Paths &paths) {
                "'; it builds for: " + join(t->ports));
         return EXIT_USAGE;
     }
+    std::error_code ec;
+    if (!fs::is_directory(o.parent, ec)) {
+        report("-C " + o.parent + ": no such folder; create it first (mkdir -p " + o.parent +
+               "), or leave -C out to create the app here");
+        return EXIT_USAGE;
+    }
     fs::path dir = fs::path(o.parent) / o.name;
     if (fs::exists(dir) && !o.force) {
         report(dir.string() + " already exists; pick another name, or pass --force to replace it");
         return EXIT_USAGE;
     }
-    // Build the app beside its final place and move it in at the end, so a
-    // failure leaves nothing half-made.
-    fs::path staging = fs::path(o.parent) / ("." + o.name + ".openswarm-new");
-    std::error_code ec;
-    fs::remove_all(staging, ec);
-    try {
-        fs::create_directories(staging);
-        copy_template(*t, staging, o);
-        if (fs::exists(dir)) fs::remove_all(dir);
-        fs::rename(staging, dir);
-    } catch (const std::exception &e) {
-        fs::remove_all(staging, ec);
-        report(std::string("could not create ") + dir.string() + ": " + e.what() +
-               "; check that the folder is writable");
-        return EXIT_FAILED;
-    }
-    // A port nothing here runs is built, then flashed to the robot.
-    Runner runner = port_info(o.port).runner;
-    const char *next = runner == Runner::none    ? ""
-                       : runner == Runner::world ? " && openswarm run --world WORLD.json"
-                                                 : " && openswarm run";
-    std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build%s\n",
-                dir.string().c_str(), t->name.c_str(), o.port.c_str(), dir.string().c_str(), next);
-    return EXIT_OK;
+    return place_app(*t, o, dir);
 }
 
 }  // namespace

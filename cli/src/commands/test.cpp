@@ -9,6 +9,7 @@
 // print, in that order (others may come between). `test --record NAME`
 // writes such a file from a run.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include <sstream>
 
 #include "../app_config.hpp"
+#include "../json_checks.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
 #include "../qemu_run.hpp"
@@ -58,6 +60,22 @@ struct Expectation {
     std::vector<ConsoleLine> console;
 };
 
+// The whole of text is a finite number (std::stod alone took "nan" and
+// the 3 of "3abc").
+bool whole_real(const std::string &text, double &out) {
+    char *end = nullptr;
+    errno = 0;
+    out = std::strtod(text.c_str(), &end);
+    return !text.empty() && *end == '\0' && errno == 0 && std::isfinite(out);
+}
+
+bool whole_long(const std::string &text, long &out) {
+    char *end = nullptr;
+    errno = 0;
+    out = std::strtol(text.c_str(), &end, 10);
+    return !text.empty() && *end == '\0' && errno == 0 && out >= -32768 && out <= 65535;
+}
+
 Expectation read_expectation(const fs::path &file) {
     Expectation e;
     std::ifstream in(file);
@@ -76,14 +94,14 @@ Expectation read_expectation(const fs::path &file) {
         if (line.empty() || line[0] == '#') continue;
         auto f = split(line, ',');
         if (f.size() == 5) f.insert(f.begin() + 1, "0");
-        try {
-            if (f.size() != 6) throw std::invalid_argument("fields");
-            e.changes.push_back({std::stod(f[0]), std::stoi(f[1]), f[2], std::stoi(f[3]), std::stoi(f[4]),
-                                 std::stoi(f[5]), n});
-        } catch (const std::exception &) {
-            throw std::runtime_error(file.string() + ":" + std::to_string(n) +
-                                     ": expected time_s,device,a,b,c or time_s,robot,device,a,b,c");
-        }
+        double t = 0;
+        long robot = 0, a = 0, b = 0, c = 0;
+        if (f.size() != 6 || !whole_real(f[0], t) || !whole_long(f[1], robot) || !whole_long(f[3], a) ||
+            !whole_long(f[4], b) || !whole_long(f[5], c) || t < 0 || robot < 0 || robot > 65535)
+            throw std::runtime_error(file.string() + ":" + std::to_string(n) + ": " + text_start(line, 60) +
+                                     ": expected time_s,device,a,b,c or time_s,robot,device,a,b,c (a time in "
+                                     "seconds, whole numbers), e.g. 0.252,led,0,3,0");
+        e.changes.push_back({t, (int)robot, f[2], (int)a, (int)b, (int)c, n});
     }
     return e;
 }
@@ -311,16 +329,25 @@ int run_tests(const std::string &dir, const Paths &paths) {
                " (see `openswarm test --help`)");
         return EXIT_USAGE;
     }
+    // A test file that cannot be read is bad input, refused before the build.
+    std::vector<Expectation> expected;
+    try {
+        for (const auto &file : files) expected.push_back(read_expectation(file));
+    } catch (const std::runtime_error &ex) {
+        report(std::string(ex.what()));
+        return EXIT_USAGE;
+    }
     if (runs_nowhere(dir)) return EXIT_FAILED;
     auto built = build_app(paths, dir, "", Progress::brief);
     if (!built) return exit_code;
     int passed = 0, failed = 0;
     std::vector<std::pair<std::string, std::string>> rows;
-    for (const auto &file : files) {
+    for (size_t i = 0; i < files.size(); i++) {
+        const fs::path &file = files[i];
+        const Expectation &e = expected[i];
         std::string name = file.stem().string();
         std::vector<std::string> problems;
         try {
-            Expectation e = read_expectation(file);
             if (port_info(built->port).runner == Runner::qemu)
                 problems = run_in_qemu_and_compare(file, e, built->image);
             else

@@ -20,6 +20,24 @@ namespace openswarm {
 
 using Status = sys_status;
 
+namespace detail {
+// Does From convert to To (a lambda to a handler's function pointer)?
+// Without the standard library's is_convertible.
+template <typename From, typename To>
+struct converts {
+    static char test(To);
+    static long test(...);
+    static From &from();
+    static const bool value = sizeof(test(from())) == 1;
+};
+}  // namespace detail
+
+// The data of an event openswarm.json declares by "size" alone: N bytes.
+template <uint8_t N>
+struct Bytes {
+    uint8_t bytes[N];
+};
+
 // An event whose data is one T (a plain struct or number).
 template <typename T>
 class Event {
@@ -66,6 +84,9 @@ class Event {
     // keeps its function pointer in one static (2 bytes on the AVR).
     template <typename Lambda>
     Status subscribe(Lambda lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        static_assert(detail::converts<Lambda, Handler>::value,
+                      "the handler must be a lambda without captures taking const T & of the event's "
+                      "data type (openswarm.json's type for the app's events)");
         Stored<Lambda>::handler = lambda; // a captureless lambda converts to Handler
         return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
     }
@@ -101,6 +122,60 @@ class Event {
 template <typename T>
 template <typename Lambda>
 typename Event<T>::Handler Event<T>::Stored<Lambda>::handler = nullptr;
+
+// An event that carries no data (openswarm.json's "type": "none").
+template <>
+class Event<void> {
+  public:
+    using Handler = void (*)();
+
+    constexpr explicit Event(sys_event_id id) noexcept : id_(id) {}
+    constexpr sys_event_id id() const noexcept { return id_; }
+
+    Status enroll() const noexcept { return Sys_Register_Event_Sized(id_, 0); }
+    Status send() const noexcept { return Sys_Send_Event(id_, nullptr, 0); }
+    Status wait() const noexcept { return Sys_Wait_for_Event(id_, nullptr, 0, nullptr); }
+    Status wait(uint32_t timeout_ms) const noexcept {
+        return Sys_Wait_for_Event_Timeout(id_, timeout_ms, nullptr, 0, nullptr);
+    }
+
+    template <Handler handler>
+    Status subscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Subscribe_to_Event(id_, pid, &call<handler>, nullptr);
+    }
+    template <Handler handler>
+    Status unsubscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Unsubscribe_from_Event(id_, pid, &call<handler>);
+    }
+    template <typename Lambda>
+    Status subscribe(Lambda lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        static_assert(detail::converts<Lambda, Handler>::value,
+                      "the handler of an event without data must be a lambda without captures or parameters");
+        Stored<Lambda>::handler = lambda;
+        return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
+    }
+
+  private:
+    template <Handler handler>
+    static bool call(sys_pid, sys_event_id, const sys_event_data *) noexcept {
+        handler();
+        return true;
+    }
+    template <typename Lambda>
+    struct Stored {
+        static Handler handler;
+    };
+    template <typename Lambda>
+    static bool call_stored(sys_pid, sys_event_id, const sys_event_data *) noexcept {
+        Stored<Lambda>::handler();
+        return true;
+    }
+
+    sys_event_id id_;
+};
+
+template <typename Lambda>
+Event<void>::Handler Event<void>::Stored<Lambda>::handler = nullptr;
 
 // Threads.
 struct Thread {

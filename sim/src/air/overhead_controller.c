@@ -107,7 +107,7 @@ int ohc_parse(const char *text, ohc_message *m) {
     }
     char *end;
     m->seconds = strtod(at + 1, &end);
-    if (end == at + 1 || *end != '\0' || m->seconds < 0) {
+    if (end == at + 1 || *end != '\0' || !(m->seconds >= 0 && m->seconds < 1e9)) { /* NaN too */
         fprintf(stderr, "openswarm-sim: --ohc '%s': expected seconds after '@', e.g. --ohc %s\n",
                 text, k->example);
         return -1;

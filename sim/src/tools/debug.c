@@ -1,5 +1,8 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* Debugging a robot: avr-gdb's remote protocol, and GTKWave traces. */
+#include <errno.h>
+#include <string.h>
+
 #include <avr_ioport.h>
 #include <avr_timer.h>
 #include <sim_gdb.h>
@@ -17,7 +20,14 @@ static int vcd_open(robot *r, const char *path) {
     avr_vcd_add_signal(&r->vcd, avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_DIRECTION_ALL), 8, "ddrd_led_red");
     avr_vcd_add_signal(&r->vcd, avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM0), 8, "motor_left");
     avr_vcd_add_signal(&r->vcd, avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM1), 8, "motor_right");
-    avr_vcd_start(&r->vcd);
+    /* The file is created here: a folder that is missing or not writable
+     * fails the run (it ran without a trace, exit 0). */
+    if (avr_vcd_start(&r->vcd) != 0) {
+        fprintf(stderr, "openswarm-sim: --vcd %s: cannot create the file (%s); give a path in a writable folder\n",
+                path, strerror(errno));
+        avr_vcd_close(&r->vcd);
+        return -1;
+    }
     r->vcd_open = 1;
     return 0;
 }
