@@ -203,7 +203,7 @@ def main():
     out.append(f"| empty image (`bench/avr/bare.c`: C runtime and vectors) | {bare[0] + bare[1]} | |")
     out.append(f"| kernel + port code (image minus the empty one; includes the app's few calls) | {rom} | <= 3072 |")
     out.append(f"| the same without the optional features (`bench/avr/footprint_minimal.h`: "
-               f"`OS_CFG_STACK_CHECK 0`, `OS_CFG_CLOCK_EVENT 0`, `OS_CFG_HANDLER_LIMIT_MS 0`) | {rom_minimal} | <= 3072 |")
+               f"`OS_CFG_STACK_CHECK 0`, `OS_CFG_CLOCK_EVENT 0`, `OS_CFG_HANDLER_LIMIT_MS 0`, `OS_CFG_HANDLER_CONTEXT 0`) | {rom_minimal} | <= 3072 |")
     out.append(f"| kernel + port RAM with one thread slot (stack pool and frame excluded) | {ram} | <= 200 |")
     out.append(f"| per extra thread slot: its control block (the pool also grows by its {frame}-byte frame) | {per_thread - frame} | <= 12 |")
     out.append(f"| per extra event slot (data excluded) | {per_event} | <= 4 |\n")

@@ -17,9 +17,16 @@
 #define UNREGISTERED OS_EVENT_UNREGISTERED
 #define NOTHING_KEPT OS_EVENT_NOTHING_KEPT
 
+/* A subscription with a context keeps its binding where the others keep
+ * their condition, and a handler no one calls as its mark: no byte more. */
+typedef union condition_or_binding {
+    sys_event_condition condition;
+    const sys_event_binding *binding;
+} condition_or_binding;
+
 typedef struct subscription {
     sys_event_handler handler; /* NULL: unsubscribed (until the array is packed) */
-    sys_event_condition condition;
+    condition_or_binding with;
     sys_event_id event;
     sys_pid pid;
 } subscription;
@@ -147,9 +154,24 @@ bool Sys_IsEventRegistered(sys_event_id event) {
     return registered;
 }
 
-static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_event_handler h) {
+#if OS_CFG_HANDLER_CONTEXT
+/* The mark of a subscription with a context: the dispatch calls its
+ * binding's handler instead, never this. */
+static bool bound(sys_pid pid, sys_event_id event, const sys_event_data *data) {
+    (void)pid;
+    (void)event;
+    (void)data;
+    return true;
+}
+#endif
+
+/* A subscription of h (with binding b, for a bound one) to event by pid. */
+static subscription *find_subscription(sys_event_id event, sys_pid pid, sys_event_handler h,
+                                       const sys_event_binding *b) {
     for (subscription *sub = subs; sub != subs_end; sub++) {
-        if (sub->handler == h && sub->event == event && sub->pid == pid) return sub;
+        if (sub->handler == h && sub->event == event && sub->pid == pid &&
+            (b == NULL || sub->with.binding == b))
+            return sub;
     }
     return NULL;
 }
@@ -161,9 +183,8 @@ static bool subscription_room(void) {
     return subs_end != &subs[OS_CFG_MAX_SUBSCRIPTIONS];
 }
 
-sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
-                                  sys_event_condition condition) {
-    if (handler == NULL) return SYS_E_INVALID;
+static sys_status subscribe(sys_event_id event, sys_pid pid, sys_event_handler handler,
+                            condition_or_binding with, const sys_event_binding *binding) {
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
     if (!os_event_registered(event)) {
@@ -171,7 +192,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     } else if (pid != SYS_PID_SYSTEM &&
                (os_thread_of(pid) == NULL || os_thread_of(pid)->state == SYS_PROCESS_ZOMBIE)) {
         st = SYS_E_INVALID;
-    } else if (find_subscription(event, pid, handler) != NULL) {
+    } else if (find_subscription(event, pid, handler, binding) != NULL) {
         st = SYS_E_EXISTS;
     } else if (!subscription_room()) {
         os_count(&os.stats.subscription_pool_full);
@@ -179,7 +200,7 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     } else {
         subscription *sub = subs_end++;
         sub->handler = handler;
-        sub->condition = condition;
+        sub->with = with;
         sub->event = event;
         sub->pid = pid;
         os_listeners_changed();
@@ -188,14 +209,38 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
     return st;
 }
 
-sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler) {
+sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_handler handler,
+                                  sys_event_condition condition) {
+    if (handler == NULL) return SYS_E_INVALID;
+    condition_or_binding with = {.condition = condition};
+    return subscribe(event, pid, handler, with, NULL);
+}
+
+static sys_status unsubscribe_matching(sys_event_id event, sys_pid pid, sys_event_handler handler,
+                                       const sys_event_binding *binding) {
     port_irq_state_t s = port_irq_save();
-    /* A NULL handler would find a marked entry. */
-    subscription *sub = handler != NULL ? find_subscription(event, pid, handler) : NULL;
+    subscription *sub = find_subscription(event, pid, handler, binding);
     if (sub != NULL) unsubscribe(sub);
     port_irq_restore(s);
     return sub != NULL ? SYS_OK : SYS_E_NOT_FOUND;
 }
+
+sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler) {
+    /* A NULL handler would find a marked entry. */
+    return handler != NULL ? unsubscribe_matching(event, pid, handler, NULL) : SYS_E_NOT_FOUND;
+}
+
+#if OS_CFG_HANDLER_CONTEXT
+sys_status Sys_Subscribe_with_Context(sys_event_id event, sys_pid pid, const sys_event_binding *binding) {
+    if (binding == NULL || binding->handler == NULL) return SYS_E_INVALID;
+    condition_or_binding with = {.binding = binding};
+    return subscribe(event, pid, bound, with, binding);
+}
+
+sys_status Sys_Unsubscribe_with_Context(sys_event_id event, sys_pid pid, const sys_event_binding *binding) {
+    return binding != NULL ? unsubscribe_matching(event, pid, bound, binding) : SYS_E_NOT_FOUND;
+}
+#endif
 
 void os_subscriptions_remove_thread(sys_pid pid) { remove_subscriptions(0, true, pid, false); }
 
@@ -216,6 +261,19 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
     os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
 }
 
+/* One handler call, if its condition accepts the occurrence; false to
+ * unsubscribe. */
+static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding with, sys_pid pid,
+                               const sys_event_data *data) {
+#if OS_CFG_HANDLER_CONTEXT
+    if (handler == bound) {
+        const sys_event_binding *b = with.binding;
+        return (b->condition != NULL && !b->condition(data)) || b->handler(b->context, pid, data);
+    }
+#endif
+    return (with.condition != NULL && !with.condition(data)) || handler(pid, data->event, data);
+}
+
 /* Runs in the system thread with interrupts masked; each handler runs with
  * interrupts enabled. Handlers subscribed during the dispatch wait for the
  * next occurrence. The event is read from data and the entry, not kept in
@@ -227,13 +285,12 @@ void os_run_handlers(const sys_event_data *data) {
     for (subscription *sub = subs; sub != end; sub++) {
         sys_event_handler handler = sub->handler;
         if (handler != NULL && sub->event == data->event) {
-            sys_event_condition condition = sub->condition;
-            bool keep = true;
+            condition_or_binding with = sub->with; /* read whole before an interrupt may unsubscribe */
 #if OS_CFG_HANDLER_LIMIT_MS
             os.handler_ms = 0;
 #endif
             port_irq_enable();
-            if (condition == NULL || condition(data)) keep = handler(sub->pid, sub->event, data);
+            bool keep = run_handler(handler, with, sub->pid, data);
             port_irq_disable();
             if (os.lock_depth != 0) close_leaked_section(sub->pid);
             /* Returning false unsubscribes. The entry is still this

@@ -236,6 +236,60 @@ static void wait_setup(void) {
     }
 }
 
+/* Handlers with a context: each binding's handler gets its own pointer
+ * back, its condition filters, an interrupt's event reaches it, returning
+ * false or unsubscribing ends only that binding. */
+typedef struct tally {
+    char mark;
+    uint8_t calls;
+    int16_t sum;
+} tally;
+static tally first, second;
+
+static bool add_to_tally(void *context, sys_pid pid, const sys_event_data *d) {
+    (void)pid;
+    tally *t = context;
+    int16_t v;
+    memcpy(&v, d->value, sizeof v);
+    t->calls++;
+    t->sum = (int16_t)(t->sum + v);
+    note(t->mark);
+    return t->calls < 3; /* the third call ends the subscription */
+}
+
+static const sys_event_binding to_first = {add_to_tally, &first, NULL};
+static const sys_event_binding to_second = {add_to_tally, &second, is_even};
+
+static void context_control(void *arg) {
+    (void)arg;
+    CHECK(Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_first) == SYS_OK);
+    CHECK(Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_second) == SYS_OK);
+    CHECK(Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_first) == SYS_E_EXISTS);
+    CHECK(Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, NULL) == SYS_E_INVALID);
+    Sys_Send_IntEvent(EV_A, 4); /* both: even */
+    Sys_Send_IntEvent(EV_A, 5); /* first only */
+    CHECK(strcmp(log_buf, "fsf") == 0);
+    CHECK_EQ(9, first.sum);
+    CHECK_EQ(4, second.sum);
+    interrupt_in(100, 6);
+    Sys_Sleep(2); /* from an interrupt: first's third call ends it */
+    CHECK(strcmp(log_buf, "fsffs") == 0);
+    CHECK_EQ(3, first.calls);
+    CHECK(Sys_Unsubscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_first) == SYS_E_NOT_FOUND);
+    CHECK(Sys_Unsubscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_second) == SYS_OK);
+    Sys_Send_IntEvent(EV_A, 8);
+    CHECK(strcmp(log_buf, "fsffs") == 0); /* nobody left */
+    CHECK_EQ(10, second.sum);
+    finish();
+}
+
+static void context_setup(void) {
+    first = (tally){'f', 0, 0};
+    second = (tally){'s', 0, 0};
+    Sys_Register_Event(EV_A);
+    start_control(context_control);
+}
+
 /* A handler that unsubscribes itself must not make the next one be skipped. */
 static bool self_removing(sys_pid pid, sys_event_id e, const sys_event_data *d) {
     (void)d;
@@ -430,6 +484,7 @@ int main(void) {
     RUN(priority);
     RUN(events);
     RUN(wait);
+    RUN(context);
     RUN(regression);
     RUN(critical);
     RUN(pools);

@@ -444,3 +444,49 @@ TEST_F(Events, NoSubscriptionForAThreadBeingTornDown) {
     settle();
     EXPECT_STATUS(SYS_E_INVALID, for_zombie);
 }
+
+// Handlers with a context: two bindings of one function keep apart, each
+// with its own pointer; a binding is subscribed once per (event, thread),
+// a subscription of the same function without context is another one, and
+// unsubscribing one binding leaves the other.
+struct Counter {
+    const char *name;
+    int calls;
+};
+static bool count_with(void *context, sys_pid, const sys_event_data *) {
+    auto *c = static_cast<Counter *>(context);
+    c->calls++;
+    note(c->name);
+    return true;
+}
+
+TEST_F(Events, HandlersWithContextKeepTheirOwnPointer) {
+    static Counter a{"a", 0}, b{"b", 0};
+    static const sys_event_binding to_a{count_with, &a, nullptr}, to_b{count_with, &b, nullptr};
+    sys_status sa = SYS_E_INVALID, sb = SYS_E_INVALID, again = SYS_OK, plain = SYS_E_INVALID, off = SYS_E_INVALID,
+               off_again = SYS_OK;
+    a.calls = b.calls = 0;
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        sa = Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_a);
+        sb = Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_b);
+        again = Sys_Subscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_a);
+        plain = Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM, log_handler, nullptr);
+        spawn([&] {
+            Sys_Send_Event(EV_A, nullptr, 0); // dispatched before Send returns
+            off = Sys_Unsubscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_a);
+            off_again = Sys_Unsubscribe_with_Context(EV_A, SYS_PID_SYSTEM, &to_a);
+            Sys_Send_Event(EV_A, nullptr, 0);
+        });
+    });
+    settle();
+    EXPECT_STATUS(SYS_OK, sa);
+    EXPECT_STATUS(SYS_OK, sb);
+    EXPECT_STATUS(SYS_E_EXISTS, again);
+    EXPECT_STATUS(SYS_OK, plain);
+    EXPECT_STATUS(SYS_OK, off);
+    EXPECT_STATUS(SYS_E_NOT_FOUND, off_again);
+    EXPECT_EQ(1, a.calls);
+    EXPECT_EQ(2, b.calls);
+    EXPECT_EQ("a b h0(0) b h0(0)", joined());
+}

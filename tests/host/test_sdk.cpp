@@ -84,3 +84,44 @@ TEST_F(Sdk, CriticalSectionGuardEndsWithItsScope) {
     settle();
     EXPECT_EQ(1, handled.load());
 }
+
+// Handlers with context: a lambda with captures (a reference and a value),
+// a member function with its object; each unsubscribes; a second
+// subscription of the same lambda or method is refused while one lasts.
+struct Accumulator {
+    int total = 0;
+    void on_number(const int16_t &v) { total += v; }
+};
+
+TEST_F(Sdk, CapturingLambdasAndMemberFunctionsGetTheirContext) {
+    static int captured_sum;
+    static Accumulator acc, other;
+    static sys_status again, method_again, method_off, lambda_off;
+    captured_sum = 0;
+    acc.total = other.total = 0;
+    boot([this] {
+        number.enroll();
+        int &into = captured_sum;
+        const int16_t scale = 10;
+        auto scaled = [&into, scale](const int16_t &v) { into += v * scale; };
+        EXPECT_STATUS(SYS_OK, number.subscribe(scaled));
+        again = number.subscribe(scaled);
+        EXPECT_STATUS(SYS_OK, (number.subscribe<Accumulator, &Accumulator::on_number>(acc)));
+        method_again = number.subscribe<Accumulator, &Accumulator::on_number>(other);
+        spawn([scaled] {
+            number.send(2);
+            number.send(3);
+            lambda_off = number.unsubscribe(scaled);
+            method_off = number.unsubscribe<Accumulator, &Accumulator::on_number>(acc);
+            number.send(100); // nobody listens any more
+        });
+    });
+    settle();
+    EXPECT_STATUS(SYS_E_EXISTS, again);
+    EXPECT_STATUS(SYS_E_EXISTS, method_again);
+    EXPECT_STATUS(SYS_OK, lambda_off);
+    EXPECT_STATUS(SYS_OK, method_off);
+    EXPECT_EQ(50, captured_sum);
+    EXPECT_EQ(5, acc.total);
+    EXPECT_EQ(0, other.total);
+}

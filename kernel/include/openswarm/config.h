@@ -110,14 +110,21 @@
 #error "OS_CFG_HANDLER_LIMIT_MS must fit in 16 bits (at most 65535 ms)"
 #endif
 
+/* Handlers with a context pointer (Sys_Subscribe_with_Context): a
+ * comparison per handler call in the dispatch. 0 leaves them out. */
+#ifndef OS_CFG_HANDLER_CONTEXT
+#define OS_CFG_HANDLER_CONTEXT 1
+#endif
+
 /* Default time slice of the round-robin scheduler, in ms (= ticks). */
 #ifndef OS_CFG_TIME_SLICE_MS
 #define OS_CFG_TIME_SLICE_MS 10
 #endif
 
 #if (OS_CFG_STACK_CHECK != 0 && OS_CFG_STACK_CHECK != 1) || \
-    (OS_CFG_CLOCK_EVENT != 0 && OS_CFG_CLOCK_EVENT != 1)
-#error "OS_CFG_STACK_CHECK and OS_CFG_CLOCK_EVENT must be 0 or 1"
+    (OS_CFG_CLOCK_EVENT != 0 && OS_CFG_CLOCK_EVENT != 1) || \
+    (OS_CFG_HANDLER_CONTEXT != 0 && OS_CFG_HANDLER_CONTEXT != 1)
+#error "OS_CFG_STACK_CHECK, OS_CFG_CLOCK_EVENT and OS_CFG_HANDLER_CONTEXT must be 0 or 1"
 #endif
 #if OS_CFG_MAX_THREADS < 2 || OS_CFG_MAX_THREADS > 16
 #error "OS_CFG_MAX_THREADS must be 2..16 (pids keep the slot in 4 bits)"

@@ -64,6 +64,20 @@ sys_status Sys_Subscribe_to_Event(sys_event_id event, sys_pid pid, sys_event_han
                                   sys_event_condition condition);
 sys_status Sys_Unsubscribe_from_Event(sys_event_id event, sys_pid pid, sys_event_handler handler);
 
+/* A handler with a context: the binding gives the function, the pointer it
+ * gets back on every call (an object, a table entry) and an optional
+ * condition. The binding must outlive the subscription (a static, or a
+ * member of a long-lived object); one binding subscribes once per (event,
+ * thread). Left out by OS_CFG_HANDLER_CONTEXT 0 (config.h). */
+typedef bool (*sys_event_context_handler)(void *context, sys_pid pid, const sys_event_data *data);
+typedef struct sys_event_binding {
+    sys_event_context_handler handler;
+    void *context;
+    sys_event_condition condition; /* may be NULL */
+} sys_event_binding;
+sys_status Sys_Subscribe_with_Context(sys_event_id event, sys_pid pid, const sys_event_binding *binding);
+sys_status Sys_Unsubscribe_with_Context(sys_event_id event, sys_pid pid, const sys_event_binding *binding);
+
 /* Queue an occurrence with a copy of size bytes of data. Never blocks;
  * callable from threads, handlers and interrupts. */
 sys_status Sys_Send_Event(sys_event_id event, const void *data, uint8_t size);

@@ -30,6 +30,22 @@ struct converts {
     static From &from();
     static const bool value = sizeof(test(from())) == 1;
 };
+template <typename A, typename B>
+struct same {
+    static const bool value = false;
+};
+template <typename A>
+struct same<A, A> {
+    static const bool value = true;
+};
+template <bool>
+struct choice {};
+// Is Lambda's call void(const T &) const, exactly (a lambda taking
+// another type would be called through a conversion, silently)?
+template <typename Lambda, typename T>
+struct handles {
+    static const bool value = same<decltype(&Lambda::operator()), void (Lambda::*)(const T &) const>::value;
+};
 }  // namespace detail
 
 // The data of an event openswarm.json declares by "size" alone: N bytes.
@@ -80,15 +96,39 @@ class Event {
         return Sys_Unsubscribe_from_Event(id_, pid, &call<handler>);
     }
 
-    // Run a lambda without captures for every occurrence. Each lambda type
-    // keeps its function pointer in one static (2 bytes on the AVR).
+    // Run a lambda for every occurrence. Without captures, each lambda type
+    // keeps its function pointer in one static (2 bytes on the AVR); with
+    // captures (values or references, copied as bytes), a copy of them and
+    // a context binding (6 bytes on the AVR): one subscription at a time
+    // per lambda (SYS_E_EXISTS for a second until it is unsubscribed).
     template <typename Lambda>
-    Status subscribe(Lambda lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        static_assert(detail::converts<Lambda, Handler>::value,
-                      "the handler must be a lambda without captures taking const T & of the event's "
-                      "data type (openswarm.json's type for the app's events)");
-        Stored<Lambda>::handler = lambda; // a captureless lambda converts to Handler
-        return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
+    Status subscribe(const Lambda &lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        static_assert(detail::handles<Lambda, T>::value,
+                      "the handler must be a lambda taking const T & of the event's data type "
+                      "(openswarm.json's type for the app's events)");
+        return subscribe_lambda(lambda, pid, detail::choice<detail::converts<Lambda, Handler>::value>{});
+    }
+    template <typename Lambda>
+    Status unsubscribe(const Lambda &, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return unsubscribe_lambda<Lambda>(pid, detail::choice<detail::converts<Lambda, Handler>::value>{});
+    }
+
+    // Run method on object for every occurrence: the object is the
+    // handler's context. One object per method at a time (SYS_E_EXISTS).
+    template <typename Object, void (Object::*method)(const T &)>
+    Status subscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        using B = Bound<Object, method>;
+        if (B::binding.context != nullptr && B::binding.context != &object) return SYS_E_EXISTS;
+        B::binding.context = &object;
+        return Sys_Subscribe_with_Context(id_, pid, &B::binding);
+    }
+    template <typename Object, void (Object::*method)(const T &)>
+    Status unsubscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        using B = Bound<Object, method>;
+        if (B::binding.context != &object) return SYS_E_NOT_FOUND;
+        Status st = Sys_Unsubscribe_with_Context(id_, pid, &B::binding);
+        if (st == SYS_OK) B::binding.context = nullptr;
+        return st;
     }
 
     // The data the last occurrence carried, if any is kept.
@@ -115,6 +155,57 @@ class Event {
         Stored<Lambda>::handler(value_of(d));
         return true;
     }
+    template <typename Lambda>
+    Status subscribe_lambda(const Lambda &lambda, sys_pid pid, detail::choice<true>) const noexcept {
+        Stored<Lambda>::handler = lambda; // a captureless lambda converts to Handler
+        return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
+    }
+    template <typename Lambda>
+    Status unsubscribe_lambda(sys_pid pid, detail::choice<true>) const noexcept {
+        return Sys_Unsubscribe_from_Event(id_, pid, &call_stored<Lambda>);
+    }
+
+    // A lambda with captures: its bytes copied into a static of its type,
+    // which the binding gives the kernel as the context.
+    template <typename Lambda>
+    struct Captured {
+        alignas(Lambda) static unsigned char bytes[sizeof(Lambda)];
+        static sys_event_binding binding;
+        static bool call(void *context, sys_pid, const sys_event_data *d) noexcept {
+            (*static_cast<const Lambda *>(context))(value_of(d));
+            return true;
+        }
+    };
+    template <typename Lambda>
+    Status subscribe_lambda(const Lambda &lambda, sys_pid pid, detail::choice<false>) const noexcept {
+        static_assert(__is_trivially_copyable(Lambda),
+                      "a lambda's captures must be values or references that copy as bytes");
+        using C = Captured<Lambda>;
+        if (C::binding.handler != nullptr) return SYS_E_EXISTS;
+        const unsigned char *from = reinterpret_cast<const unsigned char *>(&lambda);
+        for (unsigned i = 0; i < sizeof(Lambda); i++) C::bytes[i] = from[i];
+        C::binding = {&C::call, C::bytes, nullptr};
+        Status st = Sys_Subscribe_with_Context(id_, pid, &C::binding);
+        if (st != SYS_OK) C::binding.handler = nullptr;
+        return st;
+    }
+    template <typename Lambda>
+    Status unsubscribe_lambda(sys_pid pid, detail::choice<false>) const noexcept {
+        using C = Captured<Lambda>;
+        Status st = Sys_Unsubscribe_with_Context(id_, pid, &C::binding);
+        if (st == SYS_OK) C::binding.handler = nullptr;
+        return st;
+    }
+
+    // A member function, its object the context.
+    template <typename Object, void (Object::*method)(const T &)>
+    struct Bound {
+        static sys_event_binding binding;
+        static bool call(void *context, sys_pid, const sys_event_data *d) noexcept {
+            (static_cast<Object *>(context)->*method)(value_of(d));
+            return true;
+        }
+    };
 
     sys_event_id id_;
 };
@@ -122,6 +213,16 @@ class Event {
 template <typename T>
 template <typename Lambda>
 typename Event<T>::Handler Event<T>::Stored<Lambda>::handler = nullptr;
+template <typename T>
+template <typename Lambda>
+alignas(Lambda) unsigned char Event<T>::Captured<Lambda>::bytes[sizeof(Lambda)];
+template <typename T>
+template <typename Lambda>
+sys_event_binding Event<T>::Captured<Lambda>::binding = {nullptr, nullptr, nullptr};
+template <typename T>
+template <typename Object, void (Object::*method)(const T &)>
+sys_event_binding Event<T>::Bound<Object, method>::binding = {&Event<T>::Bound<Object, method>::call, nullptr,
+                                                              nullptr};
 
 // An event that carries no data (openswarm.json's "type": "none").
 template <>
