@@ -21,9 +21,17 @@
 #define ELF_CHECK_SRAM_END 0x800900u /* one past the last byte, 0x8008FF */
 #define ELF_CHECK_EEPROM_BYTES 1024u
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* 0 if simavr may read the image; -1 if not, with why (always
  * NUL-terminated, cut to why_size) saying what is wrong and, in
  * parentheses, what to do: "<what is wrong> (<what to do>)". */
 int elf_check(const uint8_t *image, size_t size, char *why, size_t why_size);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

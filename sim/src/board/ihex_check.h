@@ -10,10 +10,18 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* 0 if every line is a well-formed record with a good checksum, the data
  * lies within the ATmega328P's 32 KB flash and an end-of-file record ends
  * it; -1 if not, with why (NUL-terminated, cut to why_size) saying which
  * line, what is wrong and, in parentheses, what to do. */
 int ihex_check(const uint8_t *text, size_t size, char *why, size_t why_size);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
