@@ -80,7 +80,7 @@ static void catch_up_ticks(void) {
 }
 
 /* Next edge's Timer1 time, or -1 when none comes within IR_WIRE_SILENCE
- * of the last slot. Edges are latched by the input capture hardware, so
+ * of the last one. Edges are latched by the input capture hardware, so
  * polling loses none. */
 static int32_t next_edge(uint16_t last) {
     for (;;) {
@@ -114,7 +114,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
      * conversion ends first, within 104 us: long before the stop pulse. */
     kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
-        int32_t edge = next_edge(d.slot_time);
+        int32_t edge = next_edge(d.last_pulse);
         if (edge < 0) { /* the frame stopped short */
             count(&stats.broken);
             return false;
