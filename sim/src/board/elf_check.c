@@ -121,7 +121,7 @@ static const char *name_of(const elf_view *v, const section *s) {
  * are plain text. */
 static const char *printable(const char *name) {
     for (const char *c = name; *c != '\0'; c++)
-        if (*c < ' ' || *c > '~') return "an unnamed one";
+        if (*c < ' ' || *c > '~') return "<unprintable name>";
     return name;
 }
 
