@@ -5,9 +5,10 @@
 # ELFs here crashed simavr 1.6 or ran as something it is not.
 #   refused_firmware.sh SIMULATOR AVR_GCC FIRMWARE.elf WORKDIR
 set -uo pipefail
-sim=$1 avr_gcc=$2 firmware=$3 work=$4
+sim=$(realpath "$1") avr_gcc=$2 firmware=$(realpath "$3") work=$4
+here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-. "$(dirname "$0")/../e2e/check.sh"
+. "$here/../e2e/check.sh"
 
 # An ELF built for another AVR, with the MCU record OpenSwarm's port adds
 # (ports/kilobot/src/mcu_tag.c), and without it (a classic Makefile's).
@@ -36,6 +37,13 @@ check "attiny85 ELF without record or note" 2 "bare_attiny85.elf: built for the 
 "$avr_gcc" -mmcu=atmega328p -Os -o plain_atmega328p.elf plain.c
 check "atmega328p ELF without a record" 0 "plain_atmega328p.elf has no MCU record: running it as a Kilobot's ATmega328P at 8 MHz" \
     "$sim" --time 0.01 plain_atmega328p.elf
+
+# Lock bits without fuses (avr-libc's LOCKBITS alone): simavr 1.6 reads the
+# lock byte from the .fuse section's data, and crashed without one.
+printf '#include <avr/io.h>\n#include <avr/lock.h>\nLOCKBITS = LB_MODE_1;\nint main(void) { for (;;) { } }\n' > lock.c
+"$avr_gcc" -mmcu=atmega328p -Os -o lock_only.elf lock.c
+check "lock bits without fuses" 2 "lock_only.elf: a .lock section without a .fuse section: simavr 1.6 reads the lock byte from .fuse and crashes \(set the fuses too, with FUSES, or drop LOCKBITS\)" \
+    "$sim" --time 0.01 lock_only.elf
 
 # Cut short: said so, not "no MCU record" or ": Success".
 head -c 20 "$firmware" > twenty.elf
