@@ -4,14 +4,18 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include <sim_elf.h>
 #include <sim_hex.h>
 
 #include "sim.h"
+#include "board/elf_check.h"
+#include "board/ihex_check.h"
 
-#define EM_AVR 83
 #define KILOBOT_FLASH_BYTES 32768
+/* A firmware ELF with its debugging sections is well under this. */
+#define MAX_FIRMWARE_FILE_BYTES (64u << 20)
 
 /* A prebuilt Intel HEX image (what KiloGUI uploads): a text file of
  * ':'-records. */
@@ -20,33 +24,44 @@ static int is_intel_hex(const char *path) {
     return n > 4 && strcmp(path + n - 4, ".hex") == 0;
 }
 
-/* Check the file before simavr sees it: simavr 1.6 crashes on some bad
- * input instead of reporting it. */
-int firmware_check(const char *path) {
+/* The whole file, or NULL (said why) if it cannot be read. */
+static uint8_t *read_whole(const char *path, size_t *size) {
     FILE *f = fopen(path, "rb");
-    if (f == NULL) {
+    struct stat st;
+    if (f == NULL || fstat(fileno(f), &st) != 0) {
         fprintf(stderr, "openswarm-sim: %s: %s\n", path, strerror(errno));
-        return -1;
+        if (f != NULL) fclose(f);
+        return NULL;
     }
-    unsigned char h[20];
-    size_t n = fread(h, 1, sizeof h, f);
+    if (st.st_size > (off_t)MAX_FIRMWARE_FILE_BYTES) {
+        fprintf(stderr, "openswarm-sim: %s: larger than %u MB, which no firmware is (give the .elf "
+                        "or .hex the build wrote)\n", path, MAX_FIRMWARE_FILE_BYTES >> 20);
+        fclose(f);
+        return NULL;
+    }
+    uint8_t *bytes = malloc((size_t)st.st_size + 1u);
+    *size = bytes != NULL ? fread(bytes, 1, (size_t)st.st_size, f) : 0;
+    if (bytes == NULL || ferror(f)) {
+        fprintf(stderr, "openswarm-sim: %s: %s\n", path, strerror(errno));
+        free(bytes);
+        bytes = NULL;
+    }
     fclose(f);
-    if (is_intel_hex(path)) {
-        if (n > 0 && h[0] == ':') return 0;
-        fprintf(stderr, "openswarm-sim: %s: not an Intel HEX file (its first line should start "
-                        "with ':'); give the .hex the build wrote, or the .elf\n", path);
-        return -1;
-    }
-    if (n < sizeof h || memcmp(h, "\177ELF", 4) != 0) {
-        fprintf(stderr, "openswarm-sim: %s: not an ELF file (build the firmware first)\n", path);
-        return -1;
-    }
-    if ((h[18] | h[19] << 8) != EM_AVR) {
-        fprintf(stderr, "openswarm-sim: %s: an ELF for another CPU, not AVR "
-                        "(build it with the Kilobot toolchain)\n", path);
-        return -1;
-    }
-    return 0;
+    return bytes;
+}
+
+/* Check the whole file before simavr sees it: simavr 1.6 crashes on bad
+ * input instead of reporting it (board/elf_check.c says how). */
+int firmware_check(const char *path) {
+    size_t size;
+    uint8_t *bytes = read_whole(path, &size);
+    if (bytes == NULL) return -1;
+    char why[512];
+    int status = is_intel_hex(path) ? ihex_check(bytes, size, why, sizeof why)
+                                    : elf_check(bytes, size, why, sizeof why);
+    free(bytes);
+    if (status != 0) fprintf(stderr, "openswarm-sim: %s: %s\n", path, why);
+    return status;
 }
 
 /* simavr reports what it loads at its lowest level; keep its errors only. */

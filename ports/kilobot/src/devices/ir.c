@@ -1,14 +1,11 @@
 /* Infrared messages: the Kilobot's only way to talk to its neighbours.
  *
- * Wire format, in slots of one bit time (269 cycles at 8 MHz, 29.7 kbit/s):
- * a start pulse in slot 0 and a stop pulse in slot 9 (a pulse between them
- * means two robots started together: a collision), then 12 bytes of 10
- * slots each: a start bit (1), 8 data bits LSB first, a stop bit (1). A 1
- * is a short flash of the IR LED on PB0; the receivers see it through the
- * analog comparator (AIN0 PD6, AIN1 PD7), whose output is wired to Timer1's
- * input capture, so each edge is timestamped by the hardware. The distance
- * readings are sampled at the header: ADC0 (high gain) from the start pulse,
- * ADC1 (low gain) from the stop pulse.
+ * Frames go out as flashes of the IR LED on PB0, in the wire format of
+ * ir_wire.h; the receivers see them through the analog comparator (AIN0
+ * PD6, AIN1 PD7), whose output is wired to Timer1's input capture, so each
+ * edge is timestamped by the hardware. The distance readings are sampled
+ * at the header: ADC0 (high gain) from the start pulse, ADC1 (low gain)
+ * from the stop pulse.
  *
  * The lower layer here moves frames; the Rx processor checks the CRC and
  * the Tx processor adds it (kernel HAL comm device). */
@@ -18,14 +15,14 @@
 #include <avr/interrupt.h>
 #include <avr/io.h>
 #include <string.h>
-#include <util/crc16.h>
 
 #include "devices_internal.h"
+#include "ir_wire.h"
 
-#define BIT 269u
-#define HEADER_SLOTS 10u
-#define SLOTS (HEADER_SLOTS + KILOBOT_IR_FRAME_BYTES * 10u)
+#define BIT IR_WIRE_BIT
 #define TX_PIN _BV(PB0)
+
+_Static_assert(IR_WIRE_FRAME_BYTES == KILOBOT_IR_FRAME_BYTES, "the wire's frame is the API's");
 
 static volatile uint8_t receiving; /* carrier sense for the transmitter */
 static kilobot_ir_stats stats;
@@ -36,9 +33,7 @@ static void count(uint16_t *counter) {
 }
 
 uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
-    uint16_t crc = 0xFFFF;
-    while (n-- != 0) crc = _crc_ccitt_update(crc, *bytes++);
-    return crc;
+    return ir_wire_crc(bytes, n);
 }
 
 void kilobot_ir_get_stats(kilobot_ir_stats *out) {
@@ -84,10 +79,9 @@ static void catch_up_ticks(void) {
     os_isr_exit();
 }
 
-/* Next edge's Timer1 time, or -1 when none comes within 10 slots of the
- * last one (a frame never leaves more than 9 between pulses: the header's,
- * and a zero byte's start and stop bits). Edges are latched by the input
- * capture hardware, so polling loses none. */
+/* Next edge's Timer1 time, or -1 when none comes within IR_WIRE_SILENCE
+ * of the last one. Edges are latched by the input capture hardware, so
+ * polling loses none. */
 static int32_t next_edge(uint16_t last) {
     for (;;) {
         take_missed_tick();
@@ -96,17 +90,10 @@ static int32_t next_edge(uint16_t last) {
             TIFR1 = _BV(ICF1);
             return t;
         }
-        if ((uint16_t)(TCNT1 - last) > (uint16_t)(10u * BIT)) return -1;
+        if ((uint16_t)(TCNT1 - last) > (uint16_t)IR_WIRE_SILENCE) return -1;
     }
 }
 
-/* Decode one frame, interrupts masked throughout (4.4 ms, as the classic
- * library does): another interrupt in the middle would make us miss the
- * edges of two consecutive 1 bits. Slots are counted forward, so no
- * division runs per edge (one would take longer than a bit), from the start
- * pulse and again from the stop pulse and each byte's start bit (always a
- * 1), as a UART does: robots' clocks differ by a percent or two, which over
- * a whole frame's 130 slots would add up to more than half a slot. */
 /* A broken frame counts once: the rest of its pulses are let pass until
  * the channel is quiet, or each would start another broken reception. */
 static bool broken(uint16_t last_edge) {
@@ -116,52 +103,31 @@ static bool broken(uint16_t last_edge) {
     return false;
 }
 
+/* Decode one frame, interrupts masked throughout (4.4 ms, as the classic
+ * library does): another interrupt in the middle would make us miss the
+ * edges of two consecutive 1 bits. */
 static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
-    uint16_t slot_time = start;
-    bool header_stopped = false; /* its stop pulse came: the gains are the sender's */
-    uint8_t slot = 0;          /* in the header; HEADER_SLOTS once past it */
-    uint8_t byte = 0, bit = 0; /* past the header: which byte, which of its 10 slots */
+    ir_wire_decoder d;
     memset(rx, 0, sizeof *rx);
+    ir_wire_decode_start(&d, start, rx->frame);
     /* A sensor reading the ADC now loses it (it reads -1, busy); its
      * conversion ends first, within 104 us: long before the stop pulse. */
     kilobot_adc_start(KILOBOT_ADC_IR_HIGH_GAIN);
     for (;;) {
-        int32_t edge = next_edge(slot_time);
+        int32_t edge = next_edge(d.last_pulse);
         if (edge < 0) { /* the frame stopped short */
             count(&stats.broken);
             return false;
         }
-        while ((int16_t)((uint16_t)edge - slot_time) > (int16_t)(BIT / 2u)) {
-            slot_time = (uint16_t)(slot_time + BIT);
-            if (slot < HEADER_SLOTS)
-                slot++;
-            else if (++bit == 10u) {
-                bit = 0;
-                byte++;
-            }
-        }
-        if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
-            count(&stats.collisions);
-            return false;
-        }
-        if (slot == HEADER_SLOTS - 1u) {
-            header_stopped = true;
-            slot_time = (uint16_t)edge; /* the sender's clock, afresh */
+        switch (ir_wire_decode_pulse(&d, (uint16_t)edge)) {
+        case IR_WIRE_MORE: break;
+        case IR_WIRE_HEADER_STOP: /* the gains are the sender's */
             rx->high_gain = kilobot_adc_take();
             kilobot_adc_start(KILOBOT_ADC_IR_LOW_GAIN);
-            continue;
-        }
-        /* Without its stop pulse the header gave no low-gain reading: the
-         * distance would come from the high gain's alone. */
-        if (!header_stopped) return broken((uint16_t)edge);
-        if (byte == KILOBOT_IR_FRAME_BYTES) return broken((uint16_t)edge); /* pulses past the frame's end */
-        if (bit == 0u)
-            slot_time = (uint16_t)edge; /* a start bit: the sender's clock, afresh */
-        else if (bit <= 8u)
-            rx->frame[byte] |= (uint8_t)(1u << (bit - 1u));
-        else if (byte == KILOBOT_IR_FRAME_BYTES - 1u) { /* the last stop bit */
-            rx->low_gain = kilobot_adc_take();
-            return true;
+            break;
+        case IR_WIRE_WHOLE: rx->low_gain = kilobot_adc_take(); return true;
+        case IR_WIRE_COLLISION: count(&stats.collisions); return false;
+        case IR_WIRE_BROKEN: return broken((uint16_t)edge);
         }
     }
 }
@@ -198,12 +164,12 @@ static void flash(void) {
 static void send_slots(const uint8_t *frame) {
     uint16_t t0 = TCNT1;
     uint16_t at = t0;
-    for (uint8_t slot = 0; slot < SLOTS; slot++, at = (uint16_t)(at + BIT)) {
+    for (uint8_t slot = 0; slot < IR_WIRE_SLOTS; slot++, at = (uint16_t)(at + BIT)) {
         uint8_t one;
-        if (slot < HEADER_SLOTS) {
-            one = slot == 0u || slot == HEADER_SLOTS - 1u;
+        if (slot < IR_WIRE_HEADER_SLOTS) {
+            one = slot == 0u || slot == IR_WIRE_HEADER_SLOTS - 1u;
         } else {
-            uint8_t s = (uint8_t)(slot - HEADER_SLOTS), bit = s % 10u;
+            uint8_t s = (uint8_t)(slot - IR_WIRE_HEADER_SLOTS), bit = s % 10u;
             one = bit == 0u || bit == 9u || ((frame[s / 10u] >> (bit - 1u)) & 1u);
         }
         while ((int16_t)(TCNT1 - at) < 0) take_missed_tick();
@@ -239,8 +205,7 @@ uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void
     (void)dev;
     const kilobot_ir_rx *r = in;
     if (size != sizeof *r || cap < sizeof *r) return 0;
-    uint16_t crc = (uint16_t)(r->frame[10] | (uint16_t)r->frame[11] << 8);
-    if (crc != kilobot_crc(r->frame, 10)) {
+    if (!ir_wire_frame_intact(r->frame)) {
         count(&stats.bad_crc);
         return 0;
     }
