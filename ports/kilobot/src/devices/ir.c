@@ -107,10 +107,12 @@ static int32_t next_edge(uint16_t last) {
  * pulse and again from the stop pulse and each byte's start bit (always a
  * 1), as a UART does: robots' clocks differ by a percent or two, which over
  * a whole frame's 130 slots would add up to more than half a slot. */
-/* A broken frame counts once: the rest of its pulses are let pass until
- * the channel is quiet, or each would start another broken reception. */
-static bool broken(uint16_t last_edge) {
-    count(&stats.broken);
+/* A frame that is no message - broken, or two senders' collided - counts
+ * once: the rest of its pulses are let pass until the channel is quiet,
+ * or each would start another reception and count again (a pulse lost
+ * from a header made a dozen collisions of one frame). */
+static bool discard(uint16_t *counter, uint16_t last_edge) {
+    count(counter);
     for (int32_t edge = last_edge; edge >= 0; edge = next_edge((uint16_t)edge)) {
     }
     return false;
@@ -140,10 +142,8 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
                 byte++;
             }
         }
-        if (slot < HEADER_SLOTS - 1u) { /* a pulse inside the header: two senders */
-            count(&stats.collisions);
-            return false;
-        }
+        if (slot < HEADER_SLOTS - 1u) /* a pulse inside the header: two senders */
+            return discard(&stats.collisions, (uint16_t)edge);
         if (slot == HEADER_SLOTS - 1u) {
             header_stopped = true;
             slot_time = (uint16_t)edge; /* the sender's clock, afresh */
@@ -153,8 +153,9 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
         }
         /* Without its stop pulse the header gave no low-gain reading: the
          * distance would come from the high gain's alone. */
-        if (!header_stopped) return broken((uint16_t)edge);
-        if (byte == KILOBOT_IR_FRAME_BYTES) return broken((uint16_t)edge); /* pulses past the frame's end */
+        if (!header_stopped) return discard(&stats.broken, (uint16_t)edge);
+        if (byte == KILOBOT_IR_FRAME_BYTES) /* pulses past the frame's end */
+            return discard(&stats.broken, (uint16_t)edge);
         if (bit == 0u)
             slot_time = (uint16_t)edge; /* a start bit: the sender's clock, afresh */
         else if (bit <= 8u)
