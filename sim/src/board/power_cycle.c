@@ -16,7 +16,25 @@
  * garbage: firmware must not trust it, and the start-up code does not). */
 #include <string.h>
 
+#include <avr_ioport.h>
+#include <avr_timer.h>
+#include <sim_io.h>
+
 #include "faults/faults.h"
+
+/* avr_reset clears the registers but not the values simavr's output IRQs
+ * last carried, and a raise to the value an IRQ holds may notify nobody:
+ * after a reset the LED's DDR bits set as before, or the IR LED lit again,
+ * would go unseen (the trace, the IR channel). Lowered here, as the pins
+ * are now; whoever listens is told. */
+static void outputs_as_at_reset(avr_t *avr) {
+    static const char ports[] = {'B', 'C', 'D'};
+    for (size_t i = 0; i < sizeof ports; i++)
+        avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ(ports[i]), IOPORT_IRQ_DIRECTION_ALL), 0);
+    avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0), 0); /* the IR LED */
+    avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM0), 0);
+    avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_TIMER_GETIRQ('2'), TIMER_IRQ_OUT_PWM1), 0);
+}
 
 static void start_again(robot *r) {
     avr_reset(r->avr);
@@ -27,6 +45,7 @@ static void start_again(robot *r) {
     r->wake_registered = 0;
     r->masked_since = 0;
     board_pins_again(r->avr);
+    outputs_as_at_reset(r->avr);
     trace_reset(r);
     console_reset(r);
     ir_channel_robot_reset(r->index);
@@ -37,14 +56,17 @@ void power_cycle_reset(robot *r) {
     ohc_robot_reset(r);
 }
 
+/* Out of the lockstep until power_cycle_on: a robot dozing until the
+ * power returned would run the whole outage in the window that reaches it. */
+#define NEVER ((avr_cycle_count_t)-1)
+
 void power_cycle_off(robot *r, avr_cycle_count_t on) {
     start_again(r);
     r->off_until = on;
-    r->doze_until = on; /* the lockstep passes it by */
+    r->doze_until = NEVER;
 }
 
-void power_cycle_on(robot *r, uint32_t nominal_hz) {
-    avr_cycle_count_t on = r->off_until;
+void power_cycle_on(robot *r, avr_cycle_count_t on, uint32_t nominal_hz) {
     uint32_t f = r->avr->frequency;
     avr_cycle_count_t own = f == nominal_hz ? on : on * f / nominal_hz;
     if (own > r->avr->cycle) r->avr->cycle = own;

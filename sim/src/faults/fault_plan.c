@@ -254,7 +254,7 @@ void faults_after_window(avr_cycle_count_t end) {
     double t = (double)end / nominal_hz;
     for (int i = 0; i < n_robots; i++) {
         robot_faults *p = &plans[i];
-        if (robots[i].off_until != 0 && robots[i].off_until <= end) power_cycle_on(&robots[i], nominal_hz);
+        if (robots[i].off_until != 0 && robots[i].off_until <= end) power_cycle_on(&robots[i], end, nominal_hz);
         for (; p->next_reset_s <= t; p->next_reset_s += exponential_s(&p->rng, spec.resets_per_hour))
             inject(FAULT_RESET, i, end);
         for (; p->next_brownout_s <= t;

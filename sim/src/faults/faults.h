@@ -73,8 +73,9 @@ void fault_log_close(void);
 
 /* board/power_cycle.c: what a reset and a power cut do to one robot. */
 void power_cycle_reset(robot *r);
-/* Power off at the nominal clock's cycle now, on again at cycle on. */
+/* Power off now, until cycle on of the nominal clock (r->off_until); then
+ * power_cycle_on at the end of the window that reaches it, cycle on. */
 void power_cycle_off(robot *r, avr_cycle_count_t on);
-void power_cycle_on(robot *r, uint32_t nominal_hz);
+void power_cycle_on(robot *r, avr_cycle_count_t on, uint32_t nominal_hz);
 
 #endif
