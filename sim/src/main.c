@@ -147,9 +147,18 @@ static int load_robots(const options *o, FILE *csv) {
     return 0;
 }
 
+/* --counters: every robot's, at the nominal clock's cycle now. */
+static void print_counters(const options *o, avr_cycle_count_t now) {
+    for (int i = 0; i < o->robots; i++)
+        firmware_counters_print(&robots[i], firmware_of(o, i), (double)now / nominal_hz);
+    fflush(stdout);
+}
+
 /* The robots in lockstep windows until the time is up or all stopped. */
 static void run(const options *o) {
     avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
+    avr_cycle_count_t counters_every = (avr_cycle_count_t)(o->counters_period * (double)nominal_hz);
+    avr_cycle_count_t next_counters = counters_every;
     lockstep_begin(robots, o->robots, nominal_hz, o->threads, o->profile);
     progress_start(o->progress, o->robots, nominal_hz);
     for (avr_cycle_count_t end = 0;;) {
@@ -162,7 +171,12 @@ static void run(const options *o) {
         for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
         progress_update(end);
         if (all_stopped || end == limit) break;
+        if (counters_every != 0 && end >= next_counters) {
+            print_counters(o, end);
+            next_counters += counters_every;
+        }
     }
+    if (o->counters_period >= 0) print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
     progress_end();
     lockstep_end();
 }

@@ -63,6 +63,9 @@ static void usage(FILE *out) {
             "                       reset:ROBOT@SECONDS, brownout:ROBOT@SECONDS, blank:ROBOT\n"
             "                       (ROBOT: the index); e.g. --faults reset=2,flip=0.1,seed=7\n"
             "      --fault-log FILE one line per injected fault (default: stderr)\n"
+            "      --counters PERIOD  print every robot's kernel and IR counters and main\n"
+            "                       stack use, read from its RAM, every PERIOD seconds of\n"
+            "                       simulated time and at the end (0: at the end only)\n"
             "      --ir-log         print every frame a robot sends, decoded from its IR\n"
             "                       flashes by the Kilobot wire format: bytes, CRC, timing\n"
             "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
@@ -141,6 +144,18 @@ static int percentage(const char *option, const char *text, double max, const ch
         return -1;
     }
     *out = v;
+    return 0;
+}
+
+static int parse_period(const char *text, options *o) {
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || !(v >= 0 && v <= 1e6)) {
+        fprintf(stderr, "openswarm-sim: --counters '%s': expected seconds between reports, 0..1000000 "
+                        "(0: at the end only), e.g. --counters 600\n", text);
+        return -1;
+    }
+    o->counters_period = v;
     return 0;
 }
 
@@ -225,6 +240,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"mask-limit", required_argument, 0, 'M' + 256}, {"main-stack", no_argument, 0, 'S' + 256},
         {"timestamps", no_argument, 0, 'T' + 256},
         {"faults", required_argument, 0, 'f' + 256}, {"fault-log", required_argument, 0, 'l' + 256},
+        {"counters", required_argument, 0, 'c' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -234,6 +250,7 @@ int parse_options(int argc, char **argv, options *o) {
     placement_options place = {-1, NULL, NULL, 0};
     o->uid = -1;
     o->progress = -1;
+    o->counters_period = -1;
     o->light_mv = o->voltage_mv = o->temperature_mv = -1;
     for (int i = 0; i < 4; i++) o->calibration[i] = -1;
     int c;
@@ -249,6 +266,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'T' + 256: o->timestamps = 1; break;
         case 'f' + 256: if (add_faults(optarg, o) != 0) return -1; break;
         case 'l' + 256: o->fault_log = optarg; break;
+        case 'c' + 256: if (parse_period(optarg, o) != 0) return -1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;

@@ -91,6 +91,7 @@ typedef struct options {
     int threads;        /* --threads: 0 picks by the machine and the swarm */
     struct fault_spec *faults; /* --faults (faults/faults.h); NULL: none */
     const char *fault_log;     /* --fault-log FILE */
+    double counters_period;    /* --counters PERIOD: seconds; 0: at the end only; -1: never */
 } options;
 
 /* What the command line set, for what a world file may also set. */
@@ -214,6 +215,11 @@ int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx);
  * its room at load; report prints it (print) and says if it overflowed
  * (returns 1). */
 void main_stack_paint(robot *r, const char *elf_path);
+/* Bytes of the main stack used at worst (0 if unmeasured) and its room. */
+unsigned main_stack_worst(const robot *r, unsigned *room);
+/* firmware_counters.c: --counters, robot r's kernel and IR counters and
+ * main stack, read from its RAM by symbol, as one line on stdout. */
+void firmware_counters_print(const robot *r, const char *elf_path, double seconds);
 int main_stack_report(const robot *r, int print);
 
 /* interrupt_watch.c: a robot running with interrupts masked for more than

@@ -28,7 +28,9 @@
 #define TX_PIN _BV(PB0)
 
 static volatile uint8_t receiving; /* carrier sense for the transmitter */
-static kilobot_ir_stats stats;
+/* Its own name: the simulator reads it from the firmware's RAM by name
+ * (openswarm-sim --counters). */
+static kilobot_ir_stats ir_stats;
 
 /* A count that stops at its top: a wrapped one could read 0 after 65536 losses. */
 static void count(uint16_t *counter) {
@@ -44,7 +46,7 @@ uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
 void kilobot_ir_get_stats(kilobot_ir_stats *out) {
     uint8_t sreg = SREG;
     cli();
-    *out = stats;
+    *out = ir_stats;
     SREG = sreg;
 }
 
@@ -130,7 +132,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     for (;;) {
         int32_t edge = next_edge(slot_time);
         if (edge < 0) { /* the frame stopped short */
-            count(&stats.broken);
+            count(&ir_stats.broken);
             return false;
         }
         while ((int16_t)((uint16_t)edge - slot_time) > (int16_t)(BIT / 2u)) {
@@ -143,7 +145,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
             }
         }
         if (slot < HEADER_SLOTS - 1u) /* a pulse inside the header: two senders */
-            return discard(&stats.collisions, (uint16_t)edge);
+            return discard(&ir_stats.collisions, (uint16_t)edge);
         if (slot == HEADER_SLOTS - 1u) {
             header_stopped = true;
             slot_time = (uint16_t)edge; /* the sender's clock, afresh */
@@ -153,9 +155,9 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
         }
         /* Without its stop pulse the header gave no low-gain reading: the
          * distance would come from the high gain's alone. */
-        if (!header_stopped) return discard(&stats.broken, (uint16_t)edge);
+        if (!header_stopped) return discard(&ir_stats.broken, (uint16_t)edge);
         if (byte == KILOBOT_IR_FRAME_BYTES) /* pulses past the frame's end */
-            return discard(&stats.broken, (uint16_t)edge);
+            return discard(&ir_stats.broken, (uint16_t)edge);
         if (bit == 0u)
             slot_time = (uint16_t)edge; /* a start bit: the sender's clock, afresh */
         else if (bit <= 8u)
@@ -181,9 +183,9 @@ ISR(TIMER1_CAPT_vect) {
      * kernel full. */
     sys_status st = Sys_Device_Read(&kilobot_ir, &rx, sizeof rx, NULL, 0, NULL);
     if (st == SYS_OK)
-        count(&stats.received);
+        count(&ir_stats.received);
     else if (st != SYS_E_NOT_FOUND)
-        count(&stats.refused);
+        count(&ir_stats.refused);
     os_isr_exit();
 }
 
@@ -216,7 +218,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     uint8_t sreg = SREG;
     cli();
     if (receiving || (TIFR1 & _BV(ICF1))) { /* carrier sense: someone is talking */
-        count(&stats.busy);
+        count(&ir_stats.busy);
         SREG = sreg;
         return SYS_E_QUEUE_FULL;
     }
@@ -226,7 +228,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
      * frame's start, they would hold us deaf in a bogus reception for a
      * whole frame time, just as the robot that waited for us answers. */
     TIFR1 = _BV(ICF1);
-    count(&stats.sent);
+    count(&ir_stats.sent);
     catch_up_ticks();
     SREG = sreg;
     return SYS_OK;
@@ -242,7 +244,7 @@ uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void
     if (size != sizeof *r || cap < sizeof *r) return 0;
     uint16_t crc = (uint16_t)(r->frame[10] | (uint16_t)r->frame[11] << 8);
     if (crc != kilobot_crc(r->frame, 10)) {
-        count(&stats.bad_crc);
+        count(&ir_stats.bad_crc);
         return 0;
     }
     if (kilobot_overhead_control_take(r->frame)) return 0; /* the robot's, not the app's */
