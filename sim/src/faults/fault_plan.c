@@ -40,9 +40,10 @@ static int next_at;                /* spec.at[], sorted by time: the next to fir
 
 static void spec_usage(const char *text, const char *what) {
     fprintf(stderr,
-            "openswarm-sim: --faults '%s': %s; expected a comma-separated list of reset=PER_HOUR, "
-            "brownout=PER_HOUR, brownout-ms=MS, flip=PCT, cut=PCT, blank=ROBOTS, seed=N, "
-            "reset:ROBOT@SECONDS, brownout:ROBOT@SECONDS, blank:ROBOT; e.g. --faults "
+            "openswarm-sim: --faults '%s': %s; expected a comma-separated list of reset=PER_HOUR "
+            "(0..36000), brownout=PER_HOUR (0..36000), brownout-ms=MS (0.01..60000), flip=PCT "
+            "(0..10), cut=PCT (0..100), blank=ROBOTS, seed=N, reset:ROBOT@SECONDS, "
+            "brownout:ROBOT@SECONDS, blank:ROBOT; e.g. --faults "
             "reset=2,flip=0.1,cut=1,seed=7 (docs/world.md, \"Fault injection\")\n",
             text, what);
 }
@@ -127,8 +128,14 @@ int faults_parse(const char *text, fault_spec *s) {
         next = strchr(item, ',');
         if (next != NULL) *next++ = '\0';
         if (parse_item(item, s) != 0) {
-            spec_usage(text, s->n_at == MAX_FAULTS_AT ? "too many faults at given times (64 at most)"
-                                                      : item[0] ? item : "an empty item");
+            char what[96];
+            if (s->n_at == MAX_FAULTS_AT)
+                snprintf(what, sizeof what, "too many faults at given times (64 at most)");
+            else if (item[0] == '\0')
+                snprintf(what, sizeof what, "an empty item");
+            else
+                snprintf(what, sizeof what, "'%.60s' is unknown or out of its range", item);
+            spec_usage(text, what);
             status = -1;
         }
     }
