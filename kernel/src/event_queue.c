@@ -66,12 +66,12 @@ static OS_COLD sys_status push_or_refuse(sys_event_id event, const void *data, u
     uint8_t used = os.queued_bytes;
     uint8_t room = (uint8_t)(QUEUE_BYTES - used); /* a variable: with 255 bytes, GCC sees ~used */
     if (record > room) {
-        os_count(&os.stats.event_queue_full);
+        os_count(&os_stats.event_queue_full);
         return SYS_E_QUEUE_FULL;
     }
     used = (uint8_t)(used + record);
     os.queued_bytes = used;
-    if (used > os.stats.event_queue_peak) os.stats.event_queue_peak = used;
+    if (used > os_stats.event_queue_peak) os_stats.event_queue_peak = used;
     put(event);
     put(size);
     const uint8_t *src = (const uint8_t *)data;
@@ -106,7 +106,7 @@ static OS_COLD uint8_t pop_ring(void) {
     os_event_slot *slot = &os_events[event]; /* the ring only holds ids that were valid */
     if (slot->size == OS_EVENT_UNREGISTERED || size > slot->capacity) {
         for (uint8_t n = size; n != 0; n--) get(); /* skipped */
-        os_count(&os.stats.events_discarded);
+        os_count(&os_stats.events_discarded);
         return NOTHING_HELD;
     }
     slot->size = size;
@@ -127,5 +127,5 @@ bool os_event_queue_pop(sys_event_data *out) {
 void os_event_queue_forget(sys_event_id event) {
     if (!os_event_queue_holds(event)) return;
     os.held_event = NOTHING_HELD; /* its kept data goes with the registration */
-    os_count(&os.stats.events_discarded);
+    os_count(&os_stats.events_discarded);
 }

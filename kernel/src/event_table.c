@@ -85,7 +85,7 @@ static bool take_data_block(os_event_slot *slot, uint8_t capacity) {
 static OS_COLD sys_status register_slot(os_event_slot *slot, uint8_t capacity) {
     if (slot->size != UNREGISTERED) return SYS_E_EXISTS;
     if (!take_data_block(slot, capacity)) {
-        os_count(&os.stats.event_data_full);
+        os_count(&os_stats.event_data_full);
         return SYS_E_POOL_FULL;
     }
     slot->size = NOTHING_KEPT; /* no listener yet: the clock event's state stays */
@@ -195,7 +195,7 @@ static sys_status subscribe(sys_event_id event, sys_pid pid, sys_event_handler h
     } else if (find_subscription(event, pid, handler, binding) != NULL) {
         st = SYS_E_EXISTS;
     } else if (!subscription_room()) {
-        os_count(&os.stats.subscription_pool_full);
+        os_count(&os_stats.subscription_pool_full);
         st = SYS_E_POOL_FULL;
     } else {
         subscription *sub = subs_end++;
@@ -257,7 +257,7 @@ bool os_event_has_listeners(sys_event_id event) {
 /* A handler must not leave a critical section open: it is closed for it. */
 static OS_COLD void close_leaked_section(sys_pid pid) {
     os.lock_depth = 0;
-    os_count(&os.stats.critical_leaks);
+    os_count(&os_stats.critical_leaks);
     os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
 }
 

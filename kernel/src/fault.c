@@ -3,7 +3,9 @@
 
 #include <string.h>
 
-void os_stats_reset(void) { memset(&os.stats, 0, sizeof os.stats); }
+sys_stats os_stats;
+
+void os_stats_reset(void) { memset(&os_stats, 0, sizeof os_stats); }
 
 /* Counters stop at their top: one that wrapped could read 0 after 65536
  * losses. */
@@ -13,7 +15,7 @@ OS_COLD void os_count(uint16_t *counter) {
 
 void Sys_Get_Stats(sys_stats *stats) {
     port_irq_state_t s = port_irq_save();
-    *stats = os.stats;
+    *stats = os_stats;
     port_irq_restore(s);
 }
 

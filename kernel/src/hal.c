@@ -84,7 +84,7 @@ static sys_status register_device(sys_device *dev) {
         return SYS_E_EXISTS;
     int slot = device_index(NULL);
     if (slot < 0) {
-        os_count(&os.stats.device_table_full);
+        os_count(&os_stats.device_table_full);
         return SYS_E_POOL_FULL;
     }
     bool new_event = false, new_tx = false;

@@ -8,6 +8,7 @@ os_kernel os;
 void Sys_Init_Kernel(void) {
     port_irq_disable();
     memset(&os, 0, sizeof os);
+    os_stats_reset();
     /* Free slots; their pids get the slot when a thread starts in one. */
     for (unsigned i = 1; i < OS_CFG_MAX_THREADS; i++) os.threads[i].state = OS_SLOT_FREE;
     os.current = OS_SYSTEM;

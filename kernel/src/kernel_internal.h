@@ -91,11 +91,14 @@ typedef struct os_kernel {
 #if OS_CFG_CLOCK_EVENT
     uint8_t clock_listeners; /* has SYS_EVENT_1MS_TIMER a handler or waiter: OS_CLOCK_* */
 #endif
-    sys_stats stats;
     sys_fault_hook fault_hook;
 } os_kernel;
 
 extern os_kernel os;
+/* The resource counters (Sys_Get_Stats), apart from os under a name of
+ * their own: the simulator reads them from the firmware's RAM by that name
+ * (openswarm-sim --counters). */
+extern sys_stats os_stats;
 
 static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
 

@@ -26,7 +26,7 @@ sys_status Sys_Start_Process_Ex(sys_process_fn fn, void *arg, uint16_t stack_byt
     sys_tcb *t = free_slot();
     size_t size = t != NULL ? os_stack_alloc(t, stack_bytes) : 0;
     if (size == 0) {
-        os_count(t == NULL ? &os.stats.process_pool_full : &os.stats.stack_pool_full);
+        os_count(t == NULL ? &os_stats.process_pool_full : &os_stats.stack_pool_full);
         port_irq_restore(s);
         return SYS_E_POOL_FULL;
     }
@@ -72,7 +72,7 @@ sys_pid Sys_Start_Process(void (*fn)(void)) {
 static void make_zombie(sys_tcb *t) {
     if (t == os.current && os.lock_depth != 0) {
         os.lock_depth = 0;
-        os_count(&os.stats.critical_leaks);
+        os_count(&os_stats.critical_leaks);
         os_fault(SYS_FAULT_CRITICAL_LEAK, t->pid);
     }
     os_subscriptions_remove_thread(t->pid);
@@ -127,7 +127,7 @@ void os_thread_exit(void) {
 
 void os_thread_fault(uint8_t fault) {
     port_irq_disable();
-    os_count(&os.stats.cpu_faults);
+    os_count(&os_stats.cpu_faults);
     os_fault((sys_fault)fault, os.current->pid);
     os_thread_exit();
 }

@@ -62,7 +62,7 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
  * and is stopped before it runs on, unless it is ending anyway. */
 void os_stack_overflowed(sys_tcb *t) {
     if (t->state == SYS_PROCESS_ZOMBIE) return;
-    os_count(&os.stats.stack_overflows);
+    os_count(&os_stats.stack_overflows);
     os_fault(SYS_FAULT_STACK_OVERFLOW, t->pid);
     os_terminate(t);
 }

@@ -12,7 +12,7 @@ void os_tick(void) {
     /* A handler that never returns holds up everything the system thread
      * does: said once, when it reaches the limit. */
     if (os.handling_event != 0 && ++os.handler_ms == OS_CFG_HANDLER_LIMIT_MS) {
-        os_count(&os.stats.handler_overruns);
+        os_count(&os_stats.handler_overruns);
         os_fault(SYS_FAULT_HANDLER_OVERRUN, SYS_PID_SYSTEM);
     }
 #endif

@@ -8,6 +8,7 @@
 #include <sim_cycle_timers.h>
 
 #include "sim.h"
+#include "faults/faults.h"
 #include "lockstep.h"
 #include "progress.h"
 #include "world/world_run.h"
@@ -61,6 +62,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
         world_robot_noise(r, index);
     }
     board_configure(r->avr, o, uid, calibration);
+    if (faults_blank_calibration(index)) board_erase_calibration(r->avr);
     adc_trigger_attach(r->avr);
     char prefix[sizeof r->console.prefix] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
@@ -145,9 +147,18 @@ static int load_robots(const options *o, FILE *csv) {
     return 0;
 }
 
+/* --counters: every robot's, at the nominal clock's cycle now. */
+static void print_counters(const options *o, avr_cycle_count_t now) {
+    for (int i = 0; i < o->robots; i++)
+        firmware_counters_print(&robots[i], firmware_of(o, i), (double)now / nominal_hz);
+    fflush(stdout);
+}
+
 /* The robots in lockstep windows until the time is up or all stopped. */
 static void run(const options *o) {
     avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
+    avr_cycle_count_t counters_every = (avr_cycle_count_t)(o->counters_period * (double)nominal_hz);
+    avr_cycle_count_t next_counters = counters_every;
     lockstep_begin(robots, o->robots, nominal_hz, o->threads, o->profile);
     progress_start(o->progress, o->robots, nominal_hz);
     for (avr_cycle_count_t end = 0;;) {
@@ -155,11 +166,17 @@ static void run(const options *o) {
         if (end > limit) end = limit;
         int all_stopped = lockstep_window(end);
         ir_channel_hand_over(LOCKSTEP_CYCLES);
+        faults_after_window(end);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
         progress_update(end);
         if (all_stopped || end == limit) break;
+        if (counters_every != 0 && end >= next_counters) {
+            print_counters(o, end);
+            next_counters += counters_every;
+        }
     }
+    if (o->counters_period >= 0) print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
     progress_end();
     lockstep_end();
 }
@@ -167,7 +184,14 @@ static void run(const options *o) {
 int main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
-    if (o.world != NULL && world_run_is_epuck()) return world_run_epucks(&o);
+    if (o.world != NULL && world_run_is_epuck()) {
+        if (o.faults != NULL) {
+            fprintf(stderr, "openswarm-sim: --faults injects faults into Kilobots' simulated MCUs and "
+                            "IR; %s holds e-pucks: drop --faults\n", o.world);
+            return EXIT_USAGE;
+        }
+        return world_run_epucks(&o);
+    }
     for (int i = 0; i < o.robots; i++)
         if ((i == 0 || firmware_of(&o, i) != firmware_of(&o, i - 1)) &&
             firmware_check(firmware_of(&o, i)) != 0)
@@ -182,6 +206,7 @@ int main(int argc, char **argv) {
         }
         fprintf(csv, "time_s,cycle,robot,device,a,b,c\n");
     }
+    if (o.faults != NULL && faults_start(o.faults, o.robots) != 0) return EXIT_USAGE;
     if (load_robots(&o, csv) != 0) return EXIT_USAGE;
     if (o.robots > 1 && !o.quiet && o.uid >= 0) /* "[robot 0]" is an index; programs see the uid */
         fprintf(stderr, "openswarm-sim: robots 0..%d have uids %d..%d\n", o.robots - 1, o.uid,
@@ -189,6 +214,7 @@ int main(int argc, char **argv) {
     if (o.n_elves > 1 && !o.quiet && o.world == NULL) print_firmware_legend(&o);
     if (o.ir_log) ir_log_enable(o.robots);
     ohc_attach(robots, o.robots, &o);
+    faults_attach(robots, nominal_hz);
 
     run(&o);
     for (int i = 0; i < o.robots; i++) {
@@ -197,6 +223,7 @@ int main(int argc, char **argv) {
     }
     if (csv != NULL) fclose(csv);
     if (o.profile) profile_print(o.robots);
+    faults_finish();
     int written = o.world != NULL ? world_run_finish() : 0;
     int status = report(o.robots, &o);
     return status == 0 && written != 0 ? EXIT_USAGE : status;

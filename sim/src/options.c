@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sim.h"
+#include "faults/faults.h"
 #include "world/world_run.h"
 
 #define DEFAULT_DISTANCE_MM 50
@@ -53,6 +54,18 @@ static void usage(FILE *out) {
             "      --clock-spread PCT  the robots' clocks differ: each runs fast or slow by up\n"
             "                       to PCT percent (0..5), spread evenly over the robots in a\n"
             "                       fixed order; 0 (default): all exactly at the ELF's clock\n"
+            "      --faults SPEC    inject faults, a comma-separated list: reset=PER_HOUR and\n"
+            "                       brownout=PER_HOUR (each robot, at random times),\n"
+            "                       brownout-ms=MS (power off, default 50), flip=PCT (each\n"
+            "                       slot of a frame at each receiver: a pulse lost or added),\n"
+            "                       cut=PCT (a frame at a receiver cut short), blank=ROBOTS\n"
+            "                       (that many robots' EEPROM calibration blank), seed=N;\n"
+            "                       reset:ROBOT@SECONDS, brownout:ROBOT@SECONDS, blank:ROBOT\n"
+            "                       (ROBOT: the index); e.g. --faults reset=2,flip=0.1,seed=7\n"
+            "      --fault-log FILE one line per injected fault (default: stderr)\n"
+            "      --counters PERIOD  print every robot's kernel and IR counters and main\n"
+            "                       stack use, read from its RAM, every PERIOD seconds of\n"
+            "                       simulated time and at the end (0: at the end only)\n"
             "      --ir-log         print every frame a robot sends, decoded from its IR\n"
             "                       flashes by the Kilobot wire format: bytes, CRC, timing\n"
             "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
@@ -136,6 +149,18 @@ static int percentage(const char *option, const char *text, double max, const ch
 
 #define MAX_SECONDS 1000000 /* 11.6 days of robot time: 8e12 cycles, far from 64 bits' end */
 
+static int parse_period(const char *text, options *o) {
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || !(v >= 0 && v <= 1e6)) {
+        fprintf(stderr, "openswarm-sim: --counters '%s': expected seconds between reports, 0..1000000 "
+                        "(0: at the end only), e.g. --counters 600\n", text);
+        return -1;
+    }
+    o->counters_period = v;
+    return 0;
+}
+
 static int parse_time(const char *text, options *o) {
     char *end;
     o->seconds = strtod(text, &end);
@@ -181,6 +206,15 @@ static int take_firmware(int n, char **paths, placement_options *place, options 
     return 0;
 }
 
+/* --faults, repeatable: each adds to the spec. */
+static int add_faults(const char *text, options *o) {
+    if (o->faults == NULL && (o->faults = calloc(1, sizeof *o->faults)) == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for --faults\n");
+        return -1;
+    }
+    return faults_parse(text, o->faults);
+}
+
 static int one_firmware(const options *o) {
     for (int i = 1; i < o->robots; i++)
         if (strcmp(firmware_of(o, i), firmware_of(o, 0)) != 0) return 0;
@@ -209,6 +243,8 @@ int parse_options(int argc, char **argv, options *o) {
         {"allow-faults", no_argument, 0, 'A' + 256},
         {"mask-limit", required_argument, 0, 'M' + 256}, {"main-stack", no_argument, 0, 'S' + 256},
         {"timestamps", no_argument, 0, 'T' + 256},
+        {"faults", required_argument, 0, 'f' + 256}, {"fault-log", required_argument, 0, 'l' + 256},
+        {"counters", required_argument, 0, 'c' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -218,6 +254,7 @@ int parse_options(int argc, char **argv, options *o) {
     placement_options place = {-1, NULL, NULL, 0};
     o->uid = -1;
     o->progress = -1;
+    o->counters_period = -1;
     o->light_mv = o->voltage_mv = o->temperature_mv = -1;
     for (int i = 0; i < 4; i++) o->calibration[i] = -1;
     int c;
@@ -231,6 +268,9 @@ int parse_options(int argc, char **argv, options *o) {
         case 'M' + 256: if ((v = number("--mask-limit", optarg, 0, 3600000, "1000")) < 0) return -1; o->mask_limit_ms = (double)v; break;
         case 'S' + 256: o->main_stack = 1; break;
         case 'T' + 256: o->timestamps = 1; break;
+        case 'f' + 256: if (add_faults(optarg, o) != 0) return -1; break;
+        case 'l' + 256: o->fault_log = optarg; break;
+        case 'c' + 256: if (parse_period(optarg, o) != 0) return -1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;
@@ -290,6 +330,15 @@ int parse_options(int argc, char **argv, options *o) {
 /* The checks that need the robots' count: after a placement option or a
  * world file set it. */
 int options_check_robots(options *o) {
+    if (o->fault_log != NULL && o->faults == NULL) {
+        fprintf(stderr, "openswarm-sim: --fault-log %s logs injected faults: give --faults SPEC too\n",
+                o->fault_log);
+        return -1;
+    }
+    if (o->faults != NULL) {
+        o->faults->log_path = o->fault_log;
+        if (faults_check(o->faults, o->robots) != 0) return -1;
+    }
     if (o->n_elves > o->robots) {
         fprintf(stderr, "openswarm-sim: %d firmware files for %d robots: give at most one per robot "
                         "(the last one also runs on the robots after it)\n", o->n_elves, o->robots);

@@ -89,6 +89,9 @@ typedef struct options {
     int video;          /* --video: also video.mp4 */
     int progress;       /* a status line on stderr while it runs: -1 auto, 0 no, 1 yes */
     int threads;        /* --threads: 0 picks by the machine and the swarm */
+    struct fault_spec *faults; /* --faults (faults/faults.h); NULL: none */
+    const char *fault_log;     /* --fault-log FILE */
+    double counters_period;    /* --counters PERIOD: seconds; 0: at the end only; -1: never */
 } options;
 
 /* What the command line set, for what a world file may also set. */
@@ -193,6 +196,9 @@ typedef struct robot {
     uint16_t main_stack_floor; /* the RAM the image reserves ends here; 0: unmeasured */
     avr_cycle_count_t masked_since; /* interrupts off since this cycle; 0: they are on */
     int hung;                  /* reported: interrupts masked past the limit */
+    /* Powered off (--faults brownout) until this cycle of the nominal
+     * clock: not run, deaf to IR. 0: powered. */
+    avr_cycle_count_t off_until;
 } robot;
 
 /* firmware.c: check and load an ELF into a new simulated MCU */
@@ -209,6 +215,11 @@ int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx);
  * its room at load; report prints it (print) and says if it overflowed
  * (returns 1). */
 void main_stack_paint(robot *r, const char *elf_path);
+/* Bytes of the main stack used at worst (0 if unmeasured) and its room. */
+unsigned main_stack_worst(const robot *r, unsigned *room);
+/* firmware_counters.c: --counters, robot r's kernel and IR counters and
+ * main stack, read from its RAM by symbol, as one line on stdout. */
+void firmware_counters_print(const robot *r, const char *elf_path, double seconds);
 int main_stack_report(const robot *r, int print);
 
 /* interrupt_watch.c: a robot running with interrupts masked for more than
@@ -231,10 +242,14 @@ void profile_print(int robots);
 
 /* console.c */
 void console_attach(robot *r, int quiet, int timestamps, const char *prefix);
+/* After a reset: a kernel fault record or thread name under way is dropped. */
+void console_reset(robot *r);
 
 /* robot_trace.c */
 void trace_attach(robot *r, int print, FILE *csv);
 void trace_flush(robot *r);
+/* After a reset: the LED dark, the motors still (as the chip's pins). */
+void trace_reset(robot *r);
 /* The LED's colour now, each channel 0..3. */
 void trace_led(const robot *r, uint8_t rgb[3]);
 
@@ -244,6 +259,12 @@ void trace_led(const robot *r, uint8_t rgb[3]);
 /* kilobot_board.c: what the robot's EEPROM and sensors hold: uid -1
  * leaves the EEPROM's uid erased, a calibration duty -1 its byte. */
 void board_configure(avr_t *avr, const options *o, int uid, const int calibration[4]);
+/* After a reset (simavr clears the I/O registers): the pins the board
+ * drives read as they did. */
+void board_pins_again(avr_t *avr);
+/* The calibration blank, as a robot never calibrated: OSCCAL, the motor
+ * duties and the distance tables read 0xFF (the uid stays). */
+void board_erase_calibration(avr_t *avr);
 
 /* power_down.c: SLEEP in power-down stops Timer0/1/2; call around each avr_run.
  * The tests are inline: they run at every instruction, and a call each
@@ -306,6 +327,9 @@ void ir_channel_place(ir_distance_fn distance, void *ctx);
 /* Between two lockstep windows: the edges sent in the last one go to their
  * receivers, due latency_cycles (nominal clock) after they left. */
 void ir_channel_hand_over(uint32_t latency_cycles);
+/* Robot index was reset or lost its power: the edges on their way to it
+ * are dropped, and the faults it was sending end. */
+void ir_channel_robot_reset(int index);
 /* The receivers sender reaches (up to room of them), and their count. */
 int ir_channel_links(int sender, int *receivers, int room);
 /* ir_log.c: --ir-log, the frames on the air decoded by the wire format */
@@ -321,6 +345,8 @@ int ir_low_gain_reading(int mm);
 /* overhead_controller.c: system messages broadcast at given times */
 int ohc_parse(const char *text, ohc_message *m);
 void ohc_attach(robot *all, int n, const options *o);
+/* After robot r's reset: its messages to come are scheduled again. */
+void ohc_robot_reset(robot *r);
 
 
 /* debug.c: avr-gdb and GTKWave */

@@ -7,10 +7,11 @@ import sys
 import time
 
 
-def run(sim, elf, world, out):
-    """Runs ELF in WORLD, writing OUT; returns the wall time in seconds."""
+def run(sim, elf, world, out, extra=()):
+    """Runs ELF in WORLD, writing OUT (with the simulator options extra);
+    returns the wall time in seconds."""
     start = time.monotonic()
-    done = subprocess.run([sim, "--world", world, "--out", out, "-q", elf],
+    done = subprocess.run([sim, "--world", world, "--out", out, "-q", *extra, elf],
                           capture_output=True, text=True, timeout=240)
     wall = time.monotonic() - start
     if done.returncode != 0:

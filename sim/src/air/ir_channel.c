@@ -41,6 +41,7 @@
 #include <sim_io.h>
 
 #include "sim.h"
+#include "air/ir_faults.h"
 
 #define AIN1_MV 500 /* the comparator's threshold */
 #define EDGE_GAP 8
@@ -51,6 +52,7 @@ typedef struct ir_link {
     uint32_t high_gain_mv, low_gain_mv; /* the receiver's distance sensors, from this sender */
     double loss;                        /* chance that a frame does not reach it (--ir-loss) */
     avr_cycle_count_t lost_until;       /* sender cycle: the current frame is lost here */
+    ir_link_faults faults;              /* --faults: pulses lost or added, the frame cut */
 } ir_link;
 
 /* An edge on its way to a receiver, at a cycle of the receiver's clock. */
@@ -65,6 +67,7 @@ typedef struct ir_edge {
 typedef struct ir_sent {
     avr_cycle_count_t cycle;
     int lit;
+    int starts_frame; /* the rise of a frame's start pulse */
 } ir_sent;
 
 typedef struct ir_station {
@@ -79,6 +82,11 @@ typedef struct ir_station {
     uint32_t loss_random; /* its own fixed sequence: runs lose the same frames on any thread */
     char *frame_reach;    /* with --ir-log: "1, 2; lost at 2" for the frame on the air */
     int reach_room;
+    /* With IR faults: the rises of the frame on the air, and whether a
+     * link still has added pulses to send. */
+    avr_cycle_count_t *rises;
+    int n_rises, rises_room;
+    int added_pending;
     /* As receiver: edges due, in time order, from head on. */
     ir_edge *queue;
     int head, tail, queue_room;
@@ -158,15 +166,16 @@ static void describe_reach(ir_station *from) {
 
 /* At a frame's start pulse, each receiver in range loses the whole frame
  * or none of it. */
-static void draw_losses(ir_station *from, avr_cycle_count_t sent) {
+static int draw_losses(ir_station *from, avr_cycle_count_t sent) {
     int starts = from->last_flash == 0 || sent - from->last_flash > FRAME_GAP_CYCLES;
     from->last_flash = sent;
-    if (!starts) return;
+    if (!starts) return 0;
     for (int k = 0; k < from->n_links; k++) {
         ir_link *l = &from->links[k];
         l->lost_until = l->loss > 0 && next_random(from) < l->loss ? sent + FRAME_CYCLES : 0;
     }
     if (ir_log_enabled()) describe_reach(from);
+    return 1;
 }
 
 /* The LED's pin: noted in the sender's outbox, handed over after the window. */
@@ -174,13 +183,14 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
     (void)irq;
     ir_station *from = param;
     avr_cycle_count_t sent = from->robot->avr->cycle;
+    int starts = 0;
     if (value) {
         ir_log_flash(from->robot, sent, from->frame_reach); /* ends a frame, or starts one */
-        draw_losses(from, sent);
+        starts = draw_losses(from, sent);
     }
     if (from->n_links == 0) return;
     from->outbox = grow(from->outbox, &from->out_room, from->n_out + 1, sizeof(ir_sent));
-    from->outbox[from->n_out++] = (ir_sent){sent, value != 0};
+    from->outbox[from->n_out++] = (ir_sent){sent, value != 0, starts};
 }
 
 /* Cycle c of robot from's clock on robot to's (--clock-spread). */
@@ -199,24 +209,69 @@ static int by_receiver_then_time(const void *a, const void *b) {
     return x->from < y->from ? -1 : x->from > y->from;
 }
 
+static void add_edge(const ir_station *from, const ir_link *l, avr_cycle_count_t cycle, int lit,
+                     uint32_t latency) {
+    const robot *to = stations[l->to].robot;
+    window_edges = grow(window_edges, &window_edges_room, n_window_edges + 1, sizeof(ir_edge));
+    window_edges[n_window_edges++] = (ir_edge){
+        on_clock_of(to, from->robot, cycle) + on_clock_of(to, stations[0].robot, latency),
+        lit ? IR_LIT_MV : 0, l->high_gain_mv, l->low_gain_mv, (int)(from - stations), l->to};
+}
+
+/* --faults: the sender's frame rises, kept to tell a real pulse from an
+ * added one in the same slot. */
+static void note_rise(ir_station *from, const ir_sent *sent) {
+    if (!sent->lit) return;
+    if (sent->starts_frame) from->n_rises = 0;
+    from->rises = grow(from->rises, &from->rises_room, from->n_rises + 1, sizeof(avr_cycle_count_t));
+    from->rises[from->n_rises++] = sent->cycle;
+}
+
+/* --faults: does this edge reach the link's receiver? A powered-off
+ * receiver draws no faults: it hears nothing anyway. */
+static int passes_faults(ir_station *from, ir_link *l, const ir_sent *sent) {
+    if (stations[l->to].robot->off_until != 0) return 0;
+    if (sent->starts_frame) {
+        ir_faults_frame(&l->faults, from->robot, l->to, sent->cycle);
+        if (l->faults.n_added != 0) from->added_pending = 1;
+    }
+    return ir_faults_pass(&l->faults, from->robot, l->to, sent->cycle, sent->lit);
+}
+
+/* --faults: the added pulses whose time the sender has passed. */
+static void add_due_pulses(ir_station *from, uint32_t latency) {
+    int pending = 0;
+    for (int k = 0; k < from->n_links; k++) {
+        ir_link *l = &from->links[k];
+        avr_cycle_count_t at;
+        while ((at = ir_faults_added_due(&l->faults, from->robot, l->to, from->robot->avr->cycle,
+                                         from->rises, from->n_rises)) != 0) {
+            add_edge(from, l, at, 1, latency);
+            add_edge(from, l, at + IR_ADDED_FLASH_CYCLES, 0, latency);
+        }
+        pending |= l->faults.next_added < l->faults.n_added;
+    }
+    from->added_pending = pending;
+}
+
 static void collect(ir_station *from, uint32_t latency) {
+    int faults = ir_faults_active();
     for (int e = 0; e < from->n_out; e++) {
         const ir_sent *sent = &from->outbox[e];
+        if (faults) note_rise(from, sent);
         for (int k = 0; k < from->n_links; k++) {
-            const ir_link *l = &from->links[k];
+            ir_link *l = &from->links[k];
             if (sent->cycle < l->lost_until) continue; /* neither heard nor sensed as carrier */
-            const robot *to = stations[l->to].robot;
-            window_edges = grow(window_edges, &window_edges_room, n_window_edges + 1, sizeof(ir_edge));
-            window_edges[n_window_edges++] = (ir_edge){
-                on_clock_of(to, from->robot, sent->cycle) + on_clock_of(to, stations[0].robot, latency),
-                sent->lit ? IR_LIT_MV : 0, l->high_gain_mv, l->low_gain_mv,
-                (int)(from - stations), l->to};
+            if (faults && !passes_faults(from, l, sent)) continue;
+            add_edge(from, l, sent->cycle, sent->lit, latency);
         }
     }
     from->n_out = 0;
+    if (faults && from->added_pending) add_due_pulses(from, latency);
 }
 
 static void enqueue(ir_station *s, ir_edge e) {
+    if (s->robot->off_until != 0) return; /* powered off (--faults brownout): deaf */
     avr_t *avr = s->robot->avr;
     if (e.at <= avr->cycle) e.at = avr->cycle + 1;
     if (e.at < s->next_free) e.at = s->next_free;
@@ -231,7 +286,7 @@ static void enqueue(ir_station *s, ir_edge e) {
 void ir_channel_hand_over(uint32_t latency_cycles) {
     n_window_edges = 0;
     for (int i = 0; i < n_stations; i++)
-        if (stations[i].n_out != 0) collect(&stations[i], latency_cycles);
+        if (stations[i].n_out != 0 || stations[i].added_pending) collect(&stations[i], latency_cycles);
     if (n_window_edges == 0) return;
     qsort(window_edges, (size_t)n_window_edges, sizeof(ir_edge), by_receiver_then_time);
     for (int e = 0; e < n_window_edges; e++) enqueue(&stations[window_edges[e].to], window_edges[e]);
@@ -270,7 +325,12 @@ static void link_sender(int s, ir_distance_fn distance, void *ctx) {
         l->low_gain_mv = millivolts_of(to, ir_low_gain_reading((int)lround(mm)));
         l->loss = loss_pct / 100.0 * (mm / range_mm) * (mm / range_mm);
         while (o < n_old && old[o].to < j) o++;
-        l->lost_until = o < n_old && old[o].to == j ? old[o].lost_until : 0;
+        int kept = o < n_old && old[o].to == j;
+        l->lost_until = kept ? old[o].lost_until : 0;
+        if (kept)
+            l->faults = old[o].faults;
+        else
+            memset(&l->faults, 0, sizeof l->faults);
     }
     ir_link *was = from->links;
     int was_room = from->links_room;
@@ -283,6 +343,18 @@ static void link_sender(int s, ir_distance_fn distance, void *ctx) {
 
 void ir_channel_place(ir_distance_fn distance, void *ctx) {
     for (int s = 0; s < n_stations; s++) link_sender(s, distance, ctx);
+}
+
+/* A robot reset or powered off: what it was hearing is gone, and what it
+ * was sending stops where it was (its links' added pulses too). */
+void ir_channel_robot_reset(int index) {
+    ir_station *s = &stations[index];
+    if (s->head != s->tail) avr_cycle_timer_cancel(s->robot->avr, deliver, s);
+    s->head = s->tail = 0;
+    s->next_free = 0;
+    s->sensed_high = s->sensed_low = 0;
+    s->added_pending = 0;
+    for (int k = 0; k < s->n_links; k++) s->links[k].faults.next_added = s->links[k].faults.n_added;
 }
 
 int ir_channel_links(int sender, int *receivers, int room) {

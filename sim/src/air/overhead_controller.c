@@ -127,15 +127,16 @@ typedef struct broadcast {
     uint8_t frame[IR_FRAME_BYTES];
     int slot; /* next slot to consider */
     int lit;  /* the LED is on now */
+    avr_cycle_count_t next; /* the robot's cycle of its next step; 0: sent */
 } broadcast;
+
+static broadcast *broadcasts[MAX_OHC_MESSAGES]; /* one per robot */
 
 static void set_ain0(robot *r, uint32_t mv) {
     avr_raise_irq(avr_io_getirq(r->avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0), mv);
 }
 
-static avr_cycle_count_t step(struct avr_t *avr, avr_cycle_count_t when, void *param) {
-    (void)avr;
-    broadcast *b = param;
+static avr_cycle_count_t next_step(broadcast *b, avr_cycle_count_t when) {
     if (b->lit) { /* end of a flash: wait for the next lit slot */
         set_ain0(b->to, 0);
         b->lit = 0;
@@ -150,9 +151,28 @@ static avr_cycle_count_t step(struct avr_t *avr, avr_cycle_count_t when, void *p
     return when + FLASH_CYCLES;
 }
 
-static broadcast *broadcasts[MAX_OHC_MESSAGES]; /* one per robot */
+static avr_cycle_count_t step(struct avr_t *avr, avr_cycle_count_t when, void *param) {
+    (void)avr;
+    broadcast *b = param;
+    b->next = next_step(b, when);
+    return b->next;
+}
+
+static int n_broadcasts;
+
+/* A reset cancels the robot's timers (simavr's avr_reset): the messages
+ * still to come, or under way, go on from where they were. */
+void ohc_robot_reset(robot *r) {
+    for (int k = 0; k < n_broadcasts; k++) {
+        broadcast *b = &broadcasts[k][r->index];
+        if (b->next == 0) continue;
+        avr_cycle_count_t in = b->next > r->avr->cycle ? b->next - r->avr->cycle : 1;
+        avr_cycle_timer_register(r->avr, in, step, b);
+    }
+}
 
 void ohc_attach(robot *all, int n, const options *o) {
+    n_broadcasts = o->n_ohc;
     for (int k = 0; k < o->n_ohc; k++) {
         broadcasts[k] = calloc((size_t)n, sizeof(broadcast));
         if (broadcasts[k] == NULL) {
@@ -172,6 +192,7 @@ void ohc_attach(robot *all, int n, const options *o) {
             b->slot = 0;
             b->lit = 0;
             avr_cycle_count_t at = (avr_cycle_count_t)(o->ohc[k].seconds * all[i].avr->frequency);
+            b->next = at + 1;
             avr_cycle_timer_register(all[i].avr, at + 1, step, b);
         }
     }

@@ -103,3 +103,8 @@ void console_attach(robot *r, int quiet, int timestamps, const char *prefix) {
         avr_irq_register_notify(avr_io_getirq(r->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT),
                                 serial_output, &r->serial);
 }
+
+void console_reset(robot *r) {
+    r->console.record_left = 0;
+    r->console.naming = 0;
+}

@@ -5,10 +5,12 @@
 #include <avr_extint.h>
 #include <avr_ioport.h>
 #include <sim_io.h>
+#include <string.h>
 
 #include "sim.h"
 
 static const uint16_t calibration_address[4] = {0x05, 0x09, 0x0C, 0x14};
+#define OSCCAL_ADDRESS 0x01
 #define UID_ADDRESS 0xB0
 /* Distance tables: 14 big-endian readings, entry i for 33 + 5 i mm, as
  * kilolib (classic and ours) reads them. */
@@ -58,4 +60,21 @@ void board_configure(avr_t *avr, const options *o, int uid, const int calibratio
         uint8_t bytes[2] = {(uint8_t)(uid & 0xFF), (uint8_t)(uid >> 8)}; /* little-endian */
         write_eeprom(avr, UID_ADDRESS, bytes, 2);
     }
+}
+
+void board_pins_again(avr_t *avr) {
+    /* Raised both ways: simavr may skip a raise to the value a pin holds. */
+    avr_irq_t *charger = avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN0);
+    uint32_t level = charger->value;
+    avr_raise_irq(charger, !level);
+    avr_raise_irq(charger, level);
+}
+
+void board_erase_calibration(avr_t *avr) {
+    uint8_t blank[2 * TABLE_ENTRIES];
+    memset(blank, 0xFF, sizeof blank);
+    write_eeprom(avr, OSCCAL_ADDRESS, blank, 1);
+    for (int i = 0; i < 4; i++) write_eeprom(avr, calibration_address[i], blank, 1);
+    write_eeprom(avr, LOW_GAIN_TABLE, blank, sizeof blank);
+    write_eeprom(avr, HIGH_GAIN_TABLE, blank, sizeof blank);
 }

@@ -56,7 +56,7 @@ void main_stack_paint(robot *r, const char *elf_path) {
 
 /* Bytes of the main stack used at worst (0 if it was not measured), and
  * the room it had. */
-static unsigned worst_use(const robot *r, unsigned *room) {
+unsigned main_stack_worst(const robot *r, unsigned *room) {
     *room = r->main_stack_floor ? r->avr->ramend + 1u - r->main_stack_floor : 0;
     if (!r->main_stack_floor) return 0;
     unsigned a = r->main_stack_floor;
@@ -65,7 +65,7 @@ static unsigned worst_use(const robot *r, unsigned *room) {
 }
 
 int main_stack_report(const robot *r, int print) {
-    unsigned room, used = worst_use(r, &room);
+    unsigned room, used = main_stack_worst(r, &room);
     if (room == 0) return 0;
     if (print)
         fprintf(stderr, "openswarm-sim: %smain stack: worst use %u of %u bytes\n", r->console.prefix,

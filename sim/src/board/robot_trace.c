@@ -172,3 +172,12 @@ void trace_led(const robot *r, uint8_t rgb[3]) {
 void trace_flush(robot *r) {
     if (r->trace.burst != 0) settled(r->avr, 0, &r->trace);
 }
+
+void trace_reset(robot *r) {
+    robot_trace *t = &r->trace;
+    if (t->avr == NULL) return; /* not traced */
+    t->ddrc = t->ddrd = 0;
+    t->pwm[0] = t->pwm[1] = 0;
+    motors_changed(t);
+    changed(t);
+}

@@ -25,7 +25,9 @@
 _Static_assert(IR_WIRE_FRAME_BYTES == KILOBOT_IR_FRAME_BYTES, "the wire's frame is the API's");
 
 static volatile uint8_t receiving; /* carrier sense for the transmitter */
-static kilobot_ir_stats stats;
+/* Its own name: the simulator reads it from the firmware's RAM by name
+ * (openswarm-sim --counters). */
+static kilobot_ir_stats ir_stats;
 
 /* A count that stops at its top: a wrapped one could read 0 after 65536 losses. */
 static void count(uint16_t *counter) {
@@ -39,7 +41,7 @@ uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
 void kilobot_ir_get_stats(kilobot_ir_stats *out) {
     uint8_t sreg = SREG;
     cli();
-    *out = stats;
+    *out = ir_stats;
     SREG = sreg;
 }
 
@@ -94,10 +96,12 @@ static int32_t next_edge(uint16_t last) {
     }
 }
 
-/* A broken frame counts once: the rest of its pulses are let pass until
- * the channel is quiet, or each would start another broken reception. */
-static bool broken(uint16_t last_edge) {
-    count(&stats.broken);
+/* A frame that is no message - broken, or two senders' collided - counts
+ * once: the rest of its pulses are let pass until the channel is quiet,
+ * or each would start another reception and count again (a pulse lost
+ * from a header made a dozen collisions of one frame). */
+static bool discard(uint16_t *counter, uint16_t last_edge) {
+    count(counter);
     for (int32_t edge = last_edge; edge >= 0; edge = next_edge((uint16_t)edge)) {
     }
     return false;
@@ -116,7 +120,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     for (;;) {
         int32_t edge = next_edge(d.last_pulse);
         if (edge < 0) { /* the frame stopped short */
-            count(&stats.broken);
+            count(&ir_stats.broken);
             return false;
         }
         switch (ir_wire_decode_pulse(&d, (uint16_t)edge)) {
@@ -126,8 +130,8 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
             kilobot_adc_start(KILOBOT_ADC_IR_LOW_GAIN);
             break;
         case IR_WIRE_WHOLE: rx->low_gain = kilobot_adc_take(); return true;
-        case IR_WIRE_COLLISION: count(&stats.collisions); return false;
-        case IR_WIRE_BROKEN: return broken((uint16_t)edge);
+        case IR_WIRE_COLLISION: return discard(&ir_stats.collisions, (uint16_t)edge);
+        case IR_WIRE_BROKEN: return discard(&ir_stats.broken, (uint16_t)edge);
         }
     }
 }
@@ -146,9 +150,9 @@ ISR(TIMER1_CAPT_vect) {
      * kernel full. */
     sys_status st = Sys_Device_Read(&kilobot_ir, &rx, sizeof rx, NULL, 0, NULL);
     if (st == SYS_OK)
-        count(&stats.received);
+        count(&ir_stats.received);
     else if (st != SYS_E_NOT_FOUND)
-        count(&stats.refused);
+        count(&ir_stats.refused);
     os_isr_exit();
 }
 
@@ -181,7 +185,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     uint8_t sreg = SREG;
     cli();
     if (receiving || (TIFR1 & _BV(ICF1))) { /* carrier sense: someone is talking */
-        count(&stats.busy);
+        count(&ir_stats.busy);
         SREG = sreg;
         return SYS_E_QUEUE_FULL;
     }
@@ -191,7 +195,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
      * frame's start, they would hold us deaf in a bogus reception for a
      * whole frame time, just as the robot that waited for us answers. */
     TIFR1 = _BV(ICF1);
-    count(&stats.sent);
+    count(&ir_stats.sent);
     catch_up_ticks();
     SREG = sreg;
     return SYS_OK;
@@ -206,7 +210,7 @@ uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void
     const kilobot_ir_rx *r = in;
     if (size != sizeof *r || cap < sizeof *r) return 0;
     if (!ir_wire_frame_intact(r->frame)) {
-        count(&stats.bad_crc);
+        count(&ir_stats.bad_crc);
         return 0;
     }
     if (kilobot_overhead_control_take(r->frame)) return 0; /* the robot's, not the app's */

@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""The soak run (docs/reliability.md, "Soak run"): 50 Kilobots running the
+gradient template's program in bench/worlds/soak.json for an hour of
+simulated time, with faults injected, every robot's counters read at half
+time and at the end (openswarm-sim --counters), and a check that nothing
+grows without bound.
+
+    python3 bench/soak.py [--minutes 60] [--out soak-out] [--build build]
+
+Checks, printed as ok/FAIL lines, exit status 1 if any fails:
+  no robot's firmware reported a stack overflow, a CPU fault, a critical
+  section left open or a handler overrun, and none crashed or hung;
+  peaks are bounded: the highest event queue peak and main stack worst use
+  of any robot at the end are those of half time (single robots may still
+  reach, in the second half, what others reached in the first: rare
+  coincidences of interrupts and messages; a leak would raise the top);
+  counters never go down between half time and the end for robots without
+  a reset in between (a counter that wrapped would), and a counter at
+  65535 (saturated: it stops there) is reported;
+  the main stack never reaches its room.
+Writes OUT/counters.txt (every robot's counters, twice), OUT/faults.log
+(one line per injected fault) and OUT/summary.txt (totals and the checks).
+Not part of CI: an hour of 50 robots takes hours of wall time.
+"""
+import argparse
+import os
+import subprocess
+import sys
+import time
+from collections import defaultdict
+
+FAULTS = "reset=2,brownout=1,brownout-ms=50,flip=0.05,cut=0.5,blank=2,seed=1"
+PEAKS = ("event_queue_peak", "main_stack_used")
+NEVER = ("stack_overflows", "cpu_faults", "critical_leaks", "handler_overruns")
+
+
+def parse_counters(path):
+    """{time: {robot: {key: value}}} from the --counters lines."""
+    samples = defaultdict(dict)
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("counters "):
+                continue
+            fields = dict(kv.split("=", 1) for kv in line.split()[1:])
+            t, robot = float(fields.pop("t")), int(fields.pop("robot"))
+            used, _, room = fields.pop("main_stack").partition("/")
+            values = {k: int(v) for k, v in fields.items() if v.isdigit()}
+            values["main_stack_used"], values["main_stack_room"] = int(used), int(room or 0)
+            samples[t][robot] = values
+    return samples
+
+
+def restarted(log):
+    """{robot: [times]} of resets and brown-outs."""
+    times = defaultdict(list)
+    with open(log) as f:
+        for line in f:
+            fields = dict(kv.split("=", 1) for kv in line.split()[1:])
+            if fields["kind"] in ("reset", "brownout"):
+                times[int(fields["robot"])].append(float(fields["t"]))
+    return times
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    args = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    args.add_argument("--minutes", type=float, default=60.0, help="simulated minutes (default 60)")
+    args.add_argument("--out", default="soak-out", help="folder for the outputs (default soak-out)")
+    args.add_argument("--build", default=os.path.join(here, "..", "build"), help="the build folder")
+    args.add_argument("--check-only", action="store_true", help="check OUT's files of an earlier run again")
+    a = args.parse_args()
+    sim = os.path.join(a.build, "sim", "openswarm-sim")
+    elf = os.path.join(a.build, "tests", "avr", "world_gradient.elf")
+    for path in (sim, elf):
+        if not os.path.exists(path):
+            sys.exit(f"soak.py: {path} is missing: build it first (cmake --build {a.build} --target "
+                     f"openswarm-sim avr_firmware)")
+    os.makedirs(a.out, exist_ok=True)
+    seconds = a.minutes * 60.0
+    counters, log = os.path.join(a.out, "counters.txt"), os.path.join(a.out, "faults.log")
+    command = [sim, "--world", os.path.join(here, "worlds", "soak.json"), "--time", f"{seconds:g}", "-q",
+               "--no-progress", "--faults", FAULTS, "--fault-log", log, "--counters", f"{seconds / 2:g}", elf]
+    lines, failed = [], False
+    if not a.check_only:
+        print("running:", " ".join(command), flush=True)
+        start = time.monotonic()
+        with open(counters, "w") as out:
+            done = subprocess.run(command, stdout=out, stderr=subprocess.PIPE, text=True)
+        wall = time.monotonic() - start
+        lines = [f"{a.minutes:g} min of simulated time, 50 robots, in {wall / 60:.1f} min of wall time "
+                 f"({seconds / wall:.3f}x real time); exit status {done.returncode}", done.stderr.strip()]
+        failed = done.returncode != 0
+
+    def expect(ok, what):
+        nonlocal failed
+        lines.append(("ok   " if ok else "FAIL ") + what)
+        failed |= not ok
+
+    samples = parse_counters(counters)
+    if len(samples) < 2:
+        sys.exit(f"soak.py: expected counters at half time and at the end in {counters}")
+    half, end = sorted(samples)[-2:]
+    restarts = restarted(log)
+    steady = [r for r in samples[end] if not any(half < t <= end for t in restarts.get(r, []))]
+    robots = sorted(samples[end])
+    for key in NEVER:
+        worst = max(samples[end][r].get(key, 0) for r in robots)
+        expect(worst == 0, f"{key}: {worst} at worst")
+    for key in PEAKS:
+        top_half = max(samples[half][r][key] for r in samples[half])
+        top_end = max(samples[end][r][key] for r in robots)
+        grew = [r for r in steady if samples[end][r][key] > samples[half][r][key]]
+        expect(top_end <= top_half, f"{key}: highest {top_half} at {half:g} s, {top_end} at {end:g} s "
+               f"({len(grew)} robots rose towards it in the second half)")
+    went_down = [(r, k) for r in steady for k, v in samples[half][r].items() if samples[end][r].get(k, v) < v]
+    expect(not went_down, f"no counter went down between {half:g} s and {end:g} s ({len(steady)} robots "
+           f"not restarted in between): {went_down[:5]}")
+    full = sorted({k for r in robots for k, v in samples[end][r].items() if v == 65535})
+    expect(True, f"counters saturated at 65535: {full or 'none'}")
+    room = [r for r in robots if samples[end][r]["main_stack_used"] >= samples[end][r]["main_stack_room"] > 0]
+    expect(not room, f"no main stack reached its room: {room}")
+    totals = defaultdict(int)
+    for r in robots:
+        for k, v in samples[end][r].items():
+            totals[k] += v
+    lines.append("totals at the end: " + " ".join(f"{k}={v}" for k, v in sorted(totals.items())
+                                                   if k not in ("main_stack_room",)))
+    lines.append(f"resets and brown-outs: {sum(len(v) for v in restarts.values())} on {len(restarts)} robots")
+    with open(os.path.join(a.out, "summary.txt"), "a" if a.check_only else "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    sys.exit(1 if failed else 0)
+
+
+main()

@@ -1,0 +1,102 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* --counters PERIOD: every robot's firmware counters, read from its RAM
+ * by the symbols' names, as one line each:
+ *   counters t=SECONDS robot=INDEX process_pool_full=0 ... event_queue_peak=12
+ *     ir_sent=310 ... main_stack=180/1024
+ * The kernel's resource counters are os_stats (sys_stats, kernel/include/
+ * openswarm/fault.h: eleven 16-bit counters, then the queue's peak byte),
+ * the Kilobot IR driver's ir_stats (kilobot_ir_stats: seven 16-bit
+ * counters); a firmware without one of them (a classic-library build)
+ * shows "none" for it, one with another layout "unknown layout". The
+ * firmware is not stopped or asked: the simulator reads between windows. */
+#include <string.h>
+
+#include "sim.h"
+
+#define AVR_DATA_OFFSET 0x800000u
+
+static const char *const kernel_names[] = {
+    "process_pool_full", "stack_pool_full", "event_data_full", "subscription_pool_full",
+    "event_queue_full", "device_table_full", "events_discarded", "stack_overflows",
+    "critical_leaks", "cpu_faults", "handler_overruns"};
+#define KERNEL_COUNTERS (sizeof kernel_names / sizeof kernel_names[0])
+#define KERNEL_BYTES (2 * KERNEL_COUNTERS + 1) /* and event_queue_peak */
+
+static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc", "broken",
+                                       "collisions", "busy"};
+#define IR_COUNTERS (sizeof ir_names / sizeof ir_names[0])
+
+typedef struct counter_symbols {
+    uint32_t kernel, kernel_size; /* data-space address; 0: none */
+    uint32_t ir, ir_size;
+} counter_symbols;
+
+/* name, or name.lto_priv.N as link-time optimisation renames a static. */
+static int named(const char *name, const char *wanted) {
+    size_t n = strlen(wanted);
+    return strncmp(name, wanted, n) == 0 && (name[n] == '\0' || name[n] == '.');
+}
+
+static void note_symbol(const char *name, uint32_t value, uint32_t size, int type, void *ctx) {
+    (void)type;
+    counter_symbols *s = ctx;
+    if (name == NULL || value < AVR_DATA_OFFSET) return;
+    if (named(name, "os_stats")) {
+        s->kernel = value - AVR_DATA_OFFSET;
+        s->kernel_size = size;
+    } else if (named(name, "ir_stats")) {
+        s->ir = value - AVR_DATA_OFFSET;
+        s->ir_size = size;
+    }
+}
+
+/* Read once per firmware file: robots that share one share the answer. */
+static counter_symbols symbols_of(const char *elf_path) {
+    static const char *read_path;
+    static counter_symbols symbols;
+    if (elf_path != read_path) {
+        memset(&symbols, 0, sizeof symbols);
+        firmware_symbols(elf_path, note_symbol, &symbols);
+        read_path = elf_path;
+    }
+    return symbols;
+}
+
+static unsigned u16_at(const avr_t *avr, uint32_t address) {
+    return avr->data[address] | (unsigned)avr->data[address + 1] << 8;
+}
+
+static void print_kernel(FILE *out, const avr_t *avr, const counter_symbols *s) {
+    if (s->kernel == 0) {
+        fprintf(out, " kernel=none");
+    } else if (s->kernel_size != KERNEL_BYTES || s->kernel + KERNEL_BYTES > avr->ramend + 1u) {
+        fprintf(out, " kernel=unknown-layout");
+    } else {
+        for (unsigned i = 0; i < KERNEL_COUNTERS; i++)
+            fprintf(out, " %s=%u", kernel_names[i], u16_at(avr, s->kernel + 2 * i));
+        fprintf(out, " event_queue_peak=%u", avr->data[s->kernel + 2 * KERNEL_COUNTERS]);
+    }
+}
+
+static void print_ir(FILE *out, const avr_t *avr, const counter_symbols *s) {
+    if (s->ir == 0) {
+        fprintf(out, " ir=none");
+    } else if (s->ir_size != 2 * IR_COUNTERS || s->ir + 2 * IR_COUNTERS > avr->ramend + 1u) {
+        fprintf(out, " ir=unknown-layout");
+    } else {
+        for (unsigned i = 0; i < IR_COUNTERS; i++)
+            fprintf(out, " ir_%s=%u", ir_names[i], u16_at(avr, s->ir + 2 * i));
+    }
+}
+
+void firmware_counters_print(const robot *r, const char *elf_path, double seconds) {
+    counter_symbols s = symbols_of(elf_path);
+    unsigned room, used = main_stack_worst(r, &room);
+    printf("counters t=%.3f robot=%d", seconds, r->index);
+    print_kernel(stdout, r->avr, &s);
+    print_ir(stdout, r->avr, &s);
+    if (room != 0)
+        printf(" main_stack=%u/%u\n", used, room);
+    else
+        printf(" main_stack=unmeasured\n");
+}

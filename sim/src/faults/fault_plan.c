@@ -1,0 +1,285 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* --faults SPEC: what to inject, and when (faults.h).
+ *
+ * Random faults come from the spec's seed alone: each robot draws its
+ * resets and brown-outs from its own sequence (a Poisson process at the
+ * rate given: exponential gaps), so the same spec gives the same faults at
+ * the same times on any number of threads, and adding robots leaves the
+ * first ones' faults where they were. Resets and brown-outs happen between
+ * two lockstep windows (8 us apart), when no robot runs. A robot that has
+ * stopped (its firmware exited or crashed) is not revived: its faults are
+ * skipped. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "air/ir_faults.h"
+#include "faults/faults.h"
+#include "lockstep.h"
+#include "world/world_random.h"
+
+#define MAX_PER_HOUR 36000.0  /* ten a second: more is surely a typo */
+#define MAX_FLIP_PCT 10.0
+#define MAX_BROWNOUT_MS 60000.0
+#define DEFAULT_BROWNOUT_MS 50.0
+
+typedef struct robot_faults {
+    uint64_t rng;
+    double next_reset_s, next_brownout_s; /* INFINITY: none */
+    int blank;
+} robot_faults;
+
+static fault_spec spec;
+static robot_faults *plans;
+static robot *robots;
+static int n_robots;
+static uint32_t nominal_hz;
+static avr_cycle_count_t next_due; /* no reset, brown-out or power return before this */
+static int next_at;                /* spec.at[], sorted by time: the next to fire */
+
+static void spec_usage(const char *text, const char *what) {
+    fprintf(stderr,
+            "openswarm-sim: --faults '%s': %s; expected a comma-separated list of reset=PER_HOUR "
+            "(0..36000), brownout=PER_HOUR (0..36000), brownout-ms=MS (0.01..60000), flip=PCT "
+            "(0..10), cut=PCT (0..100), blank=ROBOTS, seed=N, reset:ROBOT@SECONDS, "
+            "brownout:ROBOT@SECONDS, blank:ROBOT; e.g. --faults "
+            "reset=2,flip=0.1,cut=1,seed=7 (docs/world.md, \"Fault injection\")\n",
+            text, what);
+}
+
+/* A finite number in [lo, hi] from the whole of text. */
+static int number_in(const char *text, double lo, double hi, double *out) {
+    char *end;
+    errno = 0;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || errno != 0 || !(v >= lo && v <= hi)) return -1;
+    *out = v;
+    return 0;
+}
+
+static int robot_and_time(const char *text, int kind, fault_spec *s) {
+    if (s->n_at == MAX_FAULTS_AT) return -1;
+    fault_at *f = &s->at[s->n_at];
+    char *end;
+    errno = 0;
+    long index = strtol(text, &end, 10);
+    if (end == text || errno != 0 || index < 0 || index >= MAX_ROBOTS) return -1;
+    double seconds = 0;
+    if (kind == FAULT_BLANK_CALIBRATION) {
+        if (*end != '\0') return -1;
+    } else if (*end != '@' || number_in(end + 1, 0, 1e6, &seconds) != 0) {
+        return -1;
+    }
+    *f = (fault_at){kind, (int)index, seconds};
+    s->n_at++;
+    return 0;
+}
+
+/* One item of the list: "key=value" or "kind:robot[@seconds]". */
+static int parse_item(const char *item, fault_spec *s) {
+    const char *eq = strchr(item, '='), *colon = strchr(item, ':');
+    if (colon != NULL && (eq == NULL || colon < eq)) {
+        size_t n = (size_t)(colon - item);
+        if (n == 5 && strncmp(item, "reset", n) == 0) return robot_and_time(colon + 1, FAULT_RESET, s);
+        if (n == 8 && strncmp(item, "brownout", n) == 0) return robot_and_time(colon + 1, FAULT_BROWNOUT, s);
+        if (n == 5 && strncmp(item, "blank", n) == 0) return robot_and_time(colon + 1, FAULT_BLANK_CALIBRATION, s);
+        return -1;
+    }
+    if (eq == NULL) return -1;
+    size_t n = (size_t)(eq - item);
+    const char *value = eq + 1;
+    double v;
+#define KEY(name) (n == sizeof name - 1 && strncmp(item, name, n) == 0)
+    if (KEY("reset")) return number_in(value, 0, MAX_PER_HOUR, &s->resets_per_hour);
+    if (KEY("brownout")) return number_in(value, 0, MAX_PER_HOUR, &s->brownouts_per_hour);
+    if (KEY("brownout-ms")) return number_in(value, 0.01, MAX_BROWNOUT_MS, &s->brownout_ms);
+    if (KEY("flip")) return number_in(value, 0, MAX_FLIP_PCT, &s->flip_pct);
+    if (KEY("cut")) return number_in(value, 0, 100, &s->cut_pct);
+    if (KEY("blank")) {
+        if (number_in(value, 0, MAX_ROBOTS, &v) != 0 || v != floor(v)) return -1;
+        s->blank = (int)v;
+        return 0;
+    }
+    if (KEY("seed")) {
+        char *end;
+        errno = 0;
+        unsigned long long seed = strtoull(value, &end, 0);
+        if (end == value || *end != '\0' || errno != 0 || value[0] == '-') return -1;
+        s->seed = seed;
+        return 0;
+    }
+#undef KEY
+    return -1;
+}
+
+int faults_parse(const char *text, fault_spec *s) {
+    if (!s->enabled) {
+        s->enabled = 1;
+        s->brownout_ms = DEFAULT_BROWNOUT_MS;
+        s->seed = 1;
+    }
+    size_t length = strlen(text);
+    char *copy = malloc(length + 1);
+    if (copy == NULL) return -1;
+    memcpy(copy, text, length + 1);
+    int status = length == 0 ? -1 : 0;
+    for (char *item = copy, *next; status == 0 && item != NULL; item = next) {
+        next = strchr(item, ',');
+        if (next != NULL) *next++ = '\0';
+        if (parse_item(item, s) != 0) {
+            char what[96];
+            if (s->n_at == MAX_FAULTS_AT)
+                snprintf(what, sizeof what, "too many faults at given times (64 at most)");
+            else if (item[0] == '\0')
+                snprintf(what, sizeof what, "an empty item");
+            else
+                snprintf(what, sizeof what, "'%.60s' is unknown or out of its range", item);
+            spec_usage(text, what);
+            status = -1;
+        }
+    }
+    free(copy);
+    return status;
+}
+
+int faults_check(const fault_spec *s, int robots_in_run) {
+    if (!s->enabled) return 0;
+    if (s->blank > robots_in_run) {
+        fprintf(stderr, "openswarm-sim: --faults blank=%d: the run has %d robots; give at most %d\n",
+                s->blank, robots_in_run, robots_in_run);
+        return -1;
+    }
+    for (int i = 0; i < s->n_at; i++) {
+        if (s->at[i].robot < robots_in_run) continue;
+        fprintf(stderr, "openswarm-sim: --faults %s:%d: the run's robots are 0..%d (the index, as in "
+                        "\"[robot N]\", not the uid)\n",
+                fault_kind_name(s->at[i].kind), s->at[i].robot, robots_in_run - 1);
+        return -1;
+    }
+    return 0;
+}
+
+static double exponential_s(uint64_t *rng, double per_hour) {
+    if (per_hour <= 0) return INFINITY;
+    return -log(1.0 - world_random_uniform(rng)) * 3600.0 / per_hour;
+}
+
+static int by_time(const void *a, const void *b) {
+    const fault_at *x = a, *y = b;
+    return (x->seconds > y->seconds) - (x->seconds < y->seconds);
+}
+
+/* blank robots at random: the first draws of a shuffle of the indices. */
+static void draw_blank(int n) {
+    int *order = malloc((size_t)n * sizeof *order);
+    if (order == NULL) exit(EXIT_CRASH);
+    for (int i = 0; i < n; i++) order[i] = i;
+    uint64_t rng = spec.seed ^ 0xB1A4C0FFEEull;
+    for (int k = 0; k < spec.blank; k++) {
+        int j = k + (int)(world_random_uniform(&rng) * (n - k));
+        int t = order[k];
+        order[k] = order[j];
+        order[j] = t;
+        plans[order[k]].blank = 1;
+    }
+    free(order);
+}
+
+int faults_start(const fault_spec *s, int n) {
+    spec = *s;
+    n_robots = n;
+    plans = calloc((size_t)n, sizeof *plans);
+    if (plans == NULL || fault_log_open(spec.log_path) != 0) return -1;
+    for (int i = 0; i < n; i++) {
+        robot_faults *p = &plans[i];
+        p->rng = spec.seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0x5EEDu);
+        world_random_next(&p->rng);
+        p->next_reset_s = exponential_s(&p->rng, spec.resets_per_hour);
+        p->next_brownout_s = exponential_s(&p->rng, spec.brownouts_per_hour);
+    }
+    draw_blank(n);
+    for (int i = 0; i < spec.n_at; i++)
+        if (spec.at[i].kind == FAULT_BLANK_CALIBRATION) plans[spec.at[i].robot].blank = 1;
+    qsort(spec.at, (size_t)spec.n_at, sizeof spec.at[0], by_time);
+    ir_faults_configure(spec.flip_pct, spec.cut_pct, spec.seed);
+    return 0;
+}
+
+int faults_blank_calibration(int index) {
+    if (plans == NULL || !plans[index].blank) return 0;
+    fault_log(FAULT_BLANK_CALIBRATION, 0.0, index, NULL);
+    return 1;
+}
+
+static avr_cycle_count_t cycle_of(double seconds) {
+    double c = seconds * nominal_hz;
+    return c >= 1e18 ? (avr_cycle_count_t)1e18 : (avr_cycle_count_t)c;
+}
+
+/* The earliest cycle anything is due at. */
+static void find_next_due(void) {
+    double t = INFINITY;
+    avr_cycle_count_t due = (avr_cycle_count_t)1e18;
+    for (int i = 0; i < n_robots; i++) {
+        t = fmin(t, fmin(plans[i].next_reset_s, plans[i].next_brownout_s));
+        if (robots[i].off_until != 0 && robots[i].off_until < due) due = robots[i].off_until;
+    }
+    for (int k = next_at; k < spec.n_at; k++)
+        if (spec.at[k].kind != FAULT_BLANK_CALIBRATION) {
+            t = fmin(t, spec.at[k].seconds);
+            break;
+        }
+    avr_cycle_count_t c = cycle_of(t);
+    next_due = c < due ? c : due;
+}
+
+void faults_attach(robot *all, uint32_t hz) {
+    if (plans == NULL) return;
+    robots = all;
+    nominal_hz = hz;
+    find_next_due();
+}
+
+/* Robot i's fault of this kind, at the nominal time now; skipped by a
+ * robot that has stopped or is without power. */
+static void inject(int kind, int i, avr_cycle_count_t now) {
+    robot *r = &robots[i];
+    if (robot_finished(r) || robot_at_bootloader(r) || r->off_until != 0) return;
+    double t = (double)now / nominal_hz;
+    if (kind == FAULT_RESET) {
+        fault_log(FAULT_RESET, t, i, NULL);
+        power_cycle_reset(r);
+    } else {
+        fault_log(FAULT_BROWNOUT, t, i, "off_ms=%g", spec.brownout_ms);
+        power_cycle_off(r, now + cycle_of(spec.brownout_ms / 1000.0));
+    }
+}
+
+void faults_after_window(avr_cycle_count_t end) {
+    if (plans == NULL || end < next_due) return;
+    double t = (double)end / nominal_hz;
+    for (int i = 0; i < n_robots; i++) {
+        robot_faults *p = &plans[i];
+        if (robots[i].off_until != 0 && robots[i].off_until <= end) power_cycle_on(&robots[i], end, nominal_hz);
+        for (; p->next_reset_s <= t; p->next_reset_s += exponential_s(&p->rng, spec.resets_per_hour))
+            inject(FAULT_RESET, i, end);
+        for (; p->next_brownout_s <= t;
+             p->next_brownout_s += exponential_s(&p->rng, spec.brownouts_per_hour))
+            inject(FAULT_BROWNOUT, i, end);
+    }
+    for (; next_at < spec.n_at && spec.at[next_at].seconds <= t; next_at++)
+        if (spec.at[next_at].kind != FAULT_BLANK_CALIBRATION)
+            inject(spec.at[next_at].kind, spec.at[next_at].robot, end);
+    find_next_due();
+}
+
+void faults_finish(void) {
+    if (plans == NULL) return;
+    fprintf(stderr, "openswarm-sim: faults injected:");
+    for (int k = 0; k < FAULT_KINDS; k++)
+        fprintf(stderr, "%s %lu %s", k ? "," : "", fault_log_count(k), fault_kind_name(k));
+    if (spec.log_path != NULL) fprintf(stderr, " (one a line in %s)", spec.log_path);
+    fprintf(stderr, "\n");
+    fault_log_close();
+}

@@ -1,0 +1,81 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* Fault injection (--faults SPEC): robots reset or brown out, IR pulses
+ * are lost or appear in frames, frames are cut short, a robot's EEPROM
+ * calibration is blank. Every fault drawn is logged, one line each, and
+ * counted for the run's summary.
+ *
+ * fault_plan.c reads the spec and fires the robots' resets and brown-outs
+ * between lockstep windows; air/ir_faults.c applies the IR faults as the
+ * channel hands edges over; board/power_cycle.c is what a reset and a
+ * power cut do to one simulated robot; fault_log.c writes and counts. */
+#ifndef OPENSWARM_FAULTS_H
+#define OPENSWARM_FAULTS_H
+
+#include "sim.h"
+
+#define MAX_FAULTS_AT 64 /* faults given a robot and a time, e.g. reset:3@5 */
+
+enum fault_kind {
+    FAULT_RESET,
+    FAULT_BROWNOUT,
+    FAULT_PULSE_LOST,
+    FAULT_PULSE_ADDED,
+    FAULT_FRAME_CUT,
+    FAULT_BLANK_CALIBRATION,
+    FAULT_KINDS
+};
+
+/* A fault at a given time for a given robot. */
+typedef struct fault_at {
+    int kind; /* FAULT_RESET, FAULT_BROWNOUT, FAULT_BLANK_CALIBRATION (at 0 s) */
+    int robot;
+    double seconds;
+} fault_at;
+
+typedef struct fault_spec {
+    int enabled;               /* --faults was given */
+    double resets_per_hour;    /* each robot's, on average (Poisson) */
+    double brownouts_per_hour;
+    double brownout_ms;        /* how long the power is off */
+    double flip_pct;           /* each slot of a frame, at each receiver */
+    double cut_pct;            /* each frame, at each receiver */
+    int blank;                 /* robots drawn at random with blank calibration */
+    uint64_t seed;
+    fault_at at[MAX_FAULTS_AT];
+    int n_at;
+    const char *log_path;      /* --fault-log FILE; NULL: stderr */
+} fault_spec;
+
+/* fault_plan.c */
+/* One --faults argument, added to spec; -1 after a message. */
+int faults_parse(const char *text, fault_spec *spec);
+/* The checks that need the robots' count; -1 after a message. */
+int faults_check(const fault_spec *spec, int robots);
+/* Draw the faults of n robots; open the log. -1 after a message. */
+int faults_start(const fault_spec *spec, int n);
+/* The robots are loaded: their resets and brown-outs can fire. */
+void faults_attach(robot *robots, uint32_t nominal_hz);
+/* Robot index has blank calibration (its EEPROM's 0xFF). */
+int faults_blank_calibration(int index);
+/* Between two windows: the resets, brown-outs and power returns due by
+ * cycle end of the nominal clock. */
+void faults_after_window(avr_cycle_count_t end);
+/* The run's counts on stderr; the log closed. */
+void faults_finish(void);
+
+/* fault_log.c: one line per fault, "fault t=SECONDS robot=INDEX kind=KIND ...". */
+int fault_log_open(const char *path);
+void fault_log(int kind, double seconds, int index, const char *detail_format, ...)
+    __attribute__((format(printf, 4, 5)));
+unsigned long fault_log_count(int kind);
+const char *fault_kind_name(int kind);
+void fault_log_close(void);
+
+/* board/power_cycle.c: what a reset and a power cut do to one robot. */
+void power_cycle_reset(robot *r);
+/* Power off now, until cycle on of the nominal clock (r->off_until); then
+ * power_cycle_on at the end of the window that reaches it, cycle on. */
+void power_cycle_off(robot *r, avr_cycle_count_t on);
+void power_cycle_on(robot *r, avr_cycle_count_t on, uint32_t nominal_hz);
+
+#endif
