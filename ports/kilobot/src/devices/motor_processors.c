@@ -14,6 +14,15 @@ void kilobot_calibration_load(void) {
     kilobot_calib.straight_right = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_STRAIGHT_RIGHT);
 }
 
+/* Updates, not writes: an EEPROM cell wears out after about 100 000. */
+void kilobot_calibration_save(uint16_t uid) {
+    eeprom_update_word((uint16_t *)KILOBOT_EEPROM_UID, uid);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_TURN_LEFT, kilobot_calib.turn_left);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_TURN_RIGHT, kilobot_calib.turn_right);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_STRAIGHT_LEFT, kilobot_calib.straight_left);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_STRAIGHT_RIGHT, kilobot_calib.straight_right);
+}
+
 /* A motion byte becomes calibrated duties, two bytes pass as they are. */
 static uint8_t to_duties(const void *in, uint8_t size, void *out, uint8_t capacity) {
     kilobot_motors *m = out;
