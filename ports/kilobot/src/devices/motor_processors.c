@@ -1,4 +1,5 @@
-/* The motors' processors: calibrated motion commands and a spin-up limit. */
+/* The motors' processors (calibrated motion commands, a spin-up limit) and
+ * the calibration they use, as the EEPROM keeps it. */
 #include "openswarm/kilobot.h"
 
 #include <avr/eeprom.h>
