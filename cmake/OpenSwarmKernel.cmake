@@ -37,7 +37,9 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/kilolib.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/overhead_controller.c
     ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/calibration.c
-    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/status_lights.c)
+    ${OPENSWARM_ROOT}/ports/kilobot/kilolib/src/status_lights.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/overhead_calibration.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/battery_light.c)
 
 # The e-puck's device layer, the same on both e-pucks; each board supplies
 # its lower layer (ports/epuck/src/epuck_board.h).

@@ -87,6 +87,9 @@ typedef struct kilobot_calibration {
 extern kilobot_calibration kilobot_calib;
 /* Read kilobot_calib from the EEPROM (again, after calibration rewrote it). */
 void kilobot_calibration_load(void);
+/* Write kilobot_calib and uid to the EEPROM (only the bytes that change,
+ * 3.4 ms each: not from an interrupt). */
+void kilobot_calibration_save(uint16_t uid);
 
 /* Post-processor: a motion byte becomes calibrated duties, two bytes pass. */
 uint8_t kilobot_motor_commands(sys_device *dev, const void *in, uint8_t size, void *out,
@@ -158,12 +161,54 @@ sys_status kilobot_devices_init(void);
  * Its system messages (IR frames whose type, byte 9, is 0x80 or more) are
  * the robot's, not the app's: BOOT enters the IR bootloader, RESET starts
  * the program afresh, SLEEP, WAKEUP (KiloGUI's "pause"), CHARGE and
- * VOLTAGE hold it (motors off; the LED dark while asleep, dim blue
- * otherwise) until RUN starts it afresh. The calibration messages (CALIB,
- * READUID) and the bootloader's own are dropped: calibrate with a kilolib
- * program. robot_devices_init() starts it (robot.h); kilolib apps have
- * their own (kilolib's overhead_controller.c). */
+ * VOLTAGE hold it (motors off; the LED dark while asleep, the battery
+ * level for VOLTAGE, as kilobot_battery_light shows it, dim blue
+ * otherwise) until RUN starts it afresh. CALIB and READUID (KiloGUI's
+ * calibration panel) hold it calibrating: the robot moves with the duties
+ * being tuned (a 15 ms kick at full duty first; the same request again
+ * changes nothing), or, for READUID, turns left if the uid bit asked for
+ * is 1; SAVE writes the uid and the duties to the EEPROM and the robot
+ * waits, dim blue, until RUN starts the app afresh with them (in
+ * kilobot_calib and kilobot_uid()); RUN or RESET without SAVE leaves the
+ * EEPROM as it was. Calibrating needs the clock event (OS_CFG_CLOCK_EVENT,
+ * on by default): without it the robot stands still. The bootloader's own
+ * messages are dropped. robot_devices_init() starts it (robot.h); kilolib
+ * apps have their own (kilolib's overhead_controller.c). */
 #define KILOBOT_MESSAGE_SYSTEM 0x80u /* the first system message type */
+/* The system message types, as the classic library's message.h has them. */
+enum kilobot_system_message {
+    KILOBOT_MESSAGE_BOOT = 0x80,
+    KILOBOT_MESSAGE_BOOTPGM_PAGE,
+    KILOBOT_MESSAGE_BOOTPGM_SIZE,
+    KILOBOT_MESSAGE_RESET,
+    KILOBOT_MESSAGE_SLEEP,
+    KILOBOT_MESSAGE_WAKEUP,
+    KILOBOT_MESSAGE_CHARGE,
+    KILOBOT_MESSAGE_VOLTAGE,
+    KILOBOT_MESSAGE_RUN,
+    KILOBOT_MESSAGE_READUID, /* data[0]: the uid bit asked for */
+    KILOBOT_MESSAGE_CALIB    /* data: below */
+};
+/* CALIB's data: the mode, then every value KiloGUI's panel holds. */
+enum kilobot_calib_mode {
+    KILOBOT_CALIB_SAVE,
+    KILOBOT_CALIB_UID,
+    KILOBOT_CALIB_TURN_LEFT,
+    KILOBOT_CALIB_TURN_RIGHT,
+    KILOBOT_CALIB_STRAIGHT
+};
+enum kilobot_calib_data {
+    KILOBOT_CALIB_AT_MODE = 0,
+    KILOBOT_CALIB_AT_UID = 1, /* little-endian uint16_t */
+    KILOBOT_CALIB_AT_TURN_LEFT = 3,
+    KILOBOT_CALIB_AT_TURN_RIGHT = 4,
+    KILOBOT_CALIB_AT_STRAIGHT_LEFT = 5,
+    KILOBOT_CALIB_AT_STRAIGHT_RIGHT = 6
+};
+/* The battery level a voltage reading (ADC6, 0..1023) shows on the LED,
+ * as the classic library's VOLTAGE does: green full, blue good, yellow
+ * low, red nearly empty. */
+uint8_t kilobot_battery_light(int16_t reading);
 /* After the devices: acts on a restart that asked for a hold (and then
  * never returns: the kernel runs the held robot), else takes the system
  * messages from now on. */

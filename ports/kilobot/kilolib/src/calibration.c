@@ -6,17 +6,6 @@
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
 
-/* A CALIB message's data: the mode, then every value the panel holds. */
-enum { CALIB_SAVE, CALIB_UID, CALIB_TURN_LEFT, CALIB_TURN_RIGHT, CALIB_STRAIGHT };
-enum {
-    AT_MODE = 0,
-    AT_UID = 1, /* little-endian uint16_t */
-    AT_TURN_LEFT = 3,
-    AT_TURN_RIGHT = 4,
-    AT_STRAIGHT_LEFT = 5,
-    AT_STRAIGHT_RIGHT = 6
-};
-
 static uint8_t moving_left, moving_right; /* duties of the calibration motion */
 
 static void calibration_motion(void *arg) {
@@ -60,25 +49,25 @@ void kilolib_calibration_message(const message_t *msg) {
         show_uid_bit(d[0]);
         return;
     }
-    switch (d[AT_MODE]) {
-    case CALIB_SAVE:
+    switch (d[KILOBOT_CALIB_AT_MODE]) {
+    case KILOBOT_CALIB_SAVE:
         save();
         break;
-    case CALIB_UID:
-        kilo_uid = (uint16_t)(d[AT_UID] | d[AT_UID + 1] << 8);
+    case KILOBOT_CALIB_UID:
+        kilo_uid = (uint16_t)(d[KILOBOT_CALIB_AT_UID] | d[KILOBOT_CALIB_AT_UID + 1] << 8);
         move(0, 0);
         break;
-    case CALIB_TURN_LEFT:
-        kilo_turn_left = d[AT_TURN_LEFT];
+    case KILOBOT_CALIB_TURN_LEFT:
+        kilo_turn_left = d[KILOBOT_CALIB_AT_TURN_LEFT];
         move(kilo_turn_left, 0);
         break;
-    case CALIB_TURN_RIGHT:
-        kilo_turn_right = d[AT_TURN_RIGHT];
+    case KILOBOT_CALIB_TURN_RIGHT:
+        kilo_turn_right = d[KILOBOT_CALIB_AT_TURN_RIGHT];
         move(0, kilo_turn_right);
         break;
-    case CALIB_STRAIGHT:
-        kilo_straight_left = d[AT_STRAIGHT_LEFT];
-        kilo_straight_right = d[AT_STRAIGHT_RIGHT];
+    case KILOBOT_CALIB_STRAIGHT:
+        kilo_straight_left = d[KILOBOT_CALIB_AT_STRAIGHT_LEFT];
+        kilo_straight_right = d[KILOBOT_CALIB_AT_STRAIGHT_RIGHT];
         move(kilo_straight_left, kilo_straight_right);
         break;
     default:

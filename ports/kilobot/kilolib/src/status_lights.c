@@ -5,19 +5,17 @@
 #include <avr/io.h>
 
 #include "kilolib_internal.h"
+#include "openswarm/kilobot.h"
 
 #define FLASH_MS 1
 #define PERIOD_MS 200
 
-/* The battery level from its ADC6 reading: green full, blue good, yellow
- * low, red nearly empty (the classic library's thresholds). */
+/* The battery level (kilobot_battery_light: the classic library's
+ * thresholds). */
 static uint8_t battery_colour(void) {
     int16_t v;
     while ((v = get_voltage()) < 0) delay(1); /* busy: a frame was being received */
-    if (v > 682) return RGB(0, 3, 0);
-    if (v > 648) return RGB(0, 0, 3);
-    if (v > 614) return RGB(3, 3, 0);
-    return RGB(3, 0, 0);
+    return kilobot_battery_light(v);
 }
 
 /* The charger pulls PD0 low while it charges the battery. */

@@ -1,4 +1,5 @@
-/* The motors' processors: calibrated motion commands and a spin-up limit. */
+/* The motors' processors (calibrated motion commands, a spin-up limit) and
+ * the calibration they use, as the EEPROM keeps it. */
 #include "openswarm/kilobot.h"
 
 #include <avr/eeprom.h>
@@ -24,6 +25,15 @@ void kilobot_calibration_load(void) {
     kilobot_calib.turn_right = duty_at(KILOBOT_EEPROM_TURN_RIGHT);
     kilobot_calib.straight_left = duty_at(KILOBOT_EEPROM_STRAIGHT_LEFT);
     kilobot_calib.straight_right = duty_at(KILOBOT_EEPROM_STRAIGHT_RIGHT);
+}
+
+/* Updates, not writes: an EEPROM cell wears out after about 100 000. */
+void kilobot_calibration_save(uint16_t uid) {
+    eeprom_update_word((uint16_t *)KILOBOT_EEPROM_UID, uid);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_TURN_LEFT, kilobot_calib.turn_left);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_TURN_RIGHT, kilobot_calib.turn_right);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_STRAIGHT_LEFT, kilobot_calib.straight_left);
+    eeprom_update_byte((uint8_t *)KILOBOT_EEPROM_STRAIGHT_RIGHT, kilobot_calib.straight_right);
 }
 
 /* A motion byte becomes calibrated duties, two bytes pass as they are. */

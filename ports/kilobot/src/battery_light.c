@@ -1,0 +1,11 @@
+/* The battery level on the LED, for the overhead controller's VOLTAGE
+ * (kilolib's status lights and the port's overhead control). */
+#include "openswarm/kilobot.h"
+
+/* The classic library's thresholds, in ADC6 counts. */
+uint8_t kilobot_battery_light(int16_t reading) {
+    if (reading > 682) return KILOBOT_RGB(0, 3, 0);
+    if (reading > 648) return KILOBOT_RGB(0, 0, 3);
+    if (reading > 614) return KILOBOT_RGB(3, 3, 0);
+    return KILOBOT_RGB(3, 0, 0);
+}
