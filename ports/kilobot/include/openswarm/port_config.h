@@ -6,6 +6,9 @@
 #ifndef OPENSWARM_PORT_CONFIG_H
 #define OPENSWARM_PORT_CONFIG_H
 
+#ifndef OS_CFG_TICKLESS
+#define OS_CFG_TICKLESS 1 /* an idle robot sleeps until its next deadline */
+#endif
 #ifndef OS_CFG_MAX_THREADS
 #define OS_CFG_MAX_THREADS 4
 #endif
