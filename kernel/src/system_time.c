@@ -64,10 +64,10 @@ static uint32_t ticks_until_needed(void) {
 /* The time stops at each deadline on the way, as ticks one by one would:
  * every wait ends at its own time, and the nearest deadline is then
  * recomputed from there. */
-void os_ticks_slept(uint32_t ticks) {
+void os_ticks_slept(uint16_t ticks) {
     while (ticks != 0) {
-        uint32_t step = os.timeout_next - os.now_ms; /* 0, or a time past: none pending */
-        if (step == 0 || step > ticks) step = ticks;
+        uint32_t due = os.timeout_next - os.now_ms; /* 0, or a time past: none pending */
+        uint16_t step = due != 0 && due < ticks ? (uint16_t)due : ticks;
         os.now_ms += step;
         ticks -= step;
         os_check_timeouts();

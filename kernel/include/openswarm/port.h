@@ -99,8 +99,9 @@ void os_isr_exit(void);
 void os_tick(void);
 /* ticks that passed while the tick was stopped by port_idle_for, credited
  * at once (interrupts masked, the system thread idle): the time advances
- * by ticks and waits whose deadline came meanwhile end. */
-void os_ticks_slept(uint32_t ticks);
+ * by ticks and waits whose deadline came meanwhile end. A port that sleeps
+ * longer than 65535 ticks wakes and credits them in parts. */
+void os_ticks_slept(uint16_t ticks);
 /* End the running thread (its entry function returned). Never returns. */
 void os_thread_exit(void);
 /* End the running thread because the CPU trapped in it (the port's fault

@@ -18,8 +18,8 @@
  * depends on the prescaler's phase (the 0-63 cycles between a Timer0 count
  * and the next, which software cannot read); the last comes just past the
  * deadline's tick, 8 to 80 cycles after it: the kernel's time, timeouts
- * and kilo_ticks are exact, the thread is woken a few microseconds later
- * than by the tick's own interrupt. */
+ * and kilo_ticks are exact; the thread runs about 36 us later than the
+ * tick's own interrupt would have woken it. */
 #include "openswarm/kilobot.h"
 #include "openswarm/port.h"
 
@@ -65,7 +65,7 @@ static bool tick_needed(void) {
 
 /* The alarm after the one at last_ticks (or the start): the last, if the
  * deadline is at most 7 ticks on, else one in the middle of the 7th. */
-static inline __attribute__((always_inline)) void set_alarm(void) {
+static void set_alarm(void) {
     uint16_t left = final_ticks - last_ticks;
     if (left > ALARM_MAX_TICKS) {
         alarm_ticks = last_ticks + ALARM_MAX_TICKS;
