@@ -75,7 +75,6 @@ void port_tick_start(void) {
 
 void (*kilobot_tick_hook)(void);
 void (*kilobot_elapsed_hook)(uint16_t ms);
-uint16_t (*kilobot_sleep_limit_hook)(void);
 void (*kilobot_sensors_tick_hook)(void);
 void (*kilobot_motors_tick_hook)(void);
 

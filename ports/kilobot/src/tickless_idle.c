@@ -154,11 +154,6 @@ void port_tickless_wake(void) {
 }
 
 void port_idle_for(uint32_t ticks) {
-    uint16_t (*limit)(void) = kilobot_sleep_limit_hook;
-    if (limit != NULL) {
-        uint16_t ms = limit();
-        if (ms < ticks) ticks = ms;
-    }
     if (ticks < 2u || tick_needed() || !stop_tick(ticks)) {
         port_idle();
         return;

@@ -196,13 +196,6 @@ extern void (*kilobot_tick_hook)(void);
  * needs. NULL: nothing. Set it as kilobot_tick_hook. */
 extern void (*kilobot_elapsed_hook)(uint16_t ms);
 
-/* Asked, interrupts masked, when the robot is about to sleep with the tick
- * stopped: the most milliseconds it may sleep before kilobot_elapsed_hook
- * must be called, for a clock that acts at some of its counts (kilolib's
- * transmitter, at the kilo tick a message is due); 65535 or NULL: no
- * limit. Asked afresh before every sleep. Set it as kilobot_tick_hook. */
-extern uint16_t (*kilobot_sleep_limit_hook)(void);
-
 /* Calibration and identity the robot keeps in its EEPROM. */
 #define KILOBOT_EEPROM_OSCCAL 0x01
 #define KILOBOT_EEPROM_TURN_LEFT 0x05

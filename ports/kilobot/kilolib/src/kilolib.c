@@ -60,24 +60,21 @@ static void (*user_loop)(void);
 #define TICK_FRACTION_PER_MS 125u
 #define TICK_FRACTION_BITS 12u /* 4096 */
 static uint16_t tick_fraction;
-static void kilo_ticks_passed(uint16_t ticks); /* the transmitter's clock */
-
 /* In parts of up to 255 ms, whose fractions fit 16 bits: an 8-bit
  * multiply, no 32-bit arithmetic but the count's own. */
 static void count_kilo_ticks(uint16_t ms) {
-    uint16_t fraction = tick_fraction, ticks = 0;
+    uint16_t fraction = tick_fraction;
     do {
         uint8_t part = ms > 255u ? 255u : (uint8_t)ms;
         ms = (uint16_t)(ms - part);
         fraction = (uint16_t)(fraction + part * TICK_FRACTION_PER_MS);
-        ticks += fraction >> TICK_FRACTION_BITS;
-        fraction &= (1u << TICK_FRACTION_BITS) - 1u;
+        uint8_t whole = (uint8_t)(fraction >> TICK_FRACTION_BITS);
+        if (whole != 0) {
+            kilo_ticks += whole;
+            fraction &= (1u << TICK_FRACTION_BITS) - 1u;
+        }
     } while (ms != 0);
     tick_fraction = fraction;
-    if (ticks != 0) {
-        kilo_ticks += ticks;
-        kilo_ticks_passed(ticks);
-    }
 }
 
 /* Milliseconds (1 to 33) until kilo_ticks next advances: the fraction
@@ -179,57 +176,24 @@ bool kilolib_call(uint8_t what) { return Sys_Send_Event(KILOLIB_EVENT_CALL, &wha
  * At each kilo tick once more steps than kilo_tx_period have passed since
  * the last message went out, kilo_message_tx's message (its crc set by the
  * program, as with the classic library) is sent while the program runs:
- * with the default 3906, every 16 ticks (0.524 s). The check runs at the
- * kilo tick, in interrupt context, as the classic library's does; the
- * transmitter thread, woken only when a message is due, sends it a random
- * 0-15 ms into the tick, so robots started together drift apart; a busy
- * channel is tried again after a random few milliseconds.
- *
- * When the robot sleeps with the tick stopped (tickless idle), it wakes at
- * the first kilo tick at which a message may be due (kilolib_sleep_limit),
- * and not at all while none can be: the program set no kilo_message_tx, or
- * it is paused. Only the program changes those, and it runs awake. */
+ * with the default 3906, every 16 ticks (0.524 s). The transmitter looks a
+ * random 0-15 ms into each tick, so robots started together drift apart;
+ * a busy channel is tried again after a random few milliseconds. */
 #define STEPS_PER_KILO_TICK 255u
 
-static uint16_t tx_steps;          /* since the last message went out */
-static volatile bool tx_due;       /* the transmitter was told to send */
-static uint32_t tx_due_tick;       /* the kilo tick it was told at */
-
-/* Without a division: 256 ticks are more than any period. */
+/* Without a division: asked at every kilo tick. 256 ticks are more than
+ * any period. */
 static uint16_t steps_after(uint16_t steps, uint32_t ticks) {
     if (ticks > 256u) return 0xFFFFu;
     uint32_t total = steps + (uint16_t)ticks * STEPS_PER_KILO_TICK;
     return total > 0xFFFFu ? 0xFFFFu : (uint16_t)total;
 }
 
-/* A program that set no kilo_message_tx sends nothing (no_tx always says
- * so), nor a paused one. */
-static bool tx_wanted(void) { return kilo_message_tx != no_tx && kilolib_activity() == RUN; }
-
-/* Interrupt context (the tick, or the wake-up from a tickless sleep). A
- * full event queue leaves the message to the next tick. */
-static void kilo_ticks_passed(uint16_t ticks) {
-    tx_steps = steps_after(tx_steps, ticks);
-    if (tx_due || tx_steps <= kilo_tx_period || !tx_wanted()) return;
-    uint8_t call = KILOLIB_TX_WAKE;
-    tx_due_tick = kilo_ticks;
-    tx_due = Sys_Send_Event(KILOLIB_EVENT_CALL, &call, 1) == SYS_OK;
-}
-
-/* The robot's longest sleep with the tick stopped, in ms: to the first
- * kilo tick at which a message may be due (a little early after many
- * ticks: 32 ms each, not 32.768; waking early costs a wake-up, never a
- * late message). */
-static uint16_t kilolib_sleep_limit(void) {
-    if (tx_due || !tx_wanted()) return 0xFFFFu;
-    uint16_t period = kilo_tx_period;
-    uint16_t ticks = tx_steps > period ? 1u : (uint16_t)((period - tx_steps) / STEPS_PER_KILO_TICK + 1u);
-    if (ticks > 2000u) return 0xFFFFu;
-    return (uint16_t)(ms_to_next_kilo_tick() + (ticks - 1u) * 32u);
-}
-
-/* Whether kilo_message_tx's message went out. */
+/* Whether kilo_message_tx's message went out. A program that set no
+ * kilo_message_tx sends nothing: the default is not called (through the
+ * system thread) at every tick. */
 static bool send_message(void) {
+    if (kilo_message_tx == no_tx) return false;
     outgoing = 0;
     if (!kilolib_call(KILOLIB_TX_DUE) || outgoing == 0) return false;
     while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
@@ -237,35 +201,19 @@ static bool send_message(void) {
     return true;
 }
 
-static bool is_tx_wake(const sys_event_data *call) {
-    return *(const uint8_t *)call->value == KILOLIB_TX_WAKE;
-}
-
-/* Out of line: the wait's record is on the transmitter's small stack only
- * while it waits, not under a send and the IR receiver's interrupt. */
-static __attribute__((noinline)) void wait_until_due(void) {
-    Sys_Wait_for_Condition(KILOLIB_EVENT_CALL, is_tx_wake, 0, 0, 0);
-}
-
-/* The steps count again from the tick the message was due at: ticks that
- * pass during a send (or its callbacks) count towards the next one, and if
- * a message is due at one of them, it goes at once. */
 static void transmitter(void *arg) {
     (void)arg;
-    bool again = false;
+    uint16_t steps = 0;
+    uint32_t seen = kilo_ticks_now();
     for (;;) {
-        if (!again) {
-            wait_until_due();
-            Sys_Sleep(rand_soft() & 15u);
+        uint32_t now = kilo_ticks_now();
+        if (now == seen) { /* ticks that pass during a send count at once */
+            Sys_Sleep(ms_to_next_kilo_tick() + (rand_soft() & 15u));
+            continue;
         }
-        bool sent = kilolib_activity() == RUN && send_message();
-        ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
-            uint32_t now = kilo_ticks;
-            if (sent) tx_steps = steps_after(0, now - tx_due_tick);
-            again = now != tx_due_tick && tx_steps > kilo_tx_period && tx_wanted();
-            tx_due = again;
-            tx_due_tick = now;
-        }
+        steps = steps_after(steps, now - seen);
+        seen = now;
+        if (steps > kilo_tx_period && kilolib_activity() == RUN && send_message()) steps = 0;
     }
 }
 
@@ -276,10 +224,7 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     user_loop = loop;
     kilo_ticks = 0;
     tick_fraction = 0;
-    tx_steps = 0;
-    tx_due = false;
     kilobot_elapsed_hook = count_kilo_ticks;
-    kilobot_sleep_limit_hook = kilolib_sleep_limit;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
     Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
     Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);

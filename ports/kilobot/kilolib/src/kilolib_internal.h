@@ -14,8 +14,7 @@
 enum kilolib_call {
     KILOLIB_TX_DUE,        /* kilo_message_tx() */
     KILOLIB_TX_SENT,       /* kilo_message_tx_success() */
-    KILOLIB_START_ACTIVITY, /* the thread of the activity kilolib_activity_start asked for */
-    KILOLIB_TX_WAKE         /* for the transmitter, which waits for it: a message is due */
+    KILOLIB_START_ACTIVITY /* the thread of the activity kilolib_activity_start asked for */
 };
 /* Queue one (from a thread it runs before the call returns). */
 bool kilolib_call(uint8_t what);
