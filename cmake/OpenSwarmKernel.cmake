@@ -20,6 +20,7 @@ set(OPENSWARM_PORT_host_SOURCES
 set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/port.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/switch.S
+    ${OPENSWARM_ROOT}/ports/kilobot/src/tickless_idle.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/fault_report.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/system_control.c

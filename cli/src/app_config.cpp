@@ -84,6 +84,7 @@ const KernelSetting kernel_switches[] = {
     {"stack_check", "OS_CFG_STACK_CHECK", 0, 1},
     {"clock_event", "OS_CFG_CLOCK_EVENT", 0, 1},
     {"handler_context", "OS_CFG_HANDLER_CONTEXT", 0, 1},
+    {"tickless", "OS_CFG_TICKLESS", 0, 1},
     {"kilolib_idle_loop", "KILOLIB_IDLE_LOOP", 0, 1},
 };
 

@@ -41,7 +41,7 @@ void Sys_Run_SystemThread(void) {
             /* It gives the CPU away as a thread that stops running does:
              * to the thread its work preempted, or the ready list. */
             OS_SYSTEM->state = SYS_PROCESS_READY;
-            if (!os_decide()) port_idle(); /* nobody else can run */
+            if (!os_decide()) os_idle(); /* nobody else can run */
         }
     }
     os.stop_requested = false;

@@ -218,6 +218,11 @@ void os_wait_abandon(sys_tcb *t); /* t stops waiting: woken or killed */
 void os_wake_all_waiting_for(sys_event_id event, sys_status status);
 void os_check_timeouts(void);
 
+/* system_time.c: the system thread has nothing to run; it sleeps until
+ * an interrupt (with OS_CFG_TICKLESS, with the tick stopped until the next
+ * deadline if nothing needs it sooner). Interrupts masked. */
+void os_idle(void);
+
 /* fault.c */
 void os_fault(sys_fault fault, sys_pid pid);
 void os_stats_reset(void);

@@ -141,7 +141,14 @@ void os_yield(void) {
     port_switch(&cur->ctx, &next->ctx);
 }
 
-void os_isr_enter(void) { os.isr_depth++; }
+/* With the tick stopped (tickless idle), the port first credits the time
+ * that passed: the interrupt's handler may read it or start a timeout. */
+void os_isr_enter(void) {
+#if OS_CFG_TICKLESS
+    port_tickless_wake();
+#endif
+    os.isr_depth++;
+}
 
 /* The outermost interrupt's end decides at once (no guard check: the tick
  * makes one). */

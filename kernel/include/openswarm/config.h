@@ -38,6 +38,18 @@
 #define OS_CFG_CLOCK_EVENT 1
 #endif
 
+/* Tickless idle: when every thread waits and no timeout is near, the
+ * system thread asks the port to sleep until the next deadline (or any
+ * interrupt) with the tick stopped, and the ticks that passed are credited
+ * at once when it wakes: time, timeouts and slices stay exact. Only while
+ * the clock event has no listener; a port without tickless idle (its
+ * port_arch.h does not define PORT_TICKLESS_IDLE) keeps the periodic tick,
+ * and asking it for tickless idle is a build error. Off by default; the
+ * Kilobot's port_config.h turns it on. */
+#ifndef OS_CFG_TICKLESS
+#define OS_CFG_TICKLESS 0
+#endif
+
 /* Threads, including the system thread (pid 0). At most 16. */
 #ifndef OS_CFG_MAX_THREADS
 #define OS_CFG_MAX_THREADS 8
@@ -123,8 +135,9 @@
 
 #if (OS_CFG_STACK_CHECK != 0 && OS_CFG_STACK_CHECK != 1) || \
     (OS_CFG_CLOCK_EVENT != 0 && OS_CFG_CLOCK_EVENT != 1) || \
-    (OS_CFG_HANDLER_CONTEXT != 0 && OS_CFG_HANDLER_CONTEXT != 1)
-#error "OS_CFG_STACK_CHECK, OS_CFG_CLOCK_EVENT and OS_CFG_HANDLER_CONTEXT must be 0 or 1"
+    (OS_CFG_HANDLER_CONTEXT != 0 && OS_CFG_HANDLER_CONTEXT != 1) || \
+    (OS_CFG_TICKLESS != 0 && OS_CFG_TICKLESS != 1)
+#error "OS_CFG_STACK_CHECK, OS_CFG_CLOCK_EVENT, OS_CFG_HANDLER_CONTEXT and OS_CFG_TICKLESS must be 0 or 1"
 #endif
 #if OS_CFG_MAX_THREADS < 2 || OS_CFG_MAX_THREADS > 16
 #error "OS_CFG_MAX_THREADS must be 2..16 (pids keep the slot in 4 bits)"

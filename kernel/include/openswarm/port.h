@@ -69,6 +69,21 @@ void port_irq_disable(void);
  * interrupts masked again. */
 void port_idle(void);
 
+/* Tickless idle (OS_CFG_TICKLESS; a port that has it defines
+ * PORT_TICKLESS_IDLE in port_arch.h). Called by the system thread instead
+ * of port_idle, as port_idle is, with the number of ticks from now until
+ * the first one the kernel needs (1: the next; UINT32_MAX: none). The port
+ * may stop the tick meanwhile; ticks that pass while it is stopped are
+ * credited with os_ticks_slept before the kernel runs again: before this
+ * returns, and in port_tickless_wake when an interrupt comes first. */
+void port_idle_for(uint32_t ticks);
+
+/* Called first by os_isr_enter (OS_CFG_TICKLESS): if the tick is stopped,
+ * credit the ticks that passed (os_ticks_slept) and restart it, so the
+ * interrupt's handler sees the exact time. Every interrupt that calls the
+ * kernel pays its test: keep it short. */
+void port_tickless_wake(void);
+
 /* A fault the kernel detected (a sys_fault, and the thread's pid), before
  * the application's hook and SYS_EVENT_FAULT: the port tells whoever
  * watches (a simulator's console, a terminal), so no fault goes unseen.
@@ -82,6 +97,11 @@ void os_isr_enter(void);
 void os_isr_exit(void);
 /* One 1 ms tick; call between os_isr_enter and os_isr_exit. */
 void os_tick(void);
+/* ticks that passed while the tick was stopped by port_idle_for, credited
+ * at once (interrupts masked, the system thread idle): the time advances
+ * by ticks and waits whose deadline came meanwhile end. A port that sleeps
+ * longer than 65535 ticks wakes and credits them in parts. */
+void os_ticks_slept(uint16_t ticks);
 /* End the running thread (its entry function returned). Never returns. */
 void os_thread_exit(void);
 /* End the running thread because the CPU trapped in it (the port's fault

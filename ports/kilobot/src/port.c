@@ -61,15 +61,20 @@ void port_idle(void) {
     cli();
 }
 
-/* 8 MHz / 64 / 125 = 1000 Hz. */
+/* 8 MHz / 64 / 125 = 1000 Hz. Tickless idle times its sleeps with Timer1
+ * counting CPU cycles, as the IR receiver runs it (kilobot_ir_start). */
 void port_tick_start(void) {
     TCCR0A = _BV(WGM01); /* CTC */
-    OCR0A = (uint8_t)(F_CPU / 64u / 1000u - 1u);
+    OCR0A = (uint8_t)(KILOBOT_TICK_COUNTS - 1u);
     TIMSK0 = _BV(OCIE0A);
-    TCCR0B = _BV(CS01) | _BV(CS00);
+    TCCR0B = _BV(CS01) | _BV(CS00); /* KILOBOT_TICK_PRESCALE */
+#if OS_CFG_TICKLESS
+    TCCR1B |= _BV(CS10);
+#endif
 }
 
 void (*kilobot_tick_hook)(void);
+void (*kilobot_elapsed_hook)(uint16_t ms);
 void (*kilobot_sensors_tick_hook)(void);
 void (*kilobot_motors_tick_hook)(void);
 
@@ -81,6 +86,8 @@ void kilobot_tick(void) {
     if (sensors != NULL) sensors();
     void (*hook)(void) = kilobot_tick_hook;
     if (hook != NULL) hook();
+    void (*elapsed)(uint16_t) = kilobot_elapsed_hook;
+    if (elapsed != NULL) elapsed(1);
 }
 
 ISR(TIMER0_COMPA_vect) {

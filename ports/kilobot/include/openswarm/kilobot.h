@@ -225,12 +225,21 @@ void kilobot_enter_bootloader(void) __attribute__((noreturn));
 void kilobot_restart(uint16_t mark) __attribute__((noreturn));
 uint16_t kilobot_restart_mark(void);
 
-/* Called every 1 ms from the tick interrupt (NULL: nothing). For clocks an
- * application keeps in interrupt context, such as kilolib's kilo_ticks. Set
- * it before Sys_Start_Kernel or with interrupts masked: the tick must not
+/* Called every 1 ms from the tick interrupt (NULL: nothing). While it is
+ * set the robot keeps the tick when it idles (no tickless idle): a clock
+ * that only counts time does better with kilobot_elapsed_hook. Set it
+ * before Sys_Start_Kernel or with interrupts masked: the tick must not
  * read half a pointer. (Not volatile: the tick reads it afresh each time,
  * and link-time optimisation drops the test from images that never set it.) */
 extern void (*kilobot_tick_hook)(void);
+
+/* Called in interrupt context with the milliseconds that have passed: 1 at
+ * each tick; after a tickless sleep (OS_CFG_TICKLESS), all the sleep's at
+ * once, when the robot wakes and before any thread or handler runs. For
+ * clocks an application keeps, such as kilolib's kilo_ticks: they stay
+ * exact, and the robot still sleeps through the milliseconds nothing else
+ * needs. NULL: nothing. Set it as kilobot_tick_hook. */
+extern void (*kilobot_elapsed_hook)(uint16_t ms);
 
 /* Calibration and identity the robot keeps in its EEPROM. */
 #define KILOBOT_EEPROM_OSCCAL 0x01

@@ -18,6 +18,10 @@ typedef uint8_t port_irq_state_t; /* SREG */
 #define PORT_STACK_EXTRA 64u
 #define PORT_STACK_ALIGN 1u
 
+/* Tickless idle (OS_CFG_TICKLESS): port_idle_for stops the tick until the
+ * kernel's next deadline (src/tickless_idle.c). */
+#define PORT_TICKLESS_IDLE 1
+
 /* Event ids the port reserves: LED, motors, IR received, IR to send,
  * light, voltage, temperature, and kilolib's transmit callbacks. */
 #define PORT_EVENT_COUNT 8

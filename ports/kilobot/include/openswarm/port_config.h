@@ -6,6 +6,12 @@
 #ifndef OPENSWARM_PORT_CONFIG_H
 #define OPENSWARM_PORT_CONFIG_H
 
+/* Tickless idle stays off by default for now: with it, fewer of 100
+ * disperse robots crowded in one IR range hear a close neighbour in 5 s
+ * (world.hundred_robots: 58 against 82; docs/architecture.md). */
+#ifndef OS_CFG_TICKLESS
+#define OS_CFG_TICKLESS 0
+#endif
 #ifndef OS_CFG_MAX_THREADS
 #define OS_CFG_MAX_THREADS 4
 #endif

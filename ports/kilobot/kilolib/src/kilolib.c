@@ -51,25 +51,42 @@ static void (*user_loop)(void);
 
 /* kilo_ticks advance as the classic library's do, once per 256 steps of
  * its Timer0 (8 MHz / 1024): every 32.768 ms, 30.52 a second (its
- * TICKS_PER_SEC, 31, is rounded). From the 1 ms tick, exactly: 32.768 ms
- * is 4096 / 125 ms, so every millisecond adds 125 / 4096 of a tick. */
+ * TICKS_PER_SEC, 31, is rounded). From the milliseconds that pass,
+ * exactly: 32.768 ms is 4096 / 125 ms, so every millisecond adds 125 /
+ * 4096 of a tick. They come one at a time from the tick, and all at once
+ * after the robot slept with the tick stopped (tickless idle), before the
+ * program runs: it never sees kilo_ticks late, and the kilo tick needs no
+ * wake-up of its own. */
 #define TICK_FRACTION_PER_MS 125u
-#define TICK_FRACTION_WHOLE 4096u
+#define TICK_FRACTION_BITS 12u /* 4096 */
 static uint16_t tick_fraction;
-static void count_kilo_ticks(void) {
-    tick_fraction = (uint16_t)(tick_fraction + TICK_FRACTION_PER_MS);
-    if (tick_fraction >= TICK_FRACTION_WHOLE) {
-        tick_fraction = (uint16_t)(tick_fraction - TICK_FRACTION_WHOLE);
-        kilo_ticks++;
-    }
+/* In parts of up to 255 ms, whose fractions fit 16 bits: an 8-bit
+ * multiply, no 32-bit arithmetic but the count's own. */
+static void count_kilo_ticks(uint16_t ms) {
+    uint16_t fraction = tick_fraction;
+    do {
+        uint8_t part = ms > 255u ? 255u : (uint8_t)ms;
+        ms = (uint16_t)(ms - part);
+        fraction = (uint16_t)(fraction + part * TICK_FRACTION_PER_MS);
+        uint8_t whole = (uint8_t)(fraction >> TICK_FRACTION_BITS);
+        if (whole != 0) {
+            kilo_ticks += whole;
+            fraction &= (1u << TICK_FRACTION_BITS) - 1u;
+        }
+    } while (ms != 0);
+    tick_fraction = fraction;
 }
 
-/* Milliseconds (1 to 33) until kilo_ticks next advances. */
+/* Milliseconds (1 to 33) until kilo_ticks next advances: the fraction
+ * missing divided by 125, rounded up. The transmitter asks at every kilo
+ * tick, so the division is a multiply: x / 125 is x * 33555 / 2^22 to
+ * within 0.0006 for x up to 4220, which never carries the quotient past
+ * the next whole number (a remainder is at most 124/125 = 0.992). */
 static uint8_t ms_to_next_kilo_tick(void) {
     uint16_t fraction;
     ATOMIC_BLOCK(ATOMIC_RESTORESTATE) { fraction = tick_fraction; }
-    uint16_t missing = (uint16_t)(TICK_FRACTION_WHOLE - fraction);
-    return (uint8_t)((missing + TICK_FRACTION_PER_MS - 1u) / TICK_FRACTION_PER_MS);
+    uint16_t missing = (uint16_t)((1u << TICK_FRACTION_BITS) - fraction);
+    return (uint8_t)(((uint32_t)(missing + TICK_FRACTION_PER_MS - 1u) * 33555u) >> 22);
 }
 
 static uint32_t kilo_ticks_now(void) {
@@ -164,13 +181,19 @@ bool kilolib_call(uint8_t what) { return Sys_Send_Event(KILOLIB_EVENT_CALL, &wha
  * a busy channel is tried again after a random few milliseconds. */
 #define STEPS_PER_KILO_TICK 255u
 
+/* Without a division: asked at every kilo tick. 256 ticks are more than
+ * any period. */
 static uint16_t steps_after(uint16_t steps, uint32_t ticks) {
-    if (ticks > (uint16_t)(0xFFFFu - steps) / STEPS_PER_KILO_TICK) return 0xFFFFu;
-    return (uint16_t)(steps + ticks * STEPS_PER_KILO_TICK);
+    if (ticks > 256u) return 0xFFFFu;
+    uint32_t total = steps + (uint16_t)ticks * STEPS_PER_KILO_TICK;
+    return total > 0xFFFFu ? 0xFFFFu : (uint16_t)total;
 }
 
-/* Whether kilo_message_tx's message went out. */
+/* Whether kilo_message_tx's message went out. A program that set no
+ * kilo_message_tx sends nothing: the default is not called (through the
+ * system thread) at every tick. */
 static bool send_message(void) {
+    if (kilo_message_tx == no_tx) return false;
     outgoing = 0;
     if (!kilolib_call(KILOLIB_TX_DUE) || outgoing == 0) return false;
     while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
@@ -201,7 +224,7 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     user_loop = loop;
     kilo_ticks = 0;
     tick_fraction = 0;
-    kilobot_tick_hook = count_kilo_ticks;
+    kilobot_elapsed_hook = count_kilo_ticks;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
     Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
     Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);

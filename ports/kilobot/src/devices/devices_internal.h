@@ -5,6 +5,8 @@
 
 #include <stdint.h>
 
+#include "openswarm/config.h"
+
 /* motors.c. From now on, a motor at full power for more than limit_ms
  * drops to fallback (0: no limit); checked every 1 ms by the motors' tick
  * hook, which only these two set (NULL: no limit). */
@@ -14,8 +16,24 @@ extern void (*kilobot_motors_tick_hook)(void);
 
 /* port.c: one millisecond of the robot's time (the kernel's tick, then the
  * devices' and the tick hooks), in interrupt context. The IR driver calls it
- * for each millisecond a frame kept the tick interrupt masked. */
+ * for each millisecond a frame kept the tick interrupt masked. The tick is
+ * Timer0 in CTC mode: KILOBOT_TICK_COUNTS counts of KILOBOT_TICK_PRESCALE
+ * cycles. */
 void kilobot_tick(void);
+#define KILOBOT_TICK_PRESCALE 64u
+#define KILOBOT_TICK_COUNTS (F_CPU / KILOBOT_TICK_PRESCALE / 1000u)
+
+/* tickless_idle.c (OS_CFG_TICKLESS). If the robot sleeps with the tick
+ * stopped, the tick again (its phase unchanged); the milliseconds slept
+ * are credited by the next os_isr_enter, or when the idle system thread
+ * wakes, whichever comes first. For an interrupt that cannot wait for the
+ * kernel's bookkeeping (the IR receiver's, at a frame's first pulse);
+ * every other interrupt's os_isr_enter does both at once. */
+#if OS_CFG_TICKLESS
+void kilobot_tickless_stop(void);
+#else
+static inline void kilobot_tickless_stop(void) {}
+#endif
 
 /* ir.c: start listening (analog comparator to Timer1 input capture). */
 void kilobot_ir_start(void);

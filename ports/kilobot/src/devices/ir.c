@@ -73,6 +73,8 @@ static inline void take_missed_tick(void) {
     }
 }
 
+/* os_isr_enter credits the milliseconds slept before the frame first
+ * (tickless idle). */
 static void catch_up_ticks(void) {
     take_missed_tick();
     if (ticks_missed == 0) return;
@@ -139,6 +141,10 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
 ISR(TIMER1_CAPT_vect) {
     uint16_t start = ICR1;
     TIFR1 = _BV(ICF1);
+    /* Asleep with the tick stopped, the tick's flag counts nothing: the
+     * tick is back before the frame's wait loops count it. The kernel's
+     * bookkeeping of the sleep waits for the frame's end. */
+    kilobot_tickless_stop();
     kilobot_ir_rx rx;
     receiving = 1;
     bool whole = receive_frame(start, &rx);
