@@ -1,8 +1,7 @@
 /* A classic Kilobot program for the world's motion tests: what it does
  * depends on its uid's last digit. 1: spin up, walk straight with its own
  * calibration; 2: spin up, turn left; 3: spin up, then both motors below
- * any stall duty; 4: the straight duties without spinning up first; 5:
- * both motors held at full duty. */
+ * any stall duty; 4: the straight duties without spinning up first. */
 #include <kilolib.h>
 
 void setup(void) {
@@ -20,7 +19,6 @@ void setup(void) {
         set_motors(20, 20);
         break;
     case 4: set_motors(kilo_straight_left, kilo_straight_right); break;
-    case 5: set_motors(255, 255); break;
     default: break;
     }
 }

@@ -8,23 +8,11 @@
 
 kilobot_calibration kilobot_calib;
 
-/* A robot never calibrated has its EEPROM erased: 0xFF would hold both
- * motors at full duty, where a Kilobot's legs slip and it shakes in place.
- * It gets a duty in the middle of those robots calibrate to instead (60
- * to 90): it walks, if not straight. */
-#define ERASED 0xFFu
-#define UNCALIBRATED_DUTY 70u
-
-static uint8_t duty_at(uint16_t address) {
-    uint8_t duty = eeprom_read_byte((const uint8_t *)address);
-    return duty == ERASED ? UNCALIBRATED_DUTY : duty;
-}
-
 void kilobot_calibration_load(void) {
-    kilobot_calib.turn_left = duty_at(KILOBOT_EEPROM_TURN_LEFT);
-    kilobot_calib.turn_right = duty_at(KILOBOT_EEPROM_TURN_RIGHT);
-    kilobot_calib.straight_left = duty_at(KILOBOT_EEPROM_STRAIGHT_LEFT);
-    kilobot_calib.straight_right = duty_at(KILOBOT_EEPROM_STRAIGHT_RIGHT);
+    kilobot_calib.turn_left = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_TURN_LEFT);
+    kilobot_calib.turn_right = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_TURN_RIGHT);
+    kilobot_calib.straight_left = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_STRAIGHT_LEFT);
+    kilobot_calib.straight_right = eeprom_read_byte((const uint8_t *)KILOBOT_EEPROM_STRAIGHT_RIGHT);
 }
 
 /* Updates, not writes: an EEPROM cell wears out after about 100 000. */
