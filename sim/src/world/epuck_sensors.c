@@ -2,21 +2,35 @@
 #include "world/epuck_sensors.h"
 
 #include <math.h>
+#include <stddef.h>
 
 #include "world/world_random.h"
 
 /* Where each sensor looks, counter-clockwise from the heading: sensor 0
  * front right, then clockwise round the body (epuck.h's numbering). */
 static const double SENSOR_DEG[EPUCK_SENSOR_COUNT] = {-18, -45, -90, -142, 142, 90, 45, 18};
-/* The proximity model (docs/world.md): reflected counts fall off
- * exponentially from about CONTACT counts with the body's distance; the
- * receiver rests at AMBIENT with the emitters off; each sample carries
- * gaussian noise. Beyond RANGE_MM nothing is reflected at all. */
-#define CONTACT_COUNTS 3700.0
-#define FALL_MM 9.6
+/* The proximity model (docs/world.md): what one sensor reflects at a
+ * distance from its window, from the calibration Cyberbotics made on a
+ * real e-puck for Webots' model (E-puckDistanceSensor.proto): mm, counts,
+ * and the noise's standard deviation as a share of the counts; between
+ * two points the curve is a straight line, as Webots draws it. The last
+ * point is what the sensor reads with nothing near it: the e-puck
+ * library's e_calibrate_ir() takes that away, so here it is the zero. */
+typedef struct {
+    double mm, counts, noise_share;
+} response_point;
+static const response_point RESPONSE[] = {
+    {0, 4095, 0.002},    {5, 2133.33, 0.003}, {10, 1465.73, 0.007}, {15, 601.46, 0.0406},
+    {20, 383.84, 0.01472}, {30, 234.93, 0.0241}, {40, 158.03, 0.0287}, {50, 120, 0.04225},
+    {60, 104.09, 0.03065}, {70, 67.19, 0.04897},
+};
+#define RESPONSE_POINTS (sizeof RESPONSE / sizeof RESPONSE[0])
+#define RANGE_MM 70.0
+/* The receiver's level with the emitters off, and how much ambient light
+ * moves it from one round to the next (ours: both samples of a round see
+ * the same ambient, so it cancels out of the reflection). */
 #define AMBIENT_COUNTS 3800.0
-#define NOISE_COUNTS 8.0
-#define RANGE_MM 120.0
+#define AMBIENT_NOISE_COUNTS 8.0
 #define ADC_MAX 4095.0
 /* The camera's horizontal field of view, degrees, and how far it tells a
  * robot or an object from the white walls behind (docs/world.md). */
@@ -26,10 +40,22 @@ static const double SENSOR_DEG[EPUCK_SENSOR_COUNT] = {-18, -45, -90, -142, 142, 
 #define RED565 0xF800u
 #define WHITE565 0xFFFFu
 
+/* The response at distance_mm, and its noise share: RESPONSE's line
+ * through the two points either side; past the last point, the last. */
+static response_point response_at(double distance_mm) {
+    if (distance_mm <= 0) return RESPONSE[0];
+    for (size_t i = 1; i < RESPONSE_POINTS; i++) {
+        const response_point *a = &RESPONSE[i - 1], *b = &RESPONSE[i];
+        if (distance_mm > b->mm) continue;
+        double t = (distance_mm - a->mm) / (b->mm - a->mm);
+        return (response_point){distance_mm, a->counts + t * (b->counts - a->counts),
+                                a->noise_share + t * (b->noise_share - a->noise_share)};
+    }
+    return RESPONSE[RESPONSE_POINTS - 1];
+}
+
 double epuck_reflection_counts(double distance_mm) {
-    if (distance_mm >= RANGE_MM) return 0.0;
-    if (distance_mm < 0) distance_mm = 0;
-    return CONTACT_COUNTS * exp(-distance_mm / FALL_MM);
+    return response_at(distance_mm).counts - RESPONSE[RESPONSE_POINTS - 1].counts;
 }
 
 static uint16_t adc(double counts) {
@@ -45,10 +71,13 @@ void epuck_proximity_read(const world *w, int robot, uint16_t off[EPUCK_SENSOR_C
     double radius = world_robot_radius(world_spec_of(w));
     for (int k = 0; k < EPUCK_SENSOR_COUNT; k++) {
         world_hit hit = world_ray(w, robot, x, y, heading + SENSOR_DEG[k], radius + RANGE_MM);
-        double reflected = hit.kind == WORLD_HIT_NONE ? 0.0 : epuck_reflection_counts(hit.distance_mm - radius);
-        double resting = AMBIENT_COUNTS + NOISE_COUNTS * world_random_normal(rng);
+        double distance = hit.kind == WORLD_HIT_NONE ? RANGE_MM : hit.distance_mm - radius;
+        response_point r = response_at(distance);
+        double seen = r.counts * (1.0 + r.noise_share * world_random_normal(rng));
+        double reflected = seen - RESPONSE[RESPONSE_POINTS - 1].counts;
+        double resting = AMBIENT_COUNTS + AMBIENT_NOISE_COUNTS * world_random_normal(rng);
         off[k] = adc(resting);
-        pulsed[k] = adc(resting - reflected + NOISE_COUNTS * world_random_normal(rng));
+        pulsed[k] = adc(resting - reflected);
     }
 }
 

@@ -21,7 +21,8 @@ extern "C" {
  * the emitters off and at the end of their pulse; rng: the robot's noise. */
 void epuck_proximity_read(const world *w, int robot, uint16_t off[EPUCK_SENSOR_COUNT],
                           uint16_t pulsed[EPUCK_SENSOR_COUNT], uint64_t *rng);
-/* The reflected counts at distance_mm from the sensor (the model's mean). */
+/* The reflected counts at distance_mm from the sensor, the model's mean,
+ * less what it reads with nothing near (as calibrated readings are). */
 double epuck_reflection_counts(double distance_mm);
 /* A frame as the camera takes it: RGB565, row after row. Robots show
  * green, objects red, walls white (as in the experiment the paper
