@@ -70,6 +70,16 @@ set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_devices.c)
 set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/qemu_netduinoplus2.ld)
+# The same image as a robot of the world simulator (board world): the
+# link to the world on USART2 in place of the records (ports/epuck/epuck2/
+# qemu_world); the console and the exit status as on the qemu board.
+set(OPENSWARM_BOARD_epuck2_world_SOURCES
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_record.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/board_world_link.c)
+set(OPENSWARM_BOARD_epuck2_world_LINKER_SCRIPT ${OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT})
+set(OPENSWARM_BOARD_epuck2_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/host/include)
 set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
     ${OPENSWARM_ROOT}/ports/epuck/include)
 
@@ -128,7 +138,7 @@ function(openswarm_add_kernel target)
   if(K_BOARD)
     if(NOT DEFINED OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_SOURCES)
       message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown BOARD '${K_BOARD}' for ${K_PORT} "
-        "(known: qemu for epuck2, epuck_world for host)")
+        "(known: qemu and world for epuck2, epuck_world for host)")
     endif()
     set(board_sources ${OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_SOURCES})
   endif()
