@@ -30,6 +30,7 @@ static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc",
 typedef struct counter_symbols {
     uint32_t kernel, kernel_size; /* data-space address; 0: none */
     uint32_t ir, ir_size;
+    uint32_t stack_pool, stack_pool_size; /* the kernel's os_stack_pool */
 } counter_symbols;
 
 /* name, or name.lto_priv.N as link-time optimisation renames a static. */
@@ -48,6 +49,9 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
     } else if (named(name, "ir_stats")) {
         s->ir = value - AVR_DATA_OFFSET;
         s->ir_size = size;
+    } else if (named(name, "os_stack_pool")) {
+        s->stack_pool = value - AVR_DATA_OFFSET;
+        s->stack_pool_size = size;
     }
 }
 
@@ -90,9 +94,11 @@ static void print_ir(FILE *out, const avr_t *avr, const counter_symbols *s) {
     }
 }
 
-static void print_thread_stacks(FILE *out, const robot *r, const char *elf_path) {
-    thread_stack stacks[16];
-    int n = thread_stacks_read(r, elf_path, stacks, 16);
+#define MAX_THREAD_STACKS 16 /* the kernel's OS_CFG_MAX_THREADS at most */
+
+static void print_thread_stacks(FILE *out, const robot *r, const counter_symbols *s) {
+    thread_stack stacks[MAX_THREAD_STACKS];
+    int n = thread_stacks_read(r, s->stack_pool, s->stack_pool_size, stacks, MAX_THREAD_STACKS);
     fprintf(out, " thread_stacks=");
     if (n <= 0) fprintf(out, "none");
     for (int i = 0; i < n; i++) fprintf(out, "%s%u/%u", i ? "," : "", stacks[i].used, stacks[i].room);
@@ -108,6 +114,6 @@ void firmware_counters_print(const robot *r, const char *elf_path, double second
         printf(" main_stack=%u/%u", used, room);
     else
         printf(" main_stack=unmeasured");
-    print_thread_stacks(stdout, r, elf_path);
+    print_thread_stacks(stdout, r, &s);
     printf("\n");
 }
