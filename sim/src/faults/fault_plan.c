@@ -170,6 +170,15 @@ int faults_parse(const char *text, fault_spec *s) {
     return status;
 }
 
+/* A fault at a given robot as the spec names it (reset:, blank:, drift:). */
+static const char *item_name(int kind) {
+    switch (kind) {
+    case FAULT_BLANK_CALIBRATION: return "blank";
+    case FAULT_CLOCK_DRIFT: return "drift";
+    default: return fault_kind_name(kind);
+    }
+}
+
 int faults_check(const fault_spec *s, int robots_in_run) {
     if (!s->enabled) return 0;
     if (s->blank > robots_in_run) {
@@ -181,7 +190,7 @@ int faults_check(const fault_spec *s, int robots_in_run) {
         if (s->at[i].robot < robots_in_run) continue;
         fprintf(stderr, "openswarm-sim: --faults %s:%d: the run's robots are 0..%d (the index, as in "
                         "\"[robot N]\", not the uid)\n",
-                fault_kind_name(s->at[i].kind), s->at[i].robot, robots_in_run - 1);
+                item_name(s->at[i].kind), s->at[i].robot, robots_in_run - 1);
         return -1;
     }
     return 0;
