@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The soak run (docs/reliability.md, "Soak run"): 50 Kilobots running the
 gradient template's program in bench/worlds/soak.json for an hour of
-simulated time, with faults injected, every robot's counters read at half
-time and at the end (openswarm-sim --counters), and a check that nothing
+simulated time, with faults injected, every robot's counters read at every
+quarter (openswarm-sim --counters), and a check that nothing
 grows without bound.
 
     python3 bench/soak.py [--minutes 60] [--out soak-out] [--build build]
@@ -17,8 +17,14 @@ Checks, printed as ok/FAIL lines, exit status 1 if any fails:
   counters never go down between half time and the end for robots without
   a reset in between (a counter that wrapped would), and a counter at
   65535 (saturated: it stops there) is reported;
-  the main stack never reaches its room.
-Writes OUT/counters.txt (every robot's counters, twice), OUT/faults.log
+  the main stack and no thread stack ever reaches its room;
+  no counter's rate grows: over the robots never reset, what each counter
+  gains in the last quarter is at most what it gained in the second (the
+  first holds the gradient's forming, when robots start talking) plus
+  three standard deviations of a Poisson count (3 sqrt(n)) plus 5 (faults
+  come at random: a rate that merely fluctuates passes, one that climbs
+  does not).
+Writes OUT/counters.txt (every robot's counters, at each quarter), OUT/faults.log
 (one line per injected fault) and OUT/summary.txt (totals and the checks).
 Not part of CI: an hour of 50 robots takes hours of wall time.
 """
@@ -29,8 +35,10 @@ import sys
 import time
 from collections import defaultdict
 
-FAULTS = "reset=2,brownout=1,brownout-ms=50,flip=0.05,cut=0.5,blank=2,seed=1"
-PEAKS = ("event_queue_peak", "main_stack_used")
+FAULTS = "reset=2,brownout=1,brownout-ms=50,flip=0.05,cut=0.5,blank=2,drift=2,seed=1"
+PEAKS = ("event_queue_peak", "main_stack_used", "thread_stack_used")
+# Stacks' sizes, not counters: no rate is compared for them.
+NOT_COUNTERS = PEAKS + ("main_stack_room", "thread_stack_room")
 NEVER = ("stack_overflows", "cpu_faults", "critical_leaks", "handler_overruns")
 
 
@@ -44,8 +52,14 @@ def parse_counters(path):
             fields = dict(kv.split("=", 1) for kv in line.split()[1:])
             t, robot = float(fields.pop("t")), int(fields.pop("robot"))
             used, _, room = fields.pop("main_stack").partition("/")
+            # thread_stacks=USED/ROOM,...: the deepest use of any thread's, and
+            # how close any came to its room (room - used at least)
+            stacks = [tuple(map(int, t.split("/"))) for t in fields.pop("thread_stacks", "none").split(",")
+                      if t != "none"]
             values = {k: int(v) for k, v in fields.items() if v.isdigit()}
             values["main_stack_used"], values["main_stack_room"] = int(used), int(room or 0)
+            values["thread_stack_used"] = max((u for u, _ in stacks), default=0)
+            values["thread_stack_room"] = min((r - u for u, r in stacks), default=1)
             samples[t][robot] = values
     return samples
 
@@ -67,7 +81,8 @@ def main():
     args.add_argument("--minutes", type=float, default=60.0, help="simulated minutes (default 60)")
     args.add_argument("--out", default="soak-out", help="folder for the outputs (default soak-out)")
     args.add_argument("--build", default=os.path.join(here, "..", "build"), help="the build folder")
-    args.add_argument("--check-only", action="store_true", help="check OUT's files of an earlier run again")
+    args.add_argument("--check-only", action="store_true", help="check OUT's files of an earlier run again (one cut short: on the "
+                      "three quarters or more it has)")
     a = args.parse_args()
     sim = os.path.join(a.build, "sim", "openswarm-sim")
     elf = os.path.join(a.build, "tests", "avr", "world_gradient.elf")
@@ -79,7 +94,7 @@ def main():
     seconds = a.minutes * 60.0
     counters, log = os.path.join(a.out, "counters.txt"), os.path.join(a.out, "faults.log")
     command = [sim, "--world", os.path.join(here, "worlds", "soak.json"), "--time", f"{seconds:g}", "-q",
-               "--no-progress", "--faults", FAULTS, "--fault-log", log, "--counters", f"{seconds / 2:g}", elf]
+               "--no-progress", "--faults", FAULTS, "--fault-log", log, "--counters", f"{seconds / 4:g}", elf]
     lines, failed = [], False
     if not a.check_only:
         print("running:", " ".join(command), flush=True)
@@ -97,9 +112,15 @@ def main():
         failed |= not ok
 
     samples = parse_counters(counters)
-    if len(samples) < 2:
-        sys.exit(f"soak.py: expected counters at half time and at the end in {counters}")
-    half, end = sorted(samples)[-2:]
+    # Every quarter; a run cut short (killed) has fewer: from three on, the
+    # checks use what there is (the second sample as the half, the last
+    # two as the last quarter).
+    times = sorted(samples)
+    if len(times) < 3:
+        sys.exit(f"soak.py: expected counters at three quarters of the run at least in {counters}")
+    quarter, half, three_quarters, end = times[0], times[1], times[-2], times[-1]
+    if len(times) < 4:
+        lines.append(f"the run was cut short: counters at {', '.join(f'{t:g}' for t in times)} s")
     restarts = restarted(log)
     steady = [r for r in samples[end] if not any(half < t <= end for t in restarts.get(r, []))]
     robots = sorted(samples[end])
@@ -112,19 +133,32 @@ def main():
         grew = [r for r in steady if samples[end][r][key] > samples[half][r][key]]
         expect(top_end <= top_half, f"{key}: highest {top_half} at {half:g} s, {top_end} at {end:g} s "
                f"({len(grew)} robots rose towards it in the second half)")
-    went_down = [(r, k) for r in steady for k, v in samples[half][r].items() if samples[end][r].get(k, v) < v]
+    went_down = [(r, k) for r in steady for k, v in samples[half][r].items()
+                 if k not in NOT_COUNTERS and samples[end][r].get(k, v) < v]
     expect(not went_down, f"no counter went down between {half:g} s and {end:g} s ({len(steady)} robots "
            f"not restarted in between): {went_down[:5]}")
     full = sorted({k for r in robots for k, v in samples[end][r].items() if v == 65535})
     expect(True, f"counters saturated at 65535: {full or 'none'}")
     room = [r for r in robots if samples[end][r]["main_stack_used"] >= samples[end][r]["main_stack_room"] > 0]
     expect(not room, f"no main stack reached its room: {room}")
+    full = [r for r in robots if samples[end][r]["thread_stack_room"] <= 0]
+    expect(not full, f"no thread stack reached its room: {full}")
+    never_reset = [r for r in robots if r not in restarts and all(r in samples[t] for t in samples)]
+
+    def gained(key, since, until):
+        return sum(samples[until][r].get(key, 0) - samples[since][r].get(key, 0) for r in never_reset)
+
+    for key in sorted(k for k in samples[end][robots[0]] if k not in NOT_COUNTERS):
+        first, second = gained(key, quarter, half), gained(key, three_quarters, end)
+        expect(second <= first + 3 * first ** 0.5 + 5,
+               f"{key}: {first} from {quarter:g} to {half:g} s, {second} from {three_quarters:g} to {end:g} s "
+               f"({len(never_reset)} robots never reset)")
     totals = defaultdict(int)
     for r in robots:
         for k, v in samples[end][r].items():
             totals[k] += v
     lines.append("totals at the end: " + " ".join(f"{k}={v}" for k, v in sorted(totals.items())
-                                                   if k not in ("main_stack_room",)))
+                                                   if k not in ("main_stack_room", "thread_stack_room")))
     lines.append(f"resets and brown-outs: {sum(len(v) for v in restarts.values())} on {len(restarts)} robots")
     with open(os.path.join(a.out, "summary.txt"), "a" if a.check_only else "w") as f:
         f.write("\n".join(lines) + "\n")

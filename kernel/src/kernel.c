@@ -18,6 +18,7 @@ void Sys_Init_Kernel(void) {
     os_event_table_reset();
     os_event_queue_reset();
     os_hal_reset();
+    os_stack_pool_reset();
     port_init();
 #if OS_CFG_CLOCK_EVENT
     Sys_Register_Event_Sized(SYS_EVENT_1MS_TIMER, (uint8_t)sizeof(uint32_t));

@@ -147,6 +147,11 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes);
  * constant: a few cycles on an 8-bit CPU, not a memcmp call. */
 #define OS_STACK_GUARD_BYTES 4u
 #define OS_STACK_GUARD {0xA5u, 0x5Au, 0xC3u, 0x3Cu}
+/* What free stack bytes hold (stack_pool.c); openswarm-sim knows it too
+ * (sim/src/board/thread_stacks.c). */
+#define OS_STACK_PAINT 0xE7u
+void os_stack_pool_reset(void); /* every stack free: painted */
+void os_stack_free(sys_tcb *t); /* t's stack painted, then t's no more */
 static OS_HOT bool os_stack_guard_intact(const sys_tcb *t) {
     static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
     const uint8_t *g = t->stack;
@@ -170,6 +175,8 @@ static OS_HOT bool os_stack_guard_intact(const sys_tcb *t) {
     return true;
 }
 static OS_HOT void os_check_stack(sys_tcb *t) { (void)t; }
+static inline void os_stack_pool_reset(void) {}
+static inline void os_stack_free(sys_tcb *t) { t->stack = NULL; }
 #endif
 
 /* event_table.c */

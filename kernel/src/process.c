@@ -94,7 +94,7 @@ void os_reap_zombies(void) {
     for (uint8_t i = 1; i < OS_CFG_MAX_THREADS; i++) {
         sys_tcb *t = &os.threads[i];
         if (t->state != SYS_PROCESS_ZOMBIE) continue;
-        t->stack = NULL; /* frees it for os_stack_alloc */
+        os_stack_free(t); /* for os_stack_alloc */
         t->state = OS_SLOT_FREE;
         t->pid = (sys_pid)(t->pid + 0x10u); /* next generation */
         /* 0xFF means "none": only slot 15, with 16 threads, could get it */

@@ -7,20 +7,27 @@
  * start and jumps to the end of each live stack in the way.
  * With OS_CFG_STACK_CHECK each stack's lowest bytes hold a guard pattern:
  * a thread that overflows its stack overwrites it, and the kernel checks it
- * at every scheduling decision a thread makes and at every tick. */
+ * at every scheduling decision a thread makes and at every tick. The rest
+ * of a free stack holds a paint byte (OS_STACK_PAINT): painted at kernel
+ * start and when a stack is freed, never when one is taken or used, so a
+ * thread's deepest use is the lowest byte that is no longer paint
+ * (openswarm-sim reads it: its --counters' thread stacks). */
 #include "kernel_internal.h"
+
+#include <string.h>
 
 #define BLOCK ((size_t)OS_CFG_STACK_BLOCK_BYTES)
 #define BLOCKS ((size_t)OS_STACK_BLOCKS)
 
 typedef char block_is_aligned[(OS_CFG_STACK_BLOCK_BYTES % PORT_STACK_ALIGN) == 0 ? 1 : -1];
 
-static uint8_t pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
+/* Named for the simulator, which finds it by its symbol. */
+static uint8_t os_stack_pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
 
 /* Block numbers and counts fit in os_block_count: one byte on robots,
  * where 16-bit arithmetic doubles the code. */
 static os_block_count first_block(const sys_tcb *t) {
-    return (os_block_count)((size_t)(t->stack - pool) / BLOCK);
+    return (os_block_count)((size_t)(t->stack - os_stack_pool) / BLOCK);
 }
 
 /* Where the search for count free blocks goes on after first: 0 if
@@ -47,7 +54,7 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
     for (os_block_count next; (next = past_overlap(start, need)) != 0; start = next) {
         if (need > (os_block_count)(BLOCKS - next)) return 0; /* no room */
     }
-    uint8_t *stack = &pool[(size_t)start * BLOCK];
+    uint8_t *stack = &os_stack_pool[(size_t)start * BLOCK];
 #if OS_CFG_STACK_CHECK
     static const uint8_t guard[OS_STACK_GUARD_BYTES] = OS_STACK_GUARD;
     for (unsigned i = 0; i < OS_STACK_GUARD_BYTES; i++) stack[i] = guard[i]; /* stores of constants */
@@ -58,6 +65,13 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
 }
 
 #if OS_CFG_STACK_CHECK
+void os_stack_pool_reset(void) { memset(os_stack_pool, OS_STACK_PAINT, sizeof os_stack_pool); }
+
+void os_stack_free(sys_tcb *t) {
+    memset(t->stack, OS_STACK_PAINT, (size_t)t->stack_blocks * BLOCK);
+    t->stack = NULL;
+}
+
 /* t's stack guard was found broken (os_check_stack): it has overflowed,
  * and is stopped before it runs on, unless it is ending anyway. */
 void os_stack_overflowed(sys_tcb *t) {

@@ -55,6 +55,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     if (o->clock_spread_pct != 0)
         r->avr->frequency = (uint32_t)lround(
             nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
+    r->avr->frequency = faults_clock_rate(index, r->avr->frequency);
     int uid = o->uid >= 0 ? o->uid + index : -1, calibration[4];
     memcpy(calibration, o->calibration, sizeof calibration);
     if (o->world != NULL) {
@@ -143,7 +144,7 @@ static int load_robots(const options *o, FILE *csv) {
         if (setup_robot(&robots[i], i, o, csv) != 0) return -1;
     ir_channel_attach(robots, o->robots, o->ir_range_mm, o->ir_loss_pct);
     if (o->world == NULL) ir_channel_place(placement_distance_of, (void *)&o->place);
-    else if (world_run_start(robots, o->robots, o) != 0) return -1;
+    else if (world_run_start(robots, o->robots, o, nominal_hz) != 0) return -1;
     return 0;
 }
 

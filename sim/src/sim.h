@@ -217,6 +217,13 @@ int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx);
 void main_stack_paint(robot *r, const char *elf_path);
 /* Bytes of the main stack used at worst (0 if unmeasured) and its room. */
 unsigned main_stack_worst(const robot *r, unsigned *room);
+/* thread_stacks.c: the kernel's thread stacks' worst use, by address (at
+ * most room of them), from its stack pool at data address pool, size bytes
+ * (size 0: none): how many, or -1 if there is no pool. */
+typedef struct thread_stack {
+    unsigned used, room;
+} thread_stack;
+int thread_stacks_read(const robot *r, uint32_t pool, uint32_t size, thread_stack *out, int room);
 /* firmware_counters.c: --counters, robot r's kernel and IR counters and
  * main stack, read from its RAM by symbol, as one line on stdout. */
 void firmware_counters_print(const robot *r, const char *elf_path, double seconds);

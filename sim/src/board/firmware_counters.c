@@ -2,12 +2,13 @@
 /* --counters PERIOD: every robot's firmware counters, read from its RAM
  * by the symbols' names, as one line each:
  *   counters t=SECONDS robot=INDEX process_pool_full=0 ... event_queue_peak=12
- *     ir_sent=310 ... main_stack=180/1024
+ *     ir_sent=310 ... main_stack=180/1024 thread_stacks=57/120,33/88
  * The kernel's resource counters are os_stats (sys_stats, kernel/include/
  * openswarm/fault.h: eleven 16-bit counters, then the queue's peak byte),
  * the Kilobot IR driver's ir_stats (kilobot_ir_stats: seven 16-bit
  * counters); a firmware without one of them (a classic-library build)
  * shows "none" for it, one with another layout "unknown layout". The
+ * thread stacks are thread_stacks.c's, used/room each, by address. The
  * firmware is not stopped or asked: the simulator reads between windows. */
 #include <string.h>
 
@@ -29,6 +30,7 @@ static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc",
 typedef struct counter_symbols {
     uint32_t kernel, kernel_size; /* data-space address; 0: none */
     uint32_t ir, ir_size;
+    uint32_t stack_pool, stack_pool_size; /* the kernel's os_stack_pool */
 } counter_symbols;
 
 /* name, or name.lto_priv.N as link-time optimisation renames a static. */
@@ -47,6 +49,9 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
     } else if (named(name, "ir_stats")) {
         s->ir = value - AVR_DATA_OFFSET;
         s->ir_size = size;
+    } else if (named(name, "os_stack_pool")) {
+        s->stack_pool = value - AVR_DATA_OFFSET;
+        s->stack_pool_size = size;
     }
 }
 
@@ -89,6 +94,16 @@ static void print_ir(FILE *out, const avr_t *avr, const counter_symbols *s) {
     }
 }
 
+#define MAX_THREAD_STACKS 16 /* the kernel's OS_CFG_MAX_THREADS at most */
+
+static void print_thread_stacks(FILE *out, const robot *r, const counter_symbols *s) {
+    thread_stack stacks[MAX_THREAD_STACKS];
+    int n = thread_stacks_read(r, s->stack_pool, s->stack_pool_size, stacks, MAX_THREAD_STACKS);
+    fprintf(out, " thread_stacks=");
+    if (n <= 0) fprintf(out, "none");
+    for (int i = 0; i < n; i++) fprintf(out, "%s%u/%u", i ? "," : "", stacks[i].used, stacks[i].room);
+}
+
 void firmware_counters_print(const robot *r, const char *elf_path, double seconds) {
     counter_symbols s = symbols_of(elf_path);
     unsigned room, used = main_stack_worst(r, &room);
@@ -96,7 +111,9 @@ void firmware_counters_print(const robot *r, const char *elf_path, double second
     print_kernel(stdout, r->avr, &s);
     print_ir(stdout, r->avr, &s);
     if (room != 0)
-        printf(" main_stack=%u/%u\n", used, room);
+        printf(" main_stack=%u/%u", used, room);
     else
-        printf(" main_stack=unmeasured\n");
+        printf(" main_stack=unmeasured");
+    print_thread_stacks(stdout, r, &s);
+    printf("\n");
 }

@@ -13,6 +13,7 @@ static const char *const kind_names[FAULT_KINDS] = {
     [FAULT_RESET] = "reset",           [FAULT_BROWNOUT] = "brownout",
     [FAULT_PULSE_LOST] = "pulse-lost", [FAULT_PULSE_ADDED] = "pulse-added",
     [FAULT_FRAME_CUT] = "frame-cut",   [FAULT_BLANK_CALIBRATION] = "blank-calibration",
+    [FAULT_CLOCK_DRIFT] = "clock-drift",
 };
 
 static FILE *out;

@@ -23,11 +23,13 @@
 #define MAX_FLIP_PCT 10.0
 #define MAX_BROWNOUT_MS 60000.0
 #define DEFAULT_BROWNOUT_MS 50.0
+#define MAX_DRIFT_PCT 10.0
 
 typedef struct robot_faults {
     uint64_t rng;
     double next_reset_s, next_brownout_s; /* INFINITY: none */
     int blank;
+    double drift_ppm;
 } robot_faults;
 
 static fault_spec spec;
@@ -42,8 +44,9 @@ static void spec_usage(const char *text, const char *what) {
     fprintf(stderr,
             "openswarm-sim: --faults '%s': %s; expected a comma-separated list of reset=PER_HOUR "
             "(0..36000), brownout=PER_HOUR (0..36000), brownout-ms=MS (0.01..60000), flip=PCT "
-            "(0..10), cut=PCT (0..100), blank=ROBOTS, seed=N, reset:ROBOT@SECONDS, "
-            "brownout:ROBOT@SECONDS, blank:ROBOT; e.g. --faults "
+            "(0..10), cut=PCT (0..100), blank=ROBOTS, drift=PCT (0..10), seed=N, "
+            "reset:ROBOT@SECONDS, brownout:ROBOT@SECONDS, blank:ROBOT, drift:ROBOT=PCT "
+            "(-10..10) or drift:ROBOT=PPMppm; e.g. --faults "
             "reset=2,flip=0.1,cut=1,seed=7 (docs/world.md, \"Fault injection\")\n",
             text, what);
 }
@@ -71,12 +74,34 @@ static int robot_and_time(const char *text, int kind, fault_spec *s) {
     } else if (*end != '@' || number_in(end + 1, 0, 1e6, &seconds) != 0) {
         return -1;
     }
-    *f = (fault_at){kind, (int)index, seconds};
+    *f = (fault_at){kind, (int)index, seconds, 0.0};
     s->n_at++;
     return 0;
 }
 
-/* One item of the list: "key=value" or "kind:robot[@seconds]". */
+/* drift:ROBOT=PCT or drift:ROBOT=PPMppm: that robot's clock, from the start. */
+static int robot_and_drift(const char *text, fault_spec *s) {
+    if (s->n_at == MAX_FAULTS_AT) return -1;
+    char *end;
+    errno = 0;
+    long index = strtol(text, &end, 10);
+    if (end == text || errno != 0 || index < 0 || index >= MAX_ROBOTS || *end != '=') return -1;
+    const char *value = end + 1;
+    size_t n = strlen(value);
+    int ppm = n > 3 && strcmp(value + n - 3, "ppm") == 0;
+    char number[32];
+    size_t digits = n - (ppm ? 3 : 0);
+    if (digits >= sizeof number) return -1;
+    memcpy(number, value, digits);
+    number[digits] = '\0';
+    double v, limit = ppm ? MAX_DRIFT_PCT * 1e4 : MAX_DRIFT_PCT;
+    if (number_in(number, -limit, limit, &v) != 0) return -1;
+    s->at[s->n_at++] = (fault_at){FAULT_CLOCK_DRIFT, (int)index, 0.0, ppm ? v : v * 1e4};
+    return 0;
+}
+
+/* One item of the list: "key=value" or "kind:robot[@seconds]" or
+ * "drift:robot=value". */
 static int parse_item(const char *item, fault_spec *s) {
     const char *eq = strchr(item, '='), *colon = strchr(item, ':');
     if (colon != NULL && (eq == NULL || colon < eq)) {
@@ -84,6 +109,7 @@ static int parse_item(const char *item, fault_spec *s) {
         if (n == 5 && strncmp(item, "reset", n) == 0) return robot_and_time(colon + 1, FAULT_RESET, s);
         if (n == 8 && strncmp(item, "brownout", n) == 0) return robot_and_time(colon + 1, FAULT_BROWNOUT, s);
         if (n == 5 && strncmp(item, "blank", n) == 0) return robot_and_time(colon + 1, FAULT_BLANK_CALIBRATION, s);
+        if (n == 5 && strncmp(item, "drift", n) == 0) return robot_and_drift(colon + 1, s);
         return -1;
     }
     if (eq == NULL) return -1;
@@ -96,6 +122,7 @@ static int parse_item(const char *item, fault_spec *s) {
     if (KEY("brownout-ms")) return number_in(value, 0.01, MAX_BROWNOUT_MS, &s->brownout_ms);
     if (KEY("flip")) return number_in(value, 0, MAX_FLIP_PCT, &s->flip_pct);
     if (KEY("cut")) return number_in(value, 0, 100, &s->cut_pct);
+    if (KEY("drift")) return number_in(value, 0, MAX_DRIFT_PCT, &s->drift_pct);
     if (KEY("blank")) {
         if (number_in(value, 0, MAX_ROBOTS, &v) != 0 || v != floor(v)) return -1;
         s->blank = (int)v;
@@ -143,6 +170,15 @@ int faults_parse(const char *text, fault_spec *s) {
     return status;
 }
 
+/* A fault at a given robot as the spec names it (reset:, blank:, drift:). */
+static const char *item_name(int kind) {
+    switch (kind) {
+    case FAULT_BLANK_CALIBRATION: return "blank";
+    case FAULT_CLOCK_DRIFT: return "drift";
+    default: return fault_kind_name(kind);
+    }
+}
+
 int faults_check(const fault_spec *s, int robots_in_run) {
     if (!s->enabled) return 0;
     if (s->blank > robots_in_run) {
@@ -154,7 +190,7 @@ int faults_check(const fault_spec *s, int robots_in_run) {
         if (s->at[i].robot < robots_in_run) continue;
         fprintf(stderr, "openswarm-sim: --faults %s:%d: the run's robots are 0..%d (the index, as in "
                         "\"[robot N]\", not the uid)\n",
-                fault_kind_name(s->at[i].kind), s->at[i].robot, robots_in_run - 1);
+                item_name(s->at[i].kind), s->at[i].robot, robots_in_run - 1);
         return -1;
     }
     return 0;
@@ -186,6 +222,18 @@ static void draw_blank(int n) {
     free(order);
 }
 
+/* drift=PCT: each robot's clock error evenly between -PCT and +PCT, from a
+ * sequence of its own (the resets' and brown-outs' times stay as they were
+ * without it). */
+static void draw_drifts(int n) {
+    if (spec.drift_pct <= 0) return;
+    for (int i = 0; i < n; i++) {
+        uint64_t rng = spec.seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0xD81F7u);
+        world_random_next(&rng);
+        plans[i].drift_ppm = (2.0 * world_random_uniform(&rng) - 1.0) * spec.drift_pct * 1e4;
+    }
+}
+
 int faults_start(const fault_spec *s, int n) {
     spec = *s;
     n_robots = n;
@@ -199,8 +247,11 @@ int faults_start(const fault_spec *s, int n) {
         p->next_brownout_s = exponential_s(&p->rng, spec.brownouts_per_hour);
     }
     draw_blank(n);
-    for (int i = 0; i < spec.n_at; i++)
+    draw_drifts(n);
+    for (int i = 0; i < spec.n_at; i++) {
         if (spec.at[i].kind == FAULT_BLANK_CALIBRATION) plans[spec.at[i].robot].blank = 1;
+        if (spec.at[i].kind == FAULT_CLOCK_DRIFT) plans[spec.at[i].robot].drift_ppm = spec.at[i].ppm;
+    }
     qsort(spec.at, (size_t)spec.n_at, sizeof spec.at[0], by_time);
     ir_faults_configure(spec.flip_pct, spec.cut_pct, spec.seed);
     return 0;
@@ -210,6 +261,13 @@ int faults_blank_calibration(int index) {
     if (plans == NULL || !plans[index].blank) return 0;
     fault_log(FAULT_BLANK_CALIBRATION, 0.0, index, NULL);
     return 1;
+}
+
+uint32_t faults_clock_rate(int index, uint32_t hz) {
+    if (plans == NULL || plans[index].drift_ppm == 0) return hz;
+    uint32_t drifted = (uint32_t)lround(hz * (1.0 + plans[index].drift_ppm * 1e-6));
+    fault_log(FAULT_CLOCK_DRIFT, 0.0, index, "ppm=%+.0f hz=%u", plans[index].drift_ppm, (unsigned)drifted);
+    return drifted;
 }
 
 static avr_cycle_count_t cycle_of(double seconds) {
@@ -226,7 +284,7 @@ static void find_next_due(void) {
         if (robots[i].off_until != 0 && robots[i].off_until < due) due = robots[i].off_until;
     }
     for (int k = next_at; k < spec.n_at; k++)
-        if (spec.at[k].kind != FAULT_BLANK_CALIBRATION) {
+        if (spec.at[k].kind == FAULT_RESET || spec.at[k].kind == FAULT_BROWNOUT) {
             t = fmin(t, spec.at[k].seconds);
             break;
         }
@@ -269,7 +327,7 @@ void faults_after_window(avr_cycle_count_t end) {
             inject(FAULT_BROWNOUT, i, end);
     }
     for (; next_at < spec.n_at && spec.at[next_at].seconds <= t; next_at++)
-        if (spec.at[next_at].kind != FAULT_BLANK_CALIBRATION)
+        if (spec.at[next_at].kind == FAULT_RESET || spec.at[next_at].kind == FAULT_BROWNOUT)
             inject(spec.at[next_at].kind, spec.at[next_at].robot, end);
     find_next_due();
 }

@@ -1,7 +1,7 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* Fault injection (--faults SPEC): robots reset or brown out, IR pulses
  * are lost or appear in frames, frames are cut short, a robot's EEPROM
- * calibration is blank. Every fault drawn is logged, one line each, and
+ * calibration is blank, a robot's clock runs fast or slow. Every fault drawn is logged, one line each, and
  * counted for the run's summary.
  *
  * fault_plan.c reads the spec and fires the robots' resets and brown-outs
@@ -22,14 +22,16 @@ enum fault_kind {
     FAULT_PULSE_ADDED,
     FAULT_FRAME_CUT,
     FAULT_BLANK_CALIBRATION,
+    FAULT_CLOCK_DRIFT,
     FAULT_KINDS
 };
 
 /* A fault at a given time for a given robot. */
 typedef struct fault_at {
-    int kind; /* FAULT_RESET, FAULT_BROWNOUT, FAULT_BLANK_CALIBRATION (at 0 s) */
+    int kind; /* FAULT_RESET, FAULT_BROWNOUT; at 0 s FAULT_BLANK_CALIBRATION, FAULT_CLOCK_DRIFT */
     int robot;
     double seconds;
+    double ppm; /* FAULT_CLOCK_DRIFT: how fast the clock runs (negative: slow) */
 } fault_at;
 
 typedef struct fault_spec {
@@ -40,6 +42,7 @@ typedef struct fault_spec {
     double flip_pct;           /* each slot of a frame, at each receiver */
     double cut_pct;            /* each frame, at each receiver */
     int blank;                 /* robots drawn at random with blank calibration */
+    double drift_pct;          /* each robot's clock drawn between -this and +this */
     uint64_t seed;
     fault_at at[MAX_FAULTS_AT];
     int n_at;
@@ -57,6 +60,8 @@ int faults_start(const fault_spec *spec, int n);
 void faults_attach(robot *robots, uint32_t nominal_hz);
 /* Robot index has blank calibration (its EEPROM's 0xFF). */
 int faults_blank_calibration(int index);
+/* Robot index's clock rate, hz with its drift (0 if none), which is logged. */
+uint32_t faults_clock_rate(int index, uint32_t hz);
 /* Between two windows: the resets, brown-outs and power returns due by
  * cycle end of the nominal clock. */
 void faults_after_window(avr_cycle_count_t end);

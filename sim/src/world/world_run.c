@@ -215,7 +215,7 @@ static int sample(double t) {
     return output_sample_add(&s);
 }
 
-int world_run_start(robot *all, int n, const options *o) {
+int world_run_start(robot *all, int n, const options *o, uint32_t nominal_hz) {
     robots = all;
     n_robots = n;
     ir_range_mm = o->ir_range_mm;
@@ -227,7 +227,9 @@ int world_run_start(robot *all, int n, const options *o) {
         light_mv[i] = -1;
         all[i].trace.on_motors = motors_changed;
     }
-    step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * all[0].avr->frequency);
+    /* Of the nominal clock, as world_run_after_window counts (robot 0's own
+     * may run fast or slow). */
+    step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * nominal_hz);
     next_step = step_cycles;
     observe();
     if (o->out_dir == NULL) return 0;

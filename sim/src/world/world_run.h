@@ -17,7 +17,7 @@ void world_robot_noise(robot *r, int index);
 void world_robot_identity(int index, int *uid, int calibration[4]);
 /* The robots are loaded: follow their motors, place them on the IR
  * channel, open the outputs; -1 after a message. */
-int world_run_start(robot *robots, int n, const options *o);
+int world_run_start(robot *robots, int n, const options *o, uint32_t nominal_hz);
 /* After the lockstep window ending at cycle end of the nominal clock:
  * step the physics when a step is due. */
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz);
