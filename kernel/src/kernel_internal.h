@@ -86,6 +86,13 @@ typedef struct os_kernel {
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
     bool yield_requested;
+    /* Something a decision reads changed since the last one: the ready
+     * list, a priority, the policy, the end of a slice, or the system
+     * thread's work (an event sent, a thread ended, a stop). The end of an
+     * interrupt decides only if so (os_isr_exit): the common tick, in the
+     * middle of a slice, then costs no decision. Set by whoever changes
+     * these, cleared by the decision that sees them. */
+    bool reconsider;
     bool reap_pending;
     bool stop_requested;
 #if OS_CFG_CLOCK_EVENT

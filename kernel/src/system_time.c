@@ -23,7 +23,7 @@ void os_tick(void) {
     os.now_ms++;
     os_check_timeouts();
     if (os.current != OS_SYSTEM || os.preempted != NULL) {
-        if (os.slice_left != 0) os.slice_left--; /* 0: the slice is over */
+        if (os.slice_left != 0 && --os.slice_left == 0) os.reconsider = true; /* the slice is over */
     }
     os_check_stack(os.current);
 #if OS_CFG_HANDLER_LIMIT_MS
