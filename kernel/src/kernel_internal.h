@@ -149,7 +149,8 @@ bool os_decide(void);
 size_t os_stack_alloc(sys_tcb *t, uint16_t bytes);
 #if OS_CFG_STACK_CHECK
 /* The pattern in the lowest bytes of every thread stack; checked at every
- * scheduling decision a thread makes and at every tick, so overwriting it
+ * scheduling decision a thread makes and at every tick that leads to one
+ * (at least once a slice), so overwriting it
  * (an overflow) is caught. Compared as one 32-bit number against a
  * constant: a few cycles on an 8-bit CPU, not a memcmp call. */
 #define OS_STACK_GUARD_BYTES 4u

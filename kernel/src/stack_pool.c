@@ -7,7 +7,8 @@
  * start and jumps to the end of each live stack in the way.
  * With OS_CFG_STACK_CHECK each stack's lowest bytes hold a guard pattern:
  * a thread that overflows its stack overwrites it, and the kernel checks it
- * at every scheduling decision a thread makes and at every tick. */
+ * at every scheduling decision a thread makes and at every tick that leads
+ * to one (at least once a slice). */
 #include "kernel_internal.h"
 
 #define BLOCK ((size_t)OS_CFG_STACK_BLOCK_BYTES)
