@@ -75,16 +75,21 @@ def code_by_file(elf_map):
 
 def kilobot_medians():
     """The Kilobot's medians (cycles) as bench/avr_bench.py last wrote them,
-    by the start of their row's name."""
+    by the start of their row's name (the first row that starts so; its
+    median is the column so headed)."""
     medians = {}
     with open(os.path.join(ROOT, "docs", "benchmarks.md")) as f:
         text = f.read()
     text = text[:text.index(BEGIN)] if BEGIN in text else text
+    header = re.search(r"^\| what \|.*\| median \|.*$", text, re.M)
+    if not header:
+        return medians
+    column = [c.strip() for c in header.group(0).split("|")].index("median")
     for key in ("port_switch", "Sys_Yield", "tick interrupt", "interrupt to event handler",
-                "interrupt to woken thread", "event send"):
-        m = re.search(r"^\| " + re.escape(key) + r"[^|]*\|[^|]*\| *(\d+) *\|", text, re.M)
+                "interrupt to woken thread", "event send from a thread to its handler and back"):
+        m = re.search(r"^\| " + re.escape(key) + r".*$", text, re.M)
         if m:
-            medians[key] = m.group(1)
+            medians[key] = m.group(0).split("|")[column].strip()
     return medians
 
 
@@ -136,7 +141,7 @@ def main():
         else:
             out.append(f"| {name} | | (no samples) | | 0 | {avr} |")
     send = found.get("send_to_handler_x100", [0])[0] / 100
-    out.append(f"| event send from a thread to its handler and back, per event | | {send:.0f} | | 100 | {kilobot.get('event send', '')} |\n")
+    out.append(f"| event send from a thread to its handler and back, per event | | {send:.0f} | | 100 | {kilobot.get('event send from a thread to its handler and back', '')} |\n")
     out.append("The epilogue of an interrupt that may switch threads (PendSV into thread mode, the\n"
                "kernel's decision, SVC back: `ports/cortex_m4/README.md`) runs after every\n"
                "kernel-aware interrupt, whether it switches or not: it is most of the difference\n"

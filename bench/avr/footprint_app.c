@@ -1,5 +1,10 @@
-/* A minimal application: one thread that waits for the clock. */
+/* A minimal application: USER_THREADS threads (1 unless the build says
+ * otherwise) that wait for the clock. */
 #include "openswarm/kernel.h"
+
+#ifndef USER_THREADS
+#define USER_THREADS 1
+#endif
 
 static void worker(void) {
     for (;;) Sys_Sleep(100);
@@ -7,7 +12,7 @@ static void worker(void) {
 
 int main(void) {
     Sys_Init_Kernel();
-    Sys_Start_Process(worker);
+    for (unsigned i = 0; i < USER_THREADS; i++) Sys_Start_Process(worker);
     Sys_Start_Kernel();
     Sys_Run_SystemThread();
     return 0;

@@ -83,6 +83,7 @@ sys_status os_event_post(sys_event_id event, const void *data, uint8_t size) {
     os_event_slot *slot = &os_events[event];
     if (slot->size == OS_EVENT_UNREGISTERED) return SYS_E_NOT_REGISTERED;
     if (size > slot->capacity) return SYS_E_TOO_BIG;
+    os.reconsider = true; /* the system thread has work (or nothing changed: harmless) */
     if (hold(event, slot, data, size)) return SYS_OK;
     return push_or_refuse(event, data, size);
 }

@@ -52,6 +52,7 @@ void Sys_Run_SystemThread(void) {
 void Sys_Stop_Kernel(void) {
     port_irq_state_t s = port_irq_save();
     os.stop_requested = true;
+    os.reconsider = true;
     os_schedule();
     port_irq_restore(s);
 }

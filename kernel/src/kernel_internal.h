@@ -86,6 +86,13 @@ typedef struct os_kernel {
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
     bool yield_requested;
+    /* Something a decision reads changed since the last one: the ready
+     * list, a priority, the policy, the end of a slice, or the system
+     * thread's work (an event sent, a thread ended, a stop). The end of an
+     * interrupt decides only if so (os_isr_exit): the common tick, in the
+     * middle of a slice, then costs no decision. Set by whoever changes
+     * these, cleared by the decision that sees them. */
+    bool reconsider;
     bool reap_pending;
     bool stop_requested;
 #if OS_CFG_CLOCK_EVENT
@@ -142,7 +149,8 @@ bool os_decide(void);
 size_t os_stack_alloc(sys_tcb *t, uint16_t bytes);
 #if OS_CFG_STACK_CHECK
 /* The pattern in the lowest bytes of every thread stack; checked at every
- * scheduling decision a thread makes and at every tick, so overwriting it
+ * scheduling decision a thread makes and at every tick that leads to one
+ * (at least once a slice), so overwriting it
  * (an overflow) is caught. Compared as one 32-bit number against a
  * constant: a few cycles on an 8-bit CPU, not a memcmp call. */
 #define OS_STACK_GUARD_BYTES 4u

@@ -78,6 +78,7 @@ static void make_zombie(sys_tcb *t) {
     os_subscriptions_remove_thread(t->pid);
     t->state = SYS_PROCESS_ZOMBIE;
     os.reap_pending = true;
+    os.reconsider = true;
 }
 
 void os_terminate(sys_tcb *t) {
@@ -181,6 +182,7 @@ sys_status Sys_Set_Priority(sys_pid pid, uint8_t priority) {
         return SYS_E_INVALID;
     }
     t->priority = priority;
+    os.reconsider = true; /* the running thread's may have dropped */
     if (t->state == SYS_PROCESS_READY || t->state == SYS_PROCESS_NEW) {
         if (t != os.preempted) {
             os_ready_remove(t); /* re-queue at the place its new priority earns */

@@ -25,6 +25,7 @@ void os_make_ready(sys_tcb *t) {
     if (t->state != SYS_PROCESS_NEW) t->state = SYS_PROCESS_READY;
     t->next = NULL;
     os.policy->insert(&os.ready, t);
+    os.reconsider = true;
 }
 
 void os_ready_remove(sys_tcb *t) {
@@ -83,7 +84,7 @@ static OS_HOT void switch_to(sys_tcb *next) {
 bool os_decide(void) {
     sys_tcb *cand;
     if (os.current->state == SYS_PROCESS_RUNNING) {
-        if (os.lock_depth != 0) return false; /* postponed */
+        if (os.lock_depth != 0) return false; /* postponed: ended by a decision */
         /* Events first, on the system stack; a handler may kill the thread. */
         if (!os_event_queue_empty()) os_dispatch_on_system_stack();
         cand = os.current->state == SYS_PROCESS_RUNNING ? os.current : NULL;
@@ -91,6 +92,7 @@ bool os_decide(void) {
         cand = os.preempted; /* NULL unless the system thread asks */
         os.preempted = NULL;
     }
+    os.reconsider = false; /* this decision sees every change */
     sys_tcb *next;
     if (os_system_work_pending()) { /* cand resumes once the work is done */
         if (cand != NULL) cand->state = SYS_PROCESS_READY;
@@ -151,9 +153,9 @@ void os_isr_enter(void) {
 }
 
 /* The outermost interrupt's end decides at once (no guard check: the tick
- * makes one). */
+ * makes one), if anything the decision reads has changed. */
 void os_isr_exit(void) {
-    if (--os.isr_depth == 0 && os.current != OS_SYSTEM) os_decide();
+    if (--os.isr_depth == 0 && os.current != OS_SYSTEM && os.reconsider) os_decide();
 }
 
 sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {
@@ -169,6 +171,7 @@ sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {
         t->next = NULL;
         scheduler->insert(&os.ready, t);
     }
+    os.reconsider = true; /* an interrupt's end decides again */
     os_schedule();
     port_irq_restore(s);
     return SYS_OK;

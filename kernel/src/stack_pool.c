@@ -7,11 +7,12 @@
  * start and jumps to the end of each live stack in the way.
  * With OS_CFG_STACK_CHECK each stack's lowest bytes hold a guard pattern:
  * a thread that overflows its stack overwrites it, and the kernel checks it
- * at every scheduling decision a thread makes and at every tick. The rest
- * of a free stack holds a paint byte (OS_STACK_PAINT): painted at kernel
- * start and when a stack is freed, never when one is taken or used, so a
- * thread's deepest use is the lowest byte that is no longer paint
- * (openswarm-sim reads it: its --counters' thread stacks). */
+ * at every scheduling decision a thread makes and at every tick that leads
+ * to one (at least once a slice). The rest of a free stack holds a paint
+ * byte (OS_STACK_PAINT): painted at kernel start and when a stack is
+ * freed, never when one is taken or used, so a thread's deepest use is the
+ * lowest byte that is no longer paint (openswarm-sim reads it: its
+ * --counters' thread stacks). */
 #include "kernel_internal.h"
 
 #include <string.h>

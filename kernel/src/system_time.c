@@ -23,9 +23,13 @@ void os_tick(void) {
     os.now_ms++;
     os_check_timeouts();
     if (os.current != OS_SYSTEM || os.preempted != NULL) {
-        if (os.slice_left != 0) os.slice_left--; /* 0: the slice is over */
+        if (os.slice_left != 0 && --os.slice_left == 0) os.reconsider = true; /* the slice is over */
     }
-    os_check_stack(os.current);
+    /* The guard is checked by the ticks that lead to a decision - at least
+     * the last of every slice - not by every tick: 25 cycles off the common
+     * tick, and a thread that overflows while it spins is still stopped
+     * within a slice (and at its own next decision). */
+    if (os.reconsider) os_check_stack(os.current);
 #if OS_CFG_HANDLER_LIMIT_MS
     /* A handler that never returns holds up everything the system thread
      * does: said once, when it reaches the limit. */

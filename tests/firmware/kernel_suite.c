@@ -434,6 +434,36 @@ static void fault_setup(void) {
     start_control(fault_control);
 }
 
+/* A thread that overflows and then spins makes no decision of its own:
+ * the tick that ends its slice checks its guard. */
+static void spinning_overflower(void *arg) {
+    (void)arg;
+    volatile uint8_t big[64 + PORT_STACK_EXTRA + 32]; /* more than its whole stack */
+    for (uint16_t i = 0; i < sizeof big; i++) big[i] = (uint8_t)i;
+    for (;;) {
+    }
+}
+
+static void spin_fault_control(void *arg) {
+    (void)arg;
+    sys_pid spacer, victim;
+    Sys_Start_Process_Ex(sleeper, NULL, 64, 0, &spacer); /* as in fault_control */
+    Sys_Start_Process_Ex(spinning_overflower, NULL, 64, 0, &victim);
+    expected_fault_pid = victim;
+    Sys_Kill_Process(spacer);
+    Sys_Sleep(OS_CFG_TIME_SLICE_MS + 5); /* the victim spins alone for a slice */
+    CHECK(fault_seen == SYS_FAULT_STACK_OVERFLOW);
+    CHECK(fault_pid == victim);
+    CHECK(Sys_Get_ProcessState(victim, NULL) == SYS_E_INVALID);
+    finish();
+}
+
+static void spin_fault_setup(void) {
+    fault_seen = 0;
+    Sys_Set_FaultHook(on_fault);
+    start_control(spin_fault_control);
+}
+
 /* ---- the runner ---- */
 
 /* An unexpected fault (a control thread outgrowing its stack) fails the
@@ -489,6 +519,7 @@ int main(void) {
     RUN(critical);
     RUN(pools);
     RUN(fault);
+    RUN(spin_fault);
     target_put_uint(passed);
     target_puts(TEXT(" passed, "));
     target_put_uint(failed);

@@ -208,3 +208,21 @@ TEST_F(Scheduler, RaisingAPriorityPreemptsTheRunningThread) {
     EXPECT_EQ(pb, running());
     power_off();
 }
+
+// The end of an interrupt decides again only if something the decision
+// reads changed (os.reconsider): a priority the interrupt lowers is such a
+// change, even with no thread made ready.
+TEST_F(Scheduler, LoweringTheRunningThreadsPriorityInAnInterruptSwitchesAtItsEnd) {
+    std::atomic<long> a{0}, b{0};
+    sys_pid pa = 0, pb = 0;
+    boot([&] {
+        Sys_Set_Scheduler(&sys_scheduler_priority);
+        pa = spawn([&] { spin(a); }, 2);
+        pb = spawn([&] { spin(b); }, 1);
+    });
+    advance(1);
+    EXPECT_EQ(pa, running());
+    irq([&] { EXPECT_STATUS(SYS_OK, Sys_Set_Priority(pa, 0)); });
+    EXPECT_EQ(pb, running()) << "no tick came: the interrupt's end switched";
+    power_off();
+}

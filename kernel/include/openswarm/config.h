@@ -21,7 +21,7 @@
 
 /* Stack overflow detection: a 4-byte guard pattern at the bottom of every
  * thread stack, compared at every scheduling decision a thread makes and at
- * every tick; a thread that overwrote it is stopped and reported
+ * every tick that leads to one (at least once a slice); a thread that overwrote it is stopped and reported
  * (SYS_FAULT_STACK_OVERFLOW, sys_stats.stack_overflows). With 0 stacks have
  * no guard and an overflow goes unnoticed, corrupting whatever lies below. */
 #ifndef OS_CFG_STACK_CHECK

@@ -1,0 +1,7 @@
+/* footprint_base.h's kernel for the app built with 4 user threads
+ * (footprint_app.c, USER_THREADS 4): a slot and a default stack each. */
+#include "footprint_base.h"
+#undef OS_CFG_MAX_THREADS
+#define OS_CFG_MAX_THREADS 5
+#undef OS_CFG_STACK_POOL_BYTES
+#define OS_CFG_STACK_POOL_BYTES 256
