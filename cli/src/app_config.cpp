@@ -258,7 +258,36 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
     }
 }
 
+std::vector<std::string> keys_of(const std::map<std::string, int> &m) {
+    std::vector<std::string> keys;
+    for (const auto &item : m) keys.push_back(item.first);
+    return keys;
+}
+
+// The Kilobot's own settings, written for its port alone (another port's
+// build ignores them, so `build --port` needs no edit).
+void load_kilobot(const fs::path &file, const json &k, AppConfig &c) {
+    if (!k.is_object())
+        fail(file, "kilobot", "expected an object {\"overhead_controller\": ...}, found " + found(k));
+    check_keys(file, "kilobot", k, {"overhead_controller"});
+    if (!k.contains("overhead_controller")) return;
+    const auto names = keys_of(overhead_controller_choices());
+    std::string choice = string_at(file, "kilobot.overhead_controller", k["overhead_controller"],
+                                   "\"port\", \"events\" or \"off\"");
+    if (!overhead_controller_choices().count(choice))
+        fail(file, "kilobot.overhead_controller",
+             "unknown choice \"" + choice + "\"; expected \"port\" (the port answers KiloGUI), \"events\" "
+             "(the app gets KILOBOT_EVENT_OHC) or \"off\" (the messages reach KILOBOT_EVENT_IR_RX)" +
+                 did_you_mean(choice, names));
+    c.overhead_controller = choice;
+}
+
 }  // namespace
+
+const std::map<std::string, int> &overhead_controller_choices() {
+    static const std::map<std::string, int> choices = {{"off", 0}, {"port", 1}, {"events", 2}};
+    return choices;
+}
 
 const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros() {
     static std::vector<std::pair<std::string, std::string>> all;
@@ -296,7 +325,7 @@ AppConfig load_app_config(const fs::path &dir) {
     json doc = parse_json_file(config.file, text);
     const fs::path &file = config.file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
-    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices"});
+    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices", "kilobot"});
     config.name = string_at(file, "name", require(file, doc, "name"), "the app's name");
     if (!is_app_name(config.name))
         fail(file, "name", quoted_start(config.name) + " is not a usable app name: letters, digits, - and _, "
@@ -314,6 +343,7 @@ AppConfig load_app_config(const fs::path &dir) {
     if (doc.contains("events")) load_events(file, doc["events"], config);
     if (doc.contains("threads")) load_threads(file, doc["threads"], config);
     if (doc.contains("devices")) load_devices(file, doc["devices"], config);
+    if (doc.contains("kilobot")) load_kilobot(file, doc["kilobot"], config);
     return config;
 }
 

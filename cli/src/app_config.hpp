@@ -46,7 +46,14 @@ struct AppConfig {
     std::vector<EventConfig> events;
     std::vector<ThreadConfig> threads;
     std::vector<DeviceConfig> devices; // processors chosen in openswarm.json
+    // "kilobot": {"overhead_controller": ...}: "port", "events", "off";
+    // "" = not given (the port's default, "port").
+    std::string overhead_controller;
 };
+
+// The KILOBOT_OVERHEAD_CONTROL value of each overhead_controller choice
+// (ports/kilobot/include/openswarm/robot.h).
+const std::map<std::string, int> &overhead_controller_choices();
 
 // The guard pattern at the bottom of every thread stack while the kernel's
 // stack check is on (OS_STACK_GUARD_BYTES, kernel/src/kernel_internal.h):

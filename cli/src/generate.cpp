@@ -88,8 +88,15 @@ void check_given_at_least(const AppConfig &c, const std::string &key, long neede
                       "; raise it, or leave it out and the build sizes it");
 }
 
+// The port's device events' data: KILOBOT_EVENT_OHC, when the app takes the
+// overhead controller's messages, holds 10 bytes in the id whose 1 byte
+// (kilolib's calls) device_event_bytes counts.
+unsigned device_event_bytes(const AppConfig &c, const PortInfo &port) {
+    return port.device_event_bytes + (c.port == "kilobot" && c.overhead_controller == "events" ? 9 : 0);
+}
+
 void check_event_pools(const AppConfig &c, const PortInfo &port) {
-    unsigned data = port.device_event_bytes;
+    unsigned data = device_event_bytes(c, port);
     for (const auto &e : c.events) data += e.size;
     check_given_at_least(c, "max_events", port.device_events + (long)c.events.size(),
                          "the kernel's and the " + port.name + "'s " +
@@ -97,7 +104,7 @@ void check_event_pools(const AppConfig &c, const PortInfo &port) {
                              std::to_string(c.events.size()));
     check_given_at_least(c, "event_data", data,
                          "the data of the kernel's and the " + port.name + "'s events (" +
-                             std::to_string(port.device_event_bytes) + " bytes) and of openswarm.json's");
+                             std::to_string(device_event_bytes(c, port)) + " bytes) and of openswarm.json's");
 }
 
 std::string config_header(const AppConfig &c, const PortInfo &port, const Libraries &libraries) {
@@ -108,7 +115,7 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
     if (!c.events.empty()) {
         unsigned needed = port.device_events + (unsigned)c.events.size();
         if (!values.count("max_events")) values["max_events"] = std::max(port.default_max_events, needed);
-        unsigned data = port.device_event_bytes;
+        unsigned data = device_event_bytes(c, port);
         for (const auto &e : c.events) data += e.size;
         if (!values.count("event_data")) values["event_data"] = data;
     }
@@ -138,6 +145,9 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
         if (it != values.end()) h << "#define " << macro << " " << it->second << "\n";
     }
     if (c.time_slice_ms) h << "#define OS_CFG_TIME_SLICE_MS " << c.time_slice_ms << "\n";
+    if (!c.overhead_controller.empty())
+        h << "#define KILOBOT_OVERHEAD_CONTROL " << overhead_controller_choices().at(c.overhead_controller)
+          << " /* \"" << c.overhead_controller << "\" */\n";
     h << "\n#endif\n";
     return h.str();
 }

@@ -65,7 +65,7 @@ static bool decode_record(const std::string &line, QemuRecord &record) {
 }
 
 QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::string &)> &on_line) {
-    QemuOutcome outcome{0, 0, false, false, {}};
+    QemuOutcome outcome{0, 0, false, false, {}, {}};
     auto started = std::chrono::steady_clock::now();
     outcome.status = run_program_lines(
         qemu_command(r),
@@ -79,6 +79,8 @@ QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::strin
                     return; // not something the robot did
                 }
                 outcome.records.push_back(record);
+            } else {
+                outcome.console.push_back(line);
             }
             on_line(shown_line(line));
         },

@@ -37,6 +37,7 @@ struct QemuOutcome {
     bool fault_reported; // a "kernel fault:" or "CPU fault:" line on the console
     bool reached_end;    // the board's "stop" record: the run lasted its time
     std::vector<QemuRecord> records;
+    std::vector<std::string> console; // the lines that were not records
 };
 
 // Runs it, each console line (records shown as trace lines) to on_line.

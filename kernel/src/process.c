@@ -175,6 +175,9 @@ sys_status Sys_Get_ProcessState(sys_pid pid, sys_process_state *state) {
 }
 
 sys_status Sys_Set_Priority(sys_pid pid, uint8_t priority) {
+    /* The system thread is never queued: a priority would put it in the
+     * ready list, among the threads it schedules. */
+    if (pid == SYS_PID_SYSTEM) return SYS_E_INVALID;
     port_irq_state_t s = port_irq_save();
     sys_tcb *t = os_thread_of(pid);
     if (t == NULL || t->state == SYS_PROCESS_ZOMBIE) {

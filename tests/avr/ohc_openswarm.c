@@ -3,7 +3,8 @@
  * with the identity it starts with (robot_id() and kilobot_calib, which
  * calibration changes), and what IR frames reach it, and blinks green
  * every 100 ms. Built also with KILOBOT_OVERHEAD_CONTROL 0 (ohc_opt_out):
- * the system messages then reach the app as frames. */
+ * the system messages then reach the app as frames; and 2, the messages
+ * as events it has no handler for (ohc_events_unhandled). */
 #include "openswarm/kernel.h"
 #include "openswarm/kilobot_sim.h"
 #include "openswarm/robot.h"

@@ -153,7 +153,7 @@ static void priority_setup(void) {
     Sys_Set_Scheduler(&sys_scheduler_priority);
     Sys_Register_Event(EV_A);
     start_control(priority_control);
-    Sys_Set_Priority(Sys_Get_ProcessID(), 0);
+    CHECK_EQ(SYS_E_INVALID, Sys_Set_Priority(SYS_PID_SYSTEM, 5)); /* never queued */
     Sys_Start_Process_Ex(high_waiter, NULL, 0, 9, NULL);
     Sys_Start_Process_Ex(spinner, (void *)&spins[0], 0, 0, NULL);
 }

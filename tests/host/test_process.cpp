@@ -180,6 +180,24 @@ TEST_F(Process, BadArgumentsAreRejected) {
     EXPECT_STATUS(SYS_E_INVALID, bad_priority);
 }
 
+// The system thread is never queued: from a thread, a priority for it put
+// it in the ready list among the threads (it returned SYS_OK).
+TEST_F(Process, SystemThreadPriorityIsRefused) {
+    sys_status from_thread = SYS_OK, from_main = SYS_OK;
+    boot([&] {
+        from_main = Sys_Set_Priority(SYS_PID_SYSTEM, 1);
+        Sys_Set_Scheduler(&sys_scheduler_priority);
+        spawn([&] {
+            from_thread = Sys_Set_Priority(SYS_PID_SYSTEM, 9);
+            note("ran on");
+        });
+    });
+    settle();
+    EXPECT_STATUS(SYS_E_INVALID, from_main);
+    EXPECT_STATUS(SYS_E_INVALID, from_thread);
+    EXPECT_EQ("ran on", joined());
+}
+
 TEST_F(Process, YieldAlternatesBetweenReadyThreads) {
     boot([&] {
         spawn([] {

@@ -125,3 +125,65 @@ TEST_F(Sdk, CapturingLambdasAndMemberFunctionsGetTheirContext) {
     EXPECT_EQ(5, acc.total);
     EXPECT_EQ(0, other.total);
 }
+
+// Handlers that end their own subscription by returning false: a function,
+// a lambda without captures, and one with captures (which may then be
+// subscribed again: its copy is free).
+static int counted;
+static bool count_to_two(const int16_t &) { return ++counted < 2; }
+
+TEST_F(Sdk, HandlersReturningFalseUnsubscribeThemselves) {
+    static int lambda_calls, captured_total;
+    static sys_status again;
+    counted = lambda_calls = captured_total = 0;
+    again = SYS_E_INVALID;
+    boot([this] {
+        number.enroll();
+        EXPECT_STATUS(SYS_OK, number.subscribe<&count_to_two>());
+        EXPECT_STATUS(SYS_OK, number.subscribe([](const int16_t &) { return ++lambda_calls < 3; }));
+        int &into = captured_total;
+        auto until_big = [&into](const int16_t &v) {
+            into += v;
+            return v < 10;
+        };
+        EXPECT_STATUS(SYS_OK, number.subscribe(until_big));
+        spawn([until_big] {
+            for (int16_t v : {1, 10, 100, 1000}) number.send(v);
+            again = number.subscribe(until_big);
+            number.send(5);
+        });
+    });
+    settle();
+    EXPECT_EQ(2, counted) << "the function handler ended itself at its second call";
+    EXPECT_EQ(3, lambda_calls) << "the lambda ended itself at its third call";
+    EXPECT_STATUS(SYS_OK, again) << "a capturing lambda that ended itself can subscribe again";
+    EXPECT_EQ(1 + 10 + 5, captured_total);
+}
+
+TEST_F(Sdk, WaitUntilGivesUpAfterItsTimeout) {
+    static sys_status timed_out, satisfied;
+    static int16_t big;
+    static uint32_t waited;
+    timed_out = satisfied = SYS_E_INVALID;
+    big = 0;
+    boot([] {
+        number.enroll();
+        openswarm::Thread::start([] {
+            int16_t v = 0;
+            uint32_t from = openswarm::now_ms();
+            timed_out = number.wait_until<&over_ten>(v, 50);
+            waited = openswarm::now_ms() - from;
+            satisfied = number.wait_until<&over_ten>(v, 1000);
+            big = v;
+        });
+    });
+    settle();
+    irq([] { number.send(3); }); // not over ten: the wait goes on
+    advance(60);
+    irq([] { number.send(42); });
+    settle();
+    EXPECT_STATUS(SYS_E_TIMEOUT, timed_out);
+    EXPECT_GE(waited, 50u);
+    EXPECT_STATUS(SYS_OK, satisfied);
+    EXPECT_EQ(42, big);
+}

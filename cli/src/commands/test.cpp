@@ -7,7 +7,7 @@
 // "time_s,robot,device,a,b,c"; times may be 5 ms off. Each robot's changes
 // are compared in order. Lines "> TEXT" are console lines the run must
 // print, in that order (others may come between). `test --record NAME`
-// writes such a file from a run.
+// writes such a file from a run, in the Kilobot simulator or in QEMU.
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -167,22 +167,22 @@ std::vector<std::string> compare_console(const fs::path &file, const std::vector
     return {};
 }
 
-// A run in the simulator: its LED and motor changes, its console lines
-// (the simulator's own lines left out); the failure if it failed.
-struct SimulatorRun {
+// A run in the simulator or QEMU: its LED and motor changes, its console
+// lines (the simulator's own lines left out); the failure if it failed.
+struct TestRun {
     std::vector<Change> changes;
     std::vector<std::string> console;
     std::string failure;
 };
 
-SimulatorRun run_in_simulator(const std::string &name, const std::vector<std::string> &options,
-                              const fs::path &image, const Paths &paths) {
+TestRun run_in_simulator(const std::string &name, const std::vector<std::string> &options,
+                         const fs::path &image, const Paths &paths) {
     fs::path csv = image.parent_path() / (name + ".trace.csv");
     std::vector<std::string> argv = {paths.simulator.string(), "--no-progress", "--trace-csv", csv.string()};
     argv.insert(argv.end(), options.begin(), options.end());
     argv.push_back(image.string());
     std::string output;
-    SimulatorRun run;
+    TestRun run;
     int status = capture_program_and_errors(argv, output);
     std::istringstream lines(output);
     std::string simulator_said; // its own lines: shown when the run failed
@@ -201,44 +201,62 @@ SimulatorRun run_in_simulator(const std::string &name, const std::vector<std::st
     return run;
 }
 
-std::vector<std::string> run_in_simulator_and_compare(const fs::path &file, const Expectation &e,
-                                                      const fs::path &image, const Paths &paths) {
-    SimulatorRun run = run_in_simulator(file.stem().string(), e.options, image, paths);
-    if (!run.failure.empty()) return {run.failure};
-    auto problems = compare(file, e.changes, run.changes);
-    for (auto &p : compare_console(file, e.console, run.console)) problems.push_back(p);
-    return problems;
-}
-
-// A test of a port QEMU runs: one robot, and of the options only --time.
-std::vector<std::string> run_in_qemu_and_compare(const fs::path &file, const Expectation &e,
-                                                 const fs::path &image) {
-    QemuRun r;
-    r.image = image;
-    for (size_t i = 0; i < e.options.size(); i++) {
-        if (e.options[i] == "--time" && i + 1 < e.options.size()) {
-            std::string t = e.options[++i];
+// A port QEMU runs takes one robot, and of the options only --time: what
+// is wrong with them (empty if nothing), with the run's time set in r.
+std::string qemu_options(const std::vector<std::string> &options, QemuRun &r) {
+    for (size_t i = 0; i < options.size(); i++) {
+        if (options[i] == "--time" && i + 1 < options.size()) {
+            std::string t = options[++i];
             if (!t.empty() && t.back() == 's') t.pop_back();
             char *end = nullptr;
             r.seconds = std::strtod(t.c_str(), &end);
             if (*end != '\0' || !std::isfinite(r.seconds) || r.seconds <= 0 || r.seconds > 86400)
-                return {file.string() + ":1: --time " + e.options[i] +
-                        ": give seconds, more than 0 and at most 86400"};
+                return "--time " + options[i] + ": give seconds, more than 0 and at most 86400";
             continue;
         }
-        return {file.string() + ":1: " + e.options[i] +
-                ": QEMU runs one robot, and of the run options takes only --time"};
+        return options[i] + ": QEMU runs one robot, and of the run options takes only --time";
     }
+    return "";
+}
+
+// A run in QEMU with options qemu_options accepted: the board's records
+// as changes of robot 0.
+TestRun run_in_qemu(const std::vector<std::string> &options, const fs::path &image) {
+    QemuRun r;
+    r.image = image;
+    qemu_options(options, r);
     QemuOutcome outcome = run_qemu(r, [](const std::string &) {});
-    std::string failure = qemu_failure(r, outcome);
-    if (!failure.empty()) return {failure};
-    std::vector<Change> got;
+    TestRun run;
+    run.failure = qemu_failure(r, outcome);
+    if (!run.failure.empty()) return run;
     for (const auto &rec : outcome.records) {
         std::vector<int> v = rec.values; // a, b, c: fewer values are padded with 0
         v.resize(3, 0);
-        got.push_back({rec.t, 0, rec.name, v[0], v[1], v[2], 0});
+        run.changes.push_back({rec.t, 0, rec.name, v[0], v[1], v[2], 0});
     }
-    return compare(file, e.changes, got);
+    run.console = outcome.console;
+    return run;
+}
+
+// A run of the image where its port runs; options already checked.
+TestRun run_on_port(const std::string &port, const std::string &name, const std::vector<std::string> &options,
+                    const fs::path &image, const Paths &paths) {
+    if (port_info(port).runner == Runner::qemu) return run_in_qemu(options, image);
+    return run_in_simulator(name, options, image, paths);
+}
+
+std::vector<std::string> run_and_compare(const std::string &port, const fs::path &file, const Expectation &e,
+                                         const fs::path &image, const Paths &paths) {
+    if (port_info(port).runner == Runner::qemu) {
+        QemuRun unused;
+        std::string wrong = qemu_options(e.options, unused);
+        if (!wrong.empty()) return {file.string() + ":1: " + wrong};
+    }
+    TestRun run = run_on_port(port, file.stem().string(), e.options, image, paths);
+    if (!run.failure.empty()) return {run.failure};
+    auto problems = compare(file, e.changes, run.changes);
+    for (auto &p : compare_console(file, e.console, run.console)) problems.push_back(p);
+    return problems;
 }
 
 // The app's port runs nowhere here (reported); a missing or broken
@@ -281,12 +299,16 @@ int record_test(const TestOptions &o, const Paths &paths) {
     if (runs_nowhere(o.dir)) return EXIT_FAILED;
     auto built = build_app(paths, o.dir, "", Progress::brief);
     if (!built) return exit_code;
-    if (port_info(built->port).runner != Runner::simavr) {
-        report("--record runs the Kilobot simulator; the " + built->port + " port's tests are written by hand");
-        return EXIT_USAGE;
-    }
     std::vector<std::string> options = o.options.empty() ? std::vector<std::string>{"--time", "1"} : o.options;
-    SimulatorRun run = run_in_simulator(o.record, options, built->image, paths);
+    if (port_info(built->port).runner == Runner::qemu) {
+        QemuRun unused;
+        std::string wrong = qemu_options(options, unused);
+        if (!wrong.empty()) {
+            report("--record on the " + built->port + " port: " + wrong);
+            return EXIT_USAGE;
+        }
+    }
+    TestRun run = run_on_port(built->port, o.record, options, built->image, paths);
     if (!run.failure.empty()) {
         report("the run failed, so nothing was recorded: " + run.failure);
         return EXIT_FAILED;
@@ -348,10 +370,7 @@ int run_tests(const std::string &dir, const Paths &paths) {
         std::string name = file.stem().string();
         std::vector<std::string> problems;
         try {
-            if (port_info(built->port).runner == Runner::qemu)
-                problems = run_in_qemu_and_compare(file, e, built->image);
-            else
-                problems = run_in_simulator_and_compare(file, e, built->image, paths);
+            problems = run_and_compare(built->port, file, e, built->image, paths);
         } catch (const std::exception &ex) {
             problems.push_back(ex.what());
         }

@@ -1,5 +1,7 @@
-/* The battery level on the LED, for the overhead controller's VOLTAGE
- * (kilolib's status lights and the port's overhead control). */
+/* The battery on the LED, for the overhead controller's VOLTAGE and
+ * CHARGE (kilolib's status lights and the port's overhead control). */
+#include <avr/io.h>
+
 #include "openswarm/kilobot.h"
 
 /* The classic library's thresholds, in ADC6 counts. */
@@ -9,3 +11,6 @@ uint8_t kilobot_battery_light(int16_t reading) {
     if (reading > 614) return KILOBOT_RGB(3, 3, 0);
     return KILOBOT_RGB(3, 0, 0);
 }
+
+/* The charger pulls PD0 low while it charges the battery. */
+bool kilobot_charging(void) { return !(PIND & _BV(PD0)); }

@@ -87,13 +87,13 @@ static void show_uid_bit(uint8_t bit) {
     move(bit < 16 && (uid >> bit) & 1u ? kilobot_calib.turn_left : 0, 0);
 }
 
-void overhead_calibration_take(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
+void overhead_calibration_take(const uint8_t *frame) {
     uint8_t type = frame[OVERHEAD_TYPE_BYTE];
     if (type == KILOBOT_MESSAGE_CALIB) take_calib(frame);
     if (type == KILOBOT_MESSAGE_READUID) show_uid_bit(frame[0]);
 }
 
-void overhead_calibration_start(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
+void overhead_calibration_start(const uint8_t *frame) {
     uid = kilobot_uid();
     Sys_Subscribe_to_Event(SYS_EVENT_1MS_TIMER, SYS_PID_SYSTEM, on_clock, NULL);
     overhead_calibration_take(frame);

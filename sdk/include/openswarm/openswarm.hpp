@@ -8,6 +8,7 @@
 //   speed.enroll();
 //   speed.subscribe<&on_speed>();                      // void on_speed(const int16_t &)
 //   speed.subscribe([](const int16_t &v) { ... });     // a lambda without captures
+//   speed.subscribe([](const int16_t &v) { return v < 100; }); // false: unsubscribes
 //   speed.send(42);
 //   int16_t v; speed.wait(v);
 //   { openswarm::CriticalSection guard; ... }
@@ -40,12 +41,31 @@ struct same<A, A> {
 };
 template <bool>
 struct choice {};
-// Is Lambda's call void(const T &) const, exactly (a lambda taking
-// another type would be called through a conversion, silently)?
+// Is Lambda's call void(const T &) const or bool(const T &) const, exactly
+// (a lambda taking another type would be called through a conversion,
+// silently)?
 template <typename Lambda, typename T>
 struct handles {
-    static const bool value = same<decltype(&Lambda::operator()), void (Lambda::*)(const T &) const>::value;
+    static const bool value = same<decltype(&Lambda::operator()), void (Lambda::*)(const T &) const>::value ||
+                              same<decltype(&Lambda::operator()), bool (Lambda::*)(const T &) const>::value;
 };
+// What a handler's call returns: the kernel's "stay subscribed". A handler
+// returning void stays; one returning bool says (false: unsubscribe).
+template <typename F, typename... Args>
+inline bool stays(choice<false>, const F &f, const Args &...args) noexcept {
+    f(args...);
+    return true;
+}
+template <typename F, typename... Args>
+inline bool stays(choice<true>, const F &f, const Args &...args) noexcept {
+    return f(args...);
+}
+template <typename X>
+X make() noexcept;
+template <typename F, typename... Args>
+inline bool call_handler(const F &f, const Args &...args) noexcept {
+    return stays(choice<same<decltype(make<const F &>()(make<const Args &>()...)), bool>::value>{}, f, args...);
+}
 }  // namespace detail
 
 // The data of an event openswarm.json declares by "size" alone: N bytes.
@@ -63,6 +83,8 @@ class Event {
   public:
     using Handler = void (*)(const T &);
     using Condition = bool (*)(const T &);
+    // A handler that may end its own subscription: false unsubscribes it.
+    using EndingHandler = bool (*)(const T &);
 
     constexpr explicit Event(sys_event_id id) noexcept : id_(id) {}
     constexpr sys_event_id id() const noexcept { return id_; }
@@ -84,6 +106,11 @@ class Event {
     Status wait_until(T &out) const noexcept {
         return Sys_Wait_for_Condition(id_, &check<condition>, &out, sizeof(T), nullptr);
     }
+    // The same, giving up after timeout_ms: SYS_E_TIMEOUT.
+    template <Condition condition>
+    Status wait_until(T &out, uint32_t timeout_ms) const noexcept {
+        return Sys_Wait_for_Condition_Timeout(id_, &check<condition>, timeout_ms, &out, sizeof(T), nullptr);
+    }
 
     // Run handler (a function given as a template argument) for every
     // occurrence, in the system thread: costs what a C handler costs.
@@ -95,22 +122,32 @@ class Event {
     Status unsubscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
         return Sys_Unsubscribe_from_Event(id_, pid, &call<handler>);
     }
+    // A handler returning bool: false unsubscribes it.
+    template <EndingHandler handler>
+    Status subscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Subscribe_to_Event(id_, pid, &call_ending<handler>, nullptr);
+    }
+    template <EndingHandler handler>
+    Status unsubscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Unsubscribe_from_Event(id_, pid, &call_ending<handler>);
+    }
 
     // Run a lambda for every occurrence. Without captures, each lambda type
     // keeps its function pointer in one static (2 bytes on the AVR); with
     // captures (values or references, copied as bytes), a copy of them and
-    // a context binding (6 bytes on the AVR): one subscription at a time
-    // per lambda (SYS_E_EXISTS for a second until it is unsubscribed).
+    // a context binding (6 bytes on the AVR, and a flag): one subscription
+    // at a time per lambda (SYS_E_EXISTS for a second until it is
+    // unsubscribed). A lambda returning bool unsubscribes itself with false.
     template <typename Lambda>
     Status subscribe(const Lambda &lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
         static_assert(detail::handles<Lambda, T>::value,
                       "the handler must be a lambda taking const T & of the event's data type "
-                      "(openswarm.json's type for the app's events)");
-        return subscribe_lambda(lambda, pid, detail::choice<detail::converts<Lambda, Handler>::value>{});
+                      "(openswarm.json's type for the app's events), returning void or bool");
+        return subscribe_lambda(lambda, pid, detail::choice<captureless<Lambda>()>{});
     }
     template <typename Lambda>
     Status unsubscribe(const Lambda &, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        return unsubscribe_lambda<Lambda>(pid, detail::choice<detail::converts<Lambda, Handler>::value>{});
+        return unsubscribe_lambda<Lambda>(pid, detail::choice<captureless<Lambda>()>{});
     }
 
     // Run method on object for every occurrence: the object is the
@@ -142,22 +179,32 @@ class Event {
         handler(value_of(d));
         return true;
     }
+    template <EndingHandler handler>
+    static bool call_ending(sys_pid, sys_event_id, const sys_event_data *d) noexcept {
+        return handler(value_of(d));
+    }
     template <Condition condition>
     static bool check(const sys_event_data *d) noexcept {
         return condition(value_of(d));
     }
+    // The function pointer a captureless lambda converts to.
+    template <typename Lambda>
+    using Pointer = decltype(detail::make<const Lambda &>()(detail::make<const T &>())) (*)(const T &);
+    template <typename Lambda>
+    static constexpr bool captureless() noexcept {
+        return detail::converts<Lambda, Pointer<Lambda>>::value;
+    }
     template <typename Lambda>
     struct Stored {
-        static Handler handler;
+        static Pointer<Lambda> handler;
     };
     template <typename Lambda>
     static bool call_stored(sys_pid, sys_event_id, const sys_event_data *d) noexcept {
-        Stored<Lambda>::handler(value_of(d));
-        return true;
+        return detail::call_handler(Stored<Lambda>::handler, value_of(d));
     }
     template <typename Lambda>
     Status subscribe_lambda(const Lambda &lambda, sys_pid pid, detail::choice<true>) const noexcept {
-        Stored<Lambda>::handler = lambda; // a captureless lambda converts to Handler
+        Stored<Lambda>::handler = lambda; // a captureless lambda converts to its pointer
         return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
     }
     template <typename Lambda>
@@ -166,14 +213,17 @@ class Event {
     }
 
     // A lambda with captures: its bytes copied into a static of its type,
-    // which the binding gives the kernel as the context.
+    // which the binding gives the kernel as the context. `subscribed` (not
+    // the binding's handler, which the kernel may still read while it
+    // removes the subscription) says whether the copy is in use.
     template <typename Lambda>
     struct Captured {
         alignas(Lambda) static unsigned char bytes[sizeof(Lambda)];
         static sys_event_binding binding;
+        static bool subscribed;
         static bool call(void *context, sys_pid, const sys_event_data *d) noexcept {
-            (*static_cast<const Lambda *>(context))(value_of(d));
-            return true;
+            subscribed = detail::call_handler(*static_cast<const Lambda *>(context), value_of(d));
+            return subscribed;
         }
     };
     template <typename Lambda>
@@ -181,19 +231,19 @@ class Event {
         static_assert(__is_trivially_copyable(Lambda),
                       "a lambda's captures must be values or references that copy as bytes");
         using C = Captured<Lambda>;
-        if (C::binding.handler != nullptr) return SYS_E_EXISTS;
+        if (C::subscribed) return SYS_E_EXISTS;
         const unsigned char *from = reinterpret_cast<const unsigned char *>(&lambda);
         for (unsigned i = 0; i < sizeof(Lambda); i++) C::bytes[i] = from[i];
         C::binding = {&C::call, C::bytes, nullptr};
         Status st = Sys_Subscribe_with_Context(id_, pid, &C::binding);
-        if (st != SYS_OK) C::binding.handler = nullptr;
+        C::subscribed = st == SYS_OK;
         return st;
     }
     template <typename Lambda>
     Status unsubscribe_lambda(sys_pid pid, detail::choice<false>) const noexcept {
         using C = Captured<Lambda>;
         Status st = Sys_Unsubscribe_with_Context(id_, pid, &C::binding);
-        if (st == SYS_OK) C::binding.handler = nullptr;
+        if (st == SYS_OK) C::subscribed = false;
         return st;
     }
 
@@ -212,13 +262,16 @@ class Event {
 
 template <typename T>
 template <typename Lambda>
-typename Event<T>::Handler Event<T>::Stored<Lambda>::handler = nullptr;
+typename Event<T>::template Pointer<Lambda> Event<T>::Stored<Lambda>::handler = nullptr;
 template <typename T>
 template <typename Lambda>
 alignas(Lambda) unsigned char Event<T>::Captured<Lambda>::bytes[sizeof(Lambda)];
 template <typename T>
 template <typename Lambda>
 sys_event_binding Event<T>::Captured<Lambda>::binding = {nullptr, nullptr, nullptr};
+template <typename T>
+template <typename Lambda>
+bool Event<T>::Captured<Lambda>::subscribed = false;
 template <typename T>
 template <typename Object, void (Object::*method)(const T &)>
 sys_event_binding Event<T>::Bound<Object, method>::binding = {&Event<T>::Bound<Object, method>::call, nullptr,

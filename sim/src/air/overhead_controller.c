@@ -33,6 +33,7 @@ static const message_kind kinds[] = {
     {"run", 0x88, NO_MODE, 0, 0, 0, "", "run@1.5"},
     {"sleep", 0x84, NO_MODE, 0, 0, 0, "", "sleep@1.5"},
     {"wakeup", 0x85, NO_MODE, 0, 0, 0, "", "wakeup@1.5"},
+    {"pause", 0x85, NO_MODE, 0, 0, 0, "", "pause@1.5"}, /* KiloGUI names WAKEUP Pause */
     {"reset", 0x83, NO_MODE, 0, 0, 0, "", "reset@1.5"},
     {"voltage", 0x87, NO_MODE, 0, 0, 0, "", "voltage@1.5"},
     {"charge", 0x86, NO_MODE, 0, 0, 0, "", "charge@1.5"},

@@ -209,13 +209,42 @@ enum kilobot_calib_data {
  * as the classic library's VOLTAGE does: green full, blue good, yellow
  * low, red nearly empty. */
 uint8_t kilobot_battery_light(int16_t reading);
+/* Whether the charger is charging the battery (it pulls PD0 low). */
+bool kilobot_charging(void);
 /* After the devices: acts on a restart that asked for a hold (and then
  * never returns: the kernel runs the held robot), else takes the system
  * messages from now on. */
 void kilobot_overhead_control_start(void);
 /* For the IR device's Rx processors: a system message the overhead
- * control acted on (true: no app event for it). */
+ * control took (true: no KILOBOT_EVENT_IR_RX for it). */
 bool kilobot_overhead_control_take(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]);
+
+/* The overhead controller's messages as events, for an app that handles
+ * them itself (robot.h: KILOBOT_OVERHEAD_CONTROL_EVENTS; openswarm.json:
+ * "kilobot": {"overhead_controller": "events"}). While the app runs, each
+ * system message but BOOT and the bootloader's own becomes a
+ * KILOBOT_EVENT_OHC, sent from the IR interrupt, and the port does nothing
+ * more: a handler acts on it, and hands what it does not handle itself to
+ * kilobot_overhead_control_act, the port's action for it (a message not
+ * handed on is vetoed). BOOT always enters the bootloader, so KiloGUI can
+ * reprogram the robot whatever the app does; once held (SLEEP, WAKEUP,
+ * CHARGE, VOLTAGE or calibrating, by the port's action) nothing of the app
+ * runs and the port answers alone until RUN starts the app afresh.
+ * The event's id is the one kilolib keeps for its own calls: a program has
+ * one overhead controller, kilolib's or the port's. */
+#define KILOBOT_EVENT_OHC ((sys_event_id)(SYS_EVENT_PORT_FIRST + 7))
+/* data: the frame's first 10 bytes, as kilolib's message_t lays them out */
+typedef struct kilobot_ohc_message {
+    uint8_t data[9];
+    uint8_t type; /* enum kilobot_system_message */
+} kilobot_ohc_message;
+/* Registers KILOBOT_EVENT_OHC (10 bytes), then kilobot_overhead_control_start
+ * with the messages going to it: the registration's status. */
+sys_status kilobot_overhead_control_start_events(void);
+/* The port's action for a message of KILOBOT_EVENT_OHC, as without events:
+ * RESET, a hold or calibrating restart the robot (and do not return),
+ * RUN while the app runs does nothing. */
+void kilobot_overhead_control_act(const kilobot_ohc_message *message);
 
 /* The ways out of a program: the IR bootloader (at 0x7000), and a restart
  * from scratch (peripherals as at power-up, then address 0) that leaves the

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <util/atomic.h>
 #include <util/crc16.h>
+#include <util/delay.h>
 
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
@@ -255,7 +256,15 @@ int16_t get_ambientlight(void) { return kilobot_adc_read(KILOBOT_ADC_LIGHT); }
 int16_t get_voltage(void) { return kilobot_adc_read(KILOBOT_ADC_VOLTAGE); }
 int16_t get_temperature(void) { return kilobot_adc_read(KILOBOT_ADC_TEMPERATURE); }
 
-void delay(uint16_t ms) { Sys_Sleep(ms); }
+/* The classic library's delay busy-waits, and programs call it from their
+ * message callbacks too: here those run as event handlers, which cannot
+ * sleep (SYS_E_CONTEXT), so there it busy-waits as the classic one does
+ * (interrupts run meanwhile; the handler overrun report comes after 1 s).
+ * In setup() and loop(), threads, it sleeps and other threads run. */
+void delay(uint16_t ms) {
+    if (Sys_Sleep(ms) != SYS_E_CONTEXT) return;
+    while (ms-- != 0) _delay_ms(1);
+}
 
 /* Noise from the temperature sensor's least significant bits. */
 uint8_t rand_hard(void) {

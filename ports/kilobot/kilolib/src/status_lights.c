@@ -2,8 +2,6 @@
  * library: WAKEUP (and after RESET or SAVE) a short green flash every
  * 200 ms, ready for RUN; CHARGE a short red flash while the charger
  * charges, dark otherwise; VOLTAGE the battery level, steadily. */
-#include <avr/io.h>
-
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
 
@@ -18,15 +16,12 @@ static uint8_t battery_colour(void) {
     return kilobot_battery_light(v);
 }
 
-/* The charger pulls PD0 low while it charges the battery. */
-static uint8_t charging(void) { return !(PIND & _BV(PD0)); }
-
 void kilolib_status_lights(void *arg) {
     (void)arg;
     const uint8_t shown = kilolib_activity();
     for (;;) {
         uint8_t colour = shown == VOLTAGE  ? battery_colour()
-                         : shown == CHARGE ? (charging() ? RGB(1, 0, 0) : 0)
+                         : shown == CHARGE ? (kilobot_charging() ? RGB(1, 0, 0) : 0)
                                            : RGB(0, 3, 0);
         set_color(colour);
         delay(FLASH_MS);

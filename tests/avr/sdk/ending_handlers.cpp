@@ -1,0 +1,46 @@
+// The C++ SDK on the robot: handlers that end their own subscription (a
+// lambda with captures returning false) and a conditional wait with a
+// timeout (avr.sdk_ending_handlers).
+#include "openswarm/kilobot.h"
+#include "openswarm/kilobot_sim.h"
+#include "openswarm/openswarm.hpp"
+
+using namespace openswarm;
+
+static constexpr Event<uint8_t> level_event{SYS_EVENT_FIRST_FREE};
+static bool is_seven(const uint8_t &level) { return level == 7; }
+
+static void say(const char *what, uint32_t n) {
+    sim_puts_P(what);
+    sim_put_uint(n);
+    sim_putc('\n');
+}
+
+int main() {
+    Sys_Init_Kernel();
+    kilobot_devices_init();
+    level_event.enroll();
+    static uint8_t calls;
+    uint8_t &count = calls;
+    level_event.subscribe([&count](const uint8_t &level) {
+        count++;
+        uint8_t colour = KILOBOT_RGB(level, 0, 0);
+        Sys_Send_Event(KILOBOT_EVENT_LED, &colour, 1);
+        return level < 2; // shows 0, 1, 2, then ends its subscription
+    });
+    Thread::start([] {
+        for (uint8_t level = 0; level < 4; level++) {
+            level_event.send(level);
+            Thread::sleep(100);
+        }
+        say(PSTR("handler calls "), calls);
+        uint8_t seen = 0;
+        uint32_t from = now_ms();
+        Status st = level_event.wait_until<&is_seven>(seen, 250);
+        say(PSTR("wait_until status "), (uint8_t)-st);
+        say(PSTR("after ms "), now_ms() - from);
+    }, 128);
+    Sys_Start_Kernel();
+    Sys_Run_SystemThread();
+    return 0;
+}
