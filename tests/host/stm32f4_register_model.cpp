@@ -14,6 +14,10 @@ stm32_i2c epuck2_model_i2c1;
 stm32_spi epuck2_model_spi1;
 stm32_dcmi epuck2_model_dcmi;
 stm32_dma epuck2_model_dma2;
+stm32_rcc_clocks epuck2_model_rcc_clocks;
+volatile uint32_t epuck2_model_flash_acr, epuck2_model_pwr_cr;
+stm32_usart epuck2_model_usart3;
+stm32_timer epuck2_model_tim6;
 
 void epuck2_model_poll(void) {
     epuck2_model_polls++;
