@@ -27,3 +27,9 @@ void epuck2_model_poll(void) {
 
 std::function<void()> epuck2_model_silicon;
 uint64_t epuck2_model_polls;
+
+void epuck2_model_apply_bsrr(stm32_gpio &port) {
+    uint32_t bsrr = port.BSRR;
+    port.ODR = (port.ODR | (bsrr & 0xFFFFu)) & ~(bsrr >> 16);
+    port.BSRR = 0;
+}

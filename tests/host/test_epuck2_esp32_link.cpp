@@ -28,16 +28,11 @@ bool spi_mute;
 uint64_t now_us;                      // the test's clock
 std::vector<uint64_t> exchange_start; // when each packet's first byte went
 
-void apply_bsrr(stm32_gpio &g) {
-    uint32_t bsrr = g.BSRR;
-    g.ODR = (g.ODR | (bsrr & 0xFFFF)) & ~(bsrr >> 16);
-    g.BSRR = 0;
-}
 bool selected() { return (epuck2_model_gpioa.ODR & (1u << CS)) == 0; }
 
 // A byte in DR goes out at once, the ESP32's comes back: TXE and RXNE set.
 void spi_silicon() {
-    apply_bsrr(epuck2_model_gpioa);
+    epuck2_model_apply_bsrr(epuck2_model_gpioa);
     if (spi_mute) return;
     if (epuck2_model_spi1.DR != TAKEN) {
         if (sent.size() % EPUCK2_ESP32_PACKET_BYTES == 0) exchange_start.push_back(now_us);
@@ -112,7 +107,7 @@ protected:
         epuck2_model_polls = 0;
         epuck2_model_silicon = spi_silicon;
         epuck2_esp32_link_init();
-        apply_bsrr(epuck2_model_gpioa);
+        epuck2_model_apply_bsrr(epuck2_model_gpioa);
     }
     void TearDown() override { epuck2_model_silicon = nullptr; }
 };
@@ -150,7 +145,7 @@ TEST_F(Esp32Link, Spi1IsAMode0MasterAt10_5MHz) {
 
 TEST_F(Esp32Link, SettingTheLedsSendsThePacketWithTheEsp32Selected) {
     EXPECT_TRUE(epuck2_esp32_set_rgb_leds(EPUCK_RGB(1, 2, 3)));
-    apply_bsrr(epuck2_model_gpioa);
+    epuck2_model_apply_bsrr(epuck2_model_gpioa);
     ASSERT_EQ(EPUCK2_ESP32_PACKET_BYTES, sent.size());
     std::vector<uint8_t> bytes;
     for (const Sent &s : sent) {
@@ -166,7 +161,7 @@ TEST_F(Esp32Link, ASilentSpiFailsInTimeAndDeselects) {
     epuck2_model_spi1.SR = 0; // never ready
     EXPECT_FALSE(epuck2_esp32_set_rgb_leds(EPUCK_RGB(3, 3, 3)));
     EXPECT_LT(epuck2_model_polls, 1000000u);
-    apply_bsrr(epuck2_model_gpioa);
+    epuck2_model_apply_bsrr(epuck2_model_gpioa);
     EXPECT_TRUE(sent.empty());
     EXPECT_FALSE(selected());
 }

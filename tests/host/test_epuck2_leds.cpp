@@ -11,13 +11,8 @@ extern "C" {
 
 namespace {
 
-void apply_bsrr(stm32_gpio &g) {
-    uint32_t bsrr = g.BSRR;
-    g.ODR = (g.ODR | (bsrr & 0xFFFF)) & ~(bsrr >> 16);
-    g.BSRR = 0;
-}
 bool high(stm32_gpio &g, unsigned pin) {
-    apply_bsrr(g);
+    epuck2_model_apply_bsrr(g);
     return (g.ODR >> pin) & 1u;
 }
 
