@@ -52,8 +52,10 @@ set(OPENSWARM_EPUCK_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/src/selector.c)
 
 # The e-puck2 (STM32F407, Cortex-M4F): the CPU port, the chip's vector
-# table, the device layer, and a board: qemu (QEMU's netduinoplus2, for
-# running and testing).
+# table, the device layer, printf on the console, and a board: qemu
+# (QEMU's netduinoplus2, for running and testing) or robot (the real
+# e-puck2: its clock tree, drivers and console, linked after the
+# bootloader).
 set(OPENSWARM_PORT_epuck2_SOURCES
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/port.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/switch.S
@@ -62,6 +64,7 @@ set(OPENSWARM_PORT_epuck2_SOURCES
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/reset.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/console_print.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/startup/stm32f407_vectors.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/stdio/console_stdio.c
     ${OPENSWARM_EPUCK_SOURCES})
 set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
@@ -80,6 +83,16 @@ set(OPENSWARM_BOARD_epuck2_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/board_world_link.c)
 set(OPENSWARM_BOARD_epuck2_world_LINKER_SCRIPT ${OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT})
 set(OPENSWARM_BOARD_epuck2_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/host/include)
+set(OPENSWARM_EPUCK2_DRIVER_SOURCES steppers.c proximity.c camera.c po8030.c i2c_master.c
+    esp32_link.c selector.c leds.c clock_tree.c console_usart.c)
+list(TRANSFORM OPENSWARM_EPUCK2_DRIVER_SOURCES PREPEND ${OPENSWARM_ROOT}/ports/epuck/epuck2/drivers/)
+set(OPENSWARM_BOARD_epuck2_robot_SOURCES
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/robot/board_robot.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/robot/board_devices.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/robot/robot_identity.c
+    ${OPENSWARM_EPUCK2_DRIVER_SOURCES})
+set(OPENSWARM_BOARD_epuck2_robot_LINKER_SCRIPT
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/robot/epuck2_robot.ld)
 set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
     ${OPENSWARM_ROOT}/ports/epuck/include)
 
@@ -92,6 +105,7 @@ set(OPENSWARM_BOARD_host_epuck_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/host/src/board_world.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/link_io.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/world_link_main.c
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/robot_world.c
     ${OPENSWARM_EPUCK_SOURCES})
 set(OPENSWARM_BOARD_host_epuck_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/include
     ${OPENSWARM_ROOT}/ports/epuck/host/include)
@@ -138,7 +152,7 @@ function(openswarm_add_kernel target)
   if(K_BOARD)
     if(NOT DEFINED OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_SOURCES)
       message(FATAL_ERROR "openswarm_add_kernel(${target}): unknown BOARD '${K_BOARD}' for ${K_PORT} "
-        "(known: qemu and world for epuck2, epuck_world for host)")
+        "(known: qemu, world and robot for epuck2, epuck_world for host)")
     endif()
     set(board_sources ${OPENSWARM_BOARD_${K_PORT}_${K_BOARD}_SOURCES})
   endif()

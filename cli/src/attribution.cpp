@@ -143,8 +143,10 @@ std::optional<Attribution> attribute_app(const Paths &paths, const fs::path &dir
     fs::path build_dir = attribution_dir(dir, port);
     fs::path map = fs::absolute(build_dir / "link.map");
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
-    configure.insert(configure.end(),
-                     {"-DOPENSWARM_LTO=OFF", "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + map.string()});
+    // One image, one map: the e-puck2's robot image would write its own
+    // over it.
+    configure.insert(configure.end(), {"-DOPENSWARM_LTO=OFF", "-DOPENSWARM_ROBOT_IMAGE=OFF",
+                                       "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + map.string()});
     std::vector<std::string> build = {"cmake", "--build", build_dir.string()};
     std::string output;
     bool configured = capture_program_and_errors(configure, output) == 0;

@@ -48,11 +48,13 @@ const std::vector<PortInfo> &ports() {
         // epuck_devices_init registers 8 at their values' sizes (wheels 4,
         // proximity 32, six of 1: 42 bytes); flash after the e-puck2's
         // 128 KB bootloader; RAM: SRAM1+2 (the image leaves CCM unused).
+        // Two images: <app>.elf for QEMU, <app>-robot.elf for the robot.
         {"epuck2", "e-puck2: STM32F407 (Cortex-M4F at 168 MHz), run in QEMU (netduinoplus2)",
          1024 * 1024 - 128 * 1024, 128 * 1024, 2 + 16, 6 + 42, 16, 48, 1024, 64, {}, "arm-none-eabi-gcc",
          "sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi (or run OpenSwarm's "
          "./setup.sh)",
-         "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu},
+         "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu,
+         "of its 1 MB: the e-puck2's bootloader keeps the first 128 KB", 0, ".elf", "-robot.elf"},
         // The kernel's two events and the board's 8 (PORT_EVENT_COUNT in
         // ports/epuck/dspic's port_arch.h, registered at 42 bytes as on the
         // e-puck2); pools from its port_config.h; 144 KB of flash, 8 KB of

@@ -52,6 +52,9 @@ struct PortInfo {
     // The image's file name after the app's: a robot's ELF, or a host
     // program (no suffix, no toolchain file, no flash or RAM to fill).
     std::string image_suffix = ".elf";
+    // A second image built for the real robot when the first is for an
+    // emulator (the e-puck2: "-robot.elf"); empty if there is none.
+    std::string robot_image_suffix = "";
 };
 
 // A processor a device can use, as openswarm.json names it, and what the

@@ -20,6 +20,9 @@ set(OpenSwarm_FOUND TRUE)
 # The app's own code is built with warnings on (`if (count = 3)` says so);
 # OPENSWARM_WERROR (openswarm build --werror) makes them errors.
 option(OPENSWARM_WERROR "the app's warnings are errors" OFF)
+# PORT epuck2: also the image for the real robot (<name>-robot.elf), not
+# only QEMU's (off for `openswarm size`'s measuring build: one map).
+option(OPENSWARM_ROBOT_IMAGE "PORT epuck2: build the robot's image too" ON)
 function(openswarm_app_warnings target)
   set(flags -Wall -Wextra)
   if(OPENSWARM_WERROR)
@@ -32,7 +35,8 @@ endfunction()
 #                        [CONFIG <header>])
 # Builds the kernel for the port and configuration, and the application
 # against it: <name>.elf for a robot, <name> for the host and epuck_world
-# (a process the world simulator runs, ports/epuck/host).
+# (a process the world simulator runs, ports/epuck/host). For epuck2,
+# <name>.elf runs in QEMU and <name>-robot.elf (and .bin) is for the robot.
 function(openswarm_add_firmware name)
   cmake_parse_arguments(F "" "PORT;CONFIG" "SOURCES" ${ARGN})
   if(NOT F_PORT)
@@ -99,7 +103,27 @@ function(openswarm_add_firmware name)
               $<TARGET_FILE_DIR:${name}>/${name}.hex)
   elseif(F_PORT STREQUAL "epuck2")
     add_custom_command(TARGET ${name} POST_BUILD COMMAND ${CMAKE_SIZE} $<TARGET_FILE:${name}>)
+    if(OPENSWARM_ROBOT_IMAGE)
+      openswarm_add_robot_image(${name} "${F_SOURCES}" "${generated_sources}" "${config_args}")
+    endif()
   endif()
+endfunction()
+
+# The e-puck2's robot image beside the QEMU one: the same app on the
+# robot board (ports/epuck/epuck2/robot), <name>-robot.elf linked at
+# 0x08020000, and <name>-robot.bin, the flash's bytes from there (what a
+# bootloader or `st-flash write ... 0x08020000` takes; gdb loads the ELF).
+function(openswarm_add_robot_image name sources generated_sources config_args)
+  set(robot ${name}-robot)
+  openswarm_add_kernel(${robot}_openswarm PORT epuck2 BOARD robot ${config_args})
+  add_executable(${robot} ${sources} ${generated_sources})
+  target_link_libraries(${robot} PRIVATE ${robot}_openswarm)
+  openswarm_app_warnings(${robot})
+  if(generated_sources)
+    target_include_directories(${robot} PRIVATE ${OPENSWARM_GENERATED_DIR})
+  endif()
+  add_custom_command(TARGET ${robot} POST_BUILD
+    COMMAND ${CMAKE_OBJCOPY} -O binary $<TARGET_FILE:${robot}> $<TARGET_FILE_DIR:${robot}>/${robot}.bin)
 endfunction()
 
 # openswarm_add_plain_controller(<name> SOURCES <files...>)

@@ -14,6 +14,10 @@ stm32_i2c epuck2_model_i2c1;
 stm32_spi epuck2_model_spi1;
 stm32_dcmi epuck2_model_dcmi;
 stm32_dma epuck2_model_dma2;
+stm32_rcc_clocks epuck2_model_rcc_clocks;
+volatile uint32_t epuck2_model_flash_acr, epuck2_model_pwr_cr;
+stm32_usart epuck2_model_usart3;
+stm32_timer epuck2_model_tim6;
 
 void epuck2_model_poll(void) {
     epuck2_model_polls++;
@@ -23,3 +27,9 @@ void epuck2_model_poll(void) {
 
 std::function<void()> epuck2_model_silicon;
 uint64_t epuck2_model_polls;
+
+void epuck2_model_apply_bsrr(stm32_gpio &port) {
+    uint32_t bsrr = port.BSRR;
+    port.ODR = (port.ODR | (bsrr & 0xFFFFu)) & ~(bsrr >> 16);
+    port.BSRR = 0;
+}

@@ -128,6 +128,13 @@ void print_summary(const BuildResult &r, const std::vector<Share> &shares, const
                         approximate(s.ram_percent, r.ram));
     }
     std::printf("Built %s for %s\n", r.image.string().c_str(), r.port.c_str());
+    if (r.robot) {
+        fs::path bin = fs::path(r.robot->image).replace_extension(".bin");
+        std::printf("Robot image (flash from 0x08020000, after the bootloader):\nFlash %s\nRAM   %s\n"
+                    "Built %s and %s: ports/epuck/README.md says how to flash it\n",
+                    bar(r.robot->flash, info.flash_bytes).c_str(), bar(r.robot->ram, info.ram_bytes).c_str(),
+                    r.robot->image.string().c_str(), bin.string().c_str());
+    }
 }
 
 void print_json(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
@@ -148,6 +155,11 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
                             {"ram_bytes_approx", approximate(s.ram_percent, r.ram)}};
         j["share"] = share;
     }
+    if (r.robot)
+        j["robot"] = {{"image", r.robot->image.string()},
+                      {"bin", fs::path(r.robot->image).replace_extension(".bin").string()},
+                      {"flash", r.robot->flash},
+                      {"ram", r.robot->ram}};
     std::printf("%s\n", j.dump().c_str());
 }
 
@@ -269,6 +281,16 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         return std::nullopt;
     }
     warn_main_stack(info, result, config);
+    if (!info.robot_image_suffix.empty()) {
+        ImageSize robot;
+        robot.image = build_dir / (config.name + info.robot_image_suffix);
+        if (!image_size(info, robot.image, robot.flash, robot.ram)) {
+            report("cannot read the size of " + robot.image.string() + " with " + info.size_tool);
+            exit_code = EXIT_FAILED;
+            return std::nullopt;
+        }
+        result.robot = robot;
+    }
     if (brief && info.flash_bytes)
         std::printf("Built %s (flash %u of %u bytes, RAM %u of %u)\n", result.image.string().c_str(),
                     result.flash, info.flash_bytes, result.ram, info.ram_bytes);

@@ -10,10 +10,19 @@
 
 namespace openswarm {
 
-struct BuildResult {
+// An image and the bytes it uses.
+struct ImageSize {
     std::filesystem::path image;
+    unsigned flash = 0, ram = 0;
+};
+
+struct BuildResult {
+    std::filesystem::path image; // what `run` runs
     unsigned flash = 0, ram = 0; // bytes used
     std::string port;
+    // The port's image for the real robot, when it is not the one `run`
+    // runs (the e-puck2's: <app>-robot.elf, and .bin beside it).
+    std::optional<ImageSize> robot;
 };
 
 // Where `build` writes the files generated from openswarm.json.

@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -40,6 +41,9 @@ int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_wor
         dup2(down[0], STDIN_FILENO);
         dup2(up[1], STDOUT_FILENO);
         close(down[0]), close(down[1]), close(up[0]), close(up[1]);
+        char id[16]; /* the robot's robot_id() (ports/epuck/host/src/robot_world.c) */
+        snprintf(id, sizeof id, "%d", index);
+        setenv("OPENSWARM_ROBOT_ID", id, 1);
         execl(controller, controller, (char *)NULL);
         fprintf(stderr, "openswarm-sim: cannot run %s: %s\n", controller, strerror(errno));
         _exit(127);

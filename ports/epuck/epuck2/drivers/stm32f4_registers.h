@@ -1,6 +1,6 @@
 /* The STM32F407's peripherals the e-puck2's drivers use (RM0090: GPIO
  * 8.4, general-purpose timers 18.4, basic timers 20.4, RCC 7.3, ADC 13.13,
- * DMA 10.5, DCMI 15.8, I2C 27.6, SPI 28.5), as structs at their addresses.
+ * DMA 10.5, DCMI 15.8, I2C 27.6, SPI 28.5, USART 30.6, PWR 5.4, flash 3.9), as structs at their addresses.
  * Built with EPUCK2_REGISTER_MODEL (host tests), each is an ordinary struct
  * in RAM instead: the test plays the hardware, reading what the driver
  * wrote and applying what the silicon would (a BSRR write to ODR, a timer's
@@ -47,9 +47,45 @@ typedef struct stm32_dma {
     stm32_dma_stream S[8];
 } stm32_dma;
 
+/* RCC's clock control (RM0090 7.3.1-7.3.3): CR at 0x40023800. */
+typedef struct stm32_rcc_clocks {
+    volatile uint32_t CR, PLLCFGR, CFGR;
+} stm32_rcc_clocks;
+
+typedef struct stm32_usart {
+    volatile uint32_t SR, DR, BRR, CR1, CR2, CR3, GTPR;
+} stm32_usart;
+
 typedef struct stm32_rcc_enables {
     volatile uint32_t AHB1ENR, AHB2ENR, AHB3ENR, reserved, APB1ENR, APB2ENR;
 } stm32_rcc_enables;
+
+#define RCC_CR_HSEON (1u << 16)
+#define RCC_CR_HSERDY (1u << 17)
+#define RCC_CR_HSEBYP (1u << 18)
+#define RCC_CR_PLLON (1u << 24)
+#define RCC_CR_PLLRDY (1u << 25)
+#define RCC_PLLCFGR_PLLSRC_HSE (1u << 22)
+#define RCC_CFGR_SW_MASK 3u
+#define RCC_CFGR_SW_PLL 2u
+#define RCC_CFGR_SWS_MASK (3u << 2)
+#define RCC_CFGR_SWS_PLL (2u << 2)
+#define RCC_CFGR_PPRE1_DIV4 (5u << 10)
+#define RCC_CFGR_PPRE2_DIV2 (4u << 13)
+#define RCC_APB1ENR_PWREN (1u << 28)
+#define RCC_APB1ENR_USART3EN (1u << 18)
+#define RCC_APB1ENR_TIM6EN (1u << 4)
+#define PWR_CR_VOS_SCALE1 (1u << 14)
+#define FLASH_ACR_LATENCY_MASK 7u
+#define FLASH_ACR_PRFTEN (1u << 8)
+#define FLASH_ACR_ICEN (1u << 9)
+#define FLASH_ACR_DCEN (1u << 10)
+
+#define USART_SR_TXE (1u << 7)
+#define USART_CR1_TE (1u << 3)
+#define USART_CR1_TXEIE (1u << 7)
+#define USART_CR1_UE (1u << 13)
+#define TIM_CR1_OPM (1u << 3)
 
 /* ADC prescaler /8 in the common control register: APB2's 84 MHz / 8. */
 #define ADC_CCR_ADCPRE_DIV8 (3u << 16)
@@ -156,6 +192,8 @@ typedef struct stm32_rcc_enables {
 #define TIM7_IRQ 55
 #define DMA2_STREAM1_IRQ 57
 #define DCMI_IRQ 78
+#define USART3_IRQ 39
+#define TIM6_DAC_IRQ 54
 
 #ifdef EPUCK2_REGISTER_MODEL
 extern stm32_gpio epuck2_model_gpiob, epuck2_model_gpioc, epuck2_model_gpioe;
@@ -169,7 +207,16 @@ extern stm32_i2c epuck2_model_i2c1;
 extern stm32_spi epuck2_model_spi1;
 extern stm32_dcmi epuck2_model_dcmi;
 extern stm32_dma epuck2_model_dma2;
+extern stm32_rcc_clocks epuck2_model_rcc_clocks;
+extern volatile uint32_t epuck2_model_flash_acr, epuck2_model_pwr_cr;
+extern stm32_usart epuck2_model_usart3;
+extern stm32_timer epuck2_model_tim6;
 void epuck2_model_poll(void);
+#define RCC_CLOCKS (&epuck2_model_rcc_clocks)
+#define FLASH_ACR epuck2_model_flash_acr
+#define PWR_CR epuck2_model_pwr_cr
+#define USART3 (&epuck2_model_usart3)
+#define TIM6 (&epuck2_model_tim6)
 #define STM32_POLL() epuck2_model_poll()
 #define GPIOA (&epuck2_model_gpioa)
 #define GPIOD (&epuck2_model_gpiod)
@@ -207,6 +254,11 @@ void epuck2_model_poll(void);
 #define SPI1 ((stm32_spi *)0x40013000u)
 #define DCMI ((stm32_dcmi *)0x50050000u)
 #define DMA2 ((stm32_dma *)0x40026400u)
+#define RCC_CLOCKS ((stm32_rcc_clocks *)0x40023800u)
+#define FLASH_ACR (*(volatile uint32_t *)0x40023C00u)
+#define PWR_CR (*(volatile uint32_t *)0x40007000u)
+#define USART3 ((stm32_usart *)0x40004800u)
+#define TIM6 ((stm32_timer *)0x40001000u)
 #endif
 
 /* APB1 itself runs at 42 MHz (I2C's clock), APB2 at 84 MHz (SPI1's). */

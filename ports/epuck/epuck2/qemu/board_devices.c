@@ -5,6 +5,7 @@
  * `openswarm run` shows; the selector is where the run's --selector=N put
  * it (semihosting arguments); proximity and camera give nothing. */
 #include "../../src/epuck_board.h"
+#include "openswarm/robot.h"
 #include "board_record.h"
 #include "board_qemu.h"
 
@@ -34,3 +35,5 @@ void epuck_board_set_rgb_leds(uint8_t rgb) {
 }
 
 void epuck_board_start(void) { epuck_selector_arrived(board_selector_position); }
+
+uint16_t epuck_robot_id(void) { return board_robot_id; }

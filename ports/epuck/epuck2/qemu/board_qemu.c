@@ -2,7 +2,7 @@
  * wait for (QEMU models no RCC: a wait for the PLL would never end; the
  * core clock is what the machine says, 168 MHz), the console on USART1
  * (QEMU's first serial port), exit statuses through semihosting, and an
- * end to the run: given --stop-ms=N among QEMU's semihosting arguments,
+ * end to the run (and the robot's id, --id=N): given --stop-ms=N among QEMU's semihosting arguments,
  * the board exits (status 0) when the kernel's clock reaches N ms, so a
  * run lasts the same simulated time on any machine. */
 #include "openswarm/cortex_m4.h"
@@ -26,6 +26,7 @@ const uint32_t board_core_hz = 168000000u;
 
 static uint32_t stop_ms;
 uint8_t board_selector_position;
+uint16_t board_robot_id;
 
 /* The "stop" record tells the runner the run reached its end (status 0
  * alone could also be main returning 0, or a debugger ending QEMU). */
@@ -51,6 +52,7 @@ void board_init(void) {
     if (semihosting_command_line(line, sizeof line)) {
         stop_ms = number_given(line, "--stop-ms=");
         board_selector_position = (uint8_t)(number_given(line, "--selector=") & 0x0Fu);
+        board_robot_id = (uint16_t)number_given(line, "--id=");
     }
     if (stop_ms != 0) cortex_m4_tick_hook = stop_when_due;
 }

@@ -7,4 +7,7 @@
 /* The selector's position the run was given (--selector=N), 0 if none. */
 extern uint8_t board_selector_position;
 
+/* The robot's id the run was given (--id=N), 0 if none. */
+extern uint16_t board_robot_id;
+
 #endif
