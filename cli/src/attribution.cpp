@@ -16,7 +16,7 @@ namespace {
 // Who owns an input section of the link map.
 std::string owner_of(const std::string &file, const std::string &section) {
     if (file.find("_openswarm.a(") != std::string::npos) {
-        if (section == ".bss.pool") return owner::stacks;
+        if (section == ".bss.os_stack_pool") return owner::stacks;
         if (section == ".bss.arena") return owner::event_data;
         if (section == ".bss.ring") return owner::event_queue;
         return owner::kernel;
