@@ -104,7 +104,7 @@ TEST_F(Scheduler, WokenHigherPriorityThreadPreemptsAtOnce) {
     advance(1);
     // The high thread blocks on its own (no tick needed); on a loaded
     // machine that may come a little after advance() returns.
-    EXPECT_TRUE(eventually([&] { return running() == l; })) << "the spinner runs";
+    ASSERT_TRUE(eventually([&] { return running() == l; })) << "the spinner runs";
     irq([] { Sys_Send_Event(EV_A, nullptr, 0); });
     // No tick is delivered from here on: under round robin it could not run.
     EXPECT_TRUE(eventually([&] { return high_runs == 1; })) << "preempted at once";
@@ -124,7 +124,11 @@ TEST_F(Scheduler, WokenThreadWaitsForTheSliceUnderRoundRobin) {
         });
         s = spawn([&] { spin(spinner); });
     });
-    advance(1); // the waiter has blocked, the spinner runs
+    advance(1);
+    // The waiter blocks and the spinner runs (no tick needed); on a loaded
+    // machine that may come after advance() returns, and an event sent
+    // before the waiter waits would be missed.
+    ASSERT_TRUE(eventually([&] { return running() == s; })) << "the spinner runs";
     irq([] { Sys_Send_Event(EV_A, nullptr, 0); });
     EXPECT_EQ(0, woken_runs.load());
     EXPECT_EQ(s, running());
