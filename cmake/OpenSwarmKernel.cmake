@@ -80,9 +80,11 @@ set(OPENSWARM_BOARD_epuck2_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_record.c
-    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/board_world_link.c)
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/board_world_link.c
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/world_outputs.c)
 set(OPENSWARM_BOARD_epuck2_world_LINKER_SCRIPT ${OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT})
-set(OPENSWARM_BOARD_epuck2_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/host/include)
+set(OPENSWARM_BOARD_epuck2_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/host/include
+    ${OPENSWARM_ROOT}/ports/epuck/host/src)
 set(OPENSWARM_EPUCK2_DRIVER_SOURCES steppers.c proximity.c camera.c po8030.c i2c_master.c
     esp32_link.c selector.c leds.c clock_tree.c console_usart.c)
 list(TRANSFORM OPENSWARM_EPUCK2_DRIVER_SOURCES PREPEND ${OPENSWARM_ROOT}/ports/epuck/epuck2/drivers/)
@@ -103,6 +105,7 @@ set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
 # ids and pool sizes as on the e-puck2 (16 ids reserved for the port).
 set(OPENSWARM_BOARD_host_epuck_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/host/src/board_world.c
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/world_outputs.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/link_io.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/world_link_main.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/robot_world.c

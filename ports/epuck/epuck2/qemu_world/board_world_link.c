@@ -22,8 +22,7 @@
 #include "../qemu/semihosting.h"
 #include "openswarm/cortex_m4.h"
 #include "openswarm/epuck_world_link.h"
-#include "openswarm/fault.h"
-#include "openswarm/system_time.h"
+#include "world_outputs.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -48,22 +47,9 @@
 /* The world's frames are 40 x 30 (docs/world.md); room for larger. */
 #define MAX_PIXELS (80u * 60u)
 
-static struct {
-    int16_t wheel_left, wheel_right;
-    uint8_t ring, body, front, rgb;
-} shown;
 static uint32_t ticks_left; /* of the current step; 0: answer at the next tick */
 static int last_selector = -1;
 static uint16_t frame[MAX_PIXELS];
-
-void epuck_board_set_wheels(int16_t left, int16_t right) {
-    shown.wheel_left = left;
-    shown.wheel_right = right;
-}
-void epuck_board_set_ring_leds(uint8_t mask) { shown.ring = mask; }
-void epuck_board_set_body_led(bool on) { shown.body = on; }
-void epuck_board_set_front_led(bool on) { shown.front = on; }
-void epuck_board_set_rgb_leds(uint8_t rgb) { shown.rgb = rgb; }
 
 static void send(const void *data, size_t length) {
     const uint8_t *p = data;
@@ -93,20 +79,8 @@ static void link_broken(const char *why) {
 }
 
 static void answer(void) {
-    sys_stats stats;
-    Sys_Get_Stats(&stats);
-    epuck_world_output out = {
-        .magic = EPUCK_LINK_MAGIC,
-        .time_ms = Sys_Get_SystemTime(),
-        .wheel_left = shown.wheel_left,
-        .wheel_right = shown.wheel_right,
-        .ring_leds = shown.ring,
-        .body_led = shown.body,
-        .front_led = shown.front,
-        .rgb_leds = shown.rgb,
-        .faults = (uint32_t)stats.stack_overflows + stats.critical_leaks + stats.cpu_faults +
-                  stats.handler_overruns,
-    };
+    epuck_world_output out;
+    world_outputs_fill(&out);
     send(&out, sizeof out);
 }
 
