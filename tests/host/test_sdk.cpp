@@ -160,6 +160,64 @@ TEST_F(Sdk, HandlersReturningFalseUnsubscribeThemselves) {
     EXPECT_EQ(1 + 10 + 5, captured_total);
 }
 
+// Methods and events without data end their own subscriptions too: a
+// method returning bool (its object then free for another subscription),
+// and on an Event<void> a function, a lambda without captures, one with
+// captures and a method.
+struct Budget {
+    int left = 0, spent = 0;
+    bool spend(const int16_t &v) {
+        spent += v;
+        return --left > 0;
+    }
+    int rings = 0;
+    bool ring() { return ++rings < 2; }
+};
+static constexpr Event<void> bell{EV_C};
+static int bell_function_calls;
+static bool ring_twice() { return ++bell_function_calls < 2; }
+
+TEST_F(Sdk, MethodsAndDatalessHandlersEndThemselves) {
+    static Budget budget, next;
+    static int lambda_rings, captured_rings;
+    static sys_status method_again, captured_again, off_after_end;
+    budget = Budget{};
+    next = Budget{};
+    budget.left = 2;
+    next.left = 5;
+    bell_function_calls = lambda_rings = captured_rings = 0;
+    boot([this] {
+        number.enroll();
+        bell.enroll();
+        EXPECT_STATUS(SYS_OK, (number.subscribe<Budget, &Budget::spend>(budget)));
+        EXPECT_STATUS(SYS_E_EXISTS, (number.subscribe<Budget, &Budget::spend>(next))) << "one object at a time";
+        EXPECT_STATUS(SYS_OK, bell.subscribe<&ring_twice>());
+        EXPECT_STATUS(SYS_OK, bell.subscribe([] { return ++lambda_rings < 3; }));
+        int &into = captured_rings;
+        auto three = [&into] { return ++into < 3; };
+        EXPECT_STATUS(SYS_OK, bell.subscribe(three));
+        EXPECT_STATUS(SYS_OK, (bell.subscribe<Budget, &Budget::ring>(budget)));
+        spawn([three] {
+            for (int16_t v : {1, 10, 100}) number.send(v);
+            for (int i = 0; i < 5; i++) bell.send();
+            method_again = number.subscribe<Budget, &Budget::spend>(next);
+            number.send(7);
+            captured_again = bell.subscribe(three);
+            off_after_end = bell.unsubscribe<Budget, &Budget::ring>(budget);
+        });
+    });
+    settle();
+    EXPECT_EQ(11, budget.spent) << "the method ended itself at its second call";
+    EXPECT_STATUS(SYS_OK, method_again) << "its binding is free again for another object";
+    EXPECT_EQ(7, next.spent);
+    EXPECT_EQ(2, bell_function_calls);
+    EXPECT_EQ(3, lambda_rings);
+    EXPECT_EQ(3, captured_rings);
+    EXPECT_STATUS(SYS_OK, captured_again) << "a capturing lambda that ended itself can subscribe again";
+    EXPECT_EQ(2, budget.rings);
+    EXPECT_STATUS(SYS_E_NOT_FOUND, off_after_end) << "a method that ended itself is no longer subscribed";
+}
+
 TEST_F(Sdk, WaitUntilGivesUpAfterItsTimeout) {
     static sys_status timed_out, satisfied;
     static int16_t big;

@@ -66,6 +66,57 @@ template <typename F, typename... Args>
 inline bool call_handler(const F &f, const Args &...args) noexcept {
     return stays(choice<same<decltype(make<const F &>()(make<const Args &>()...)), bool>::value>{}, f, args...);
 }
+
+// A handler with a context (an object, a lambda's captures): Call::run
+// (context, data) calls it and says whether it stays subscribed. One
+// binding per Call, so one context at a time (SYS_E_EXISTS for another).
+// `owner` (not the binding, which the kernel may still read while it
+// removes a subscription that ended itself) says which context is in use.
+template <typename Call>
+struct Bound {
+    static sys_event_binding binding;
+    static void *owner;
+    static bool call(void *context, sys_pid, const sys_event_data *d) noexcept {
+        bool stays = Call::run(context, d);
+        if (!stays) owner = nullptr;
+        return stays;
+    }
+    static sys_status subscribe(sys_event_id id, sys_pid pid, void *context) noexcept {
+        if (owner != nullptr) return SYS_E_EXISTS;
+        binding = {&call, context, nullptr};
+        sys_status st = Sys_Subscribe_with_Context(id, pid, &binding);
+        if (st == SYS_OK) owner = context;
+        return st;
+    }
+    static sys_status unsubscribe(sys_event_id id, sys_pid pid, void *context) noexcept {
+        if (owner == nullptr || owner != context) return SYS_E_NOT_FOUND;
+        sys_status st = Sys_Unsubscribe_with_Context(id, pid, &binding);
+        if (st == SYS_OK) owner = nullptr;
+        return st;
+    }
+};
+template <typename Call>
+sys_event_binding Bound<Call>::binding = {nullptr, nullptr, nullptr};
+template <typename Call>
+void *Bound<Call>::owner = nullptr;
+
+// Where a capturing lambda's captures are copied (as bytes) while it is
+// subscribed: a static of its type.
+template <typename Lambda>
+struct Captures {
+    alignas(Lambda) static unsigned char bytes[sizeof(Lambda)];
+};
+template <typename Lambda>
+alignas(Lambda) unsigned char Captures<Lambda>::bytes[sizeof(Lambda)];
+
+template <typename Call, typename Lambda>
+inline sys_status subscribe_captures(sys_event_id id, sys_pid pid, const Lambda &lambda) noexcept {
+    static_assert(__is_trivially_copyable(Lambda), "a lambda's captures must be values or references that copy as bytes");
+    if (Bound<Call>::owner != nullptr) return SYS_E_EXISTS; // its copy is in use
+    const unsigned char *from = reinterpret_cast<const unsigned char *>(&lambda);
+    for (unsigned i = 0; i < sizeof(Lambda); i++) Captures<Lambda>::bytes[i] = from[i];
+    return Bound<Call>::subscribe(id, pid, Captures<Lambda>::bytes);
+}
 }  // namespace detail
 
 // The data of an event openswarm.json declares by "size" alone: N bytes.
@@ -151,21 +202,23 @@ class Event {
     }
 
     // Run method on object for every occurrence: the object is the
-    // handler's context. One object per method at a time (SYS_E_EXISTS).
+    // handler's context. One object per method at a time (SYS_E_EXISTS). A
+    // method returning bool ends its subscription with false.
     template <typename Object, void (Object::*method)(const T &)>
     Status subscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        using B = Bound<Object, method>;
-        if (B::binding.context != nullptr && B::binding.context != &object) return SYS_E_EXISTS;
-        B::binding.context = &object;
-        return Sys_Subscribe_with_Context(id_, pid, &B::binding);
+        return detail::Bound<Method<Object, void, method>>::subscribe(id_, pid, &object);
+    }
+    template <typename Object, bool (Object::*method)(const T &)>
+    Status subscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return detail::Bound<Method<Object, bool, method>>::subscribe(id_, pid, &object);
     }
     template <typename Object, void (Object::*method)(const T &)>
     Status unsubscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        using B = Bound<Object, method>;
-        if (B::binding.context != &object) return SYS_E_NOT_FOUND;
-        Status st = Sys_Unsubscribe_with_Context(id_, pid, &B::binding);
-        if (st == SYS_OK) B::binding.context = nullptr;
-        return st;
+        return detail::Bound<Method<Object, void, method>>::unsubscribe(id_, pid, &object);
+    }
+    template <typename Object, bool (Object::*method)(const T &)>
+    Status unsubscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return detail::Bound<Method<Object, bool, method>>::unsubscribe(id_, pid, &object);
     }
 
     // The data the last occurrence carried, if any is kept.
@@ -213,47 +266,28 @@ class Event {
     }
 
     // A lambda with captures: its bytes copied into a static of its type,
-    // which the binding gives the kernel as the context. `subscribed` (not
-    // the binding's handler, which the kernel may still read while it
-    // removes the subscription) says whether the copy is in use.
+    // which is the handler's context.
     template <typename Lambda>
     struct Captured {
-        alignas(Lambda) static unsigned char bytes[sizeof(Lambda)];
-        static sys_event_binding binding;
-        static bool subscribed;
-        static bool call(void *context, sys_pid, const sys_event_data *d) noexcept {
-            subscribed = detail::call_handler(*static_cast<const Lambda *>(context), value_of(d));
-            return subscribed;
+        static bool run(void *context, const sys_event_data *d) noexcept {
+            return detail::call_handler(*static_cast<const Lambda *>(context), value_of(d));
         }
     };
     template <typename Lambda>
     Status subscribe_lambda(const Lambda &lambda, sys_pid pid, detail::choice<false>) const noexcept {
-        static_assert(__is_trivially_copyable(Lambda),
-                      "a lambda's captures must be values or references that copy as bytes");
-        using C = Captured<Lambda>;
-        if (C::subscribed) return SYS_E_EXISTS;
-        const unsigned char *from = reinterpret_cast<const unsigned char *>(&lambda);
-        for (unsigned i = 0; i < sizeof(Lambda); i++) C::bytes[i] = from[i];
-        C::binding = {&C::call, C::bytes, nullptr};
-        Status st = Sys_Subscribe_with_Context(id_, pid, &C::binding);
-        C::subscribed = st == SYS_OK;
-        return st;
+        return detail::subscribe_captures<Captured<Lambda>>(id_, pid, lambda);
     }
     template <typename Lambda>
     Status unsubscribe_lambda(sys_pid pid, detail::choice<false>) const noexcept {
-        using C = Captured<Lambda>;
-        Status st = Sys_Unsubscribe_with_Context(id_, pid, &C::binding);
-        if (st == SYS_OK) C::subscribed = false;
-        return st;
+        return detail::Bound<Captured<Lambda>>::unsubscribe(id_, pid, detail::Captures<Lambda>::bytes);
     }
 
     // A member function, its object the context.
-    template <typename Object, void (Object::*method)(const T &)>
-    struct Bound {
-        static sys_event_binding binding;
-        static bool call(void *context, sys_pid, const sys_event_data *d) noexcept {
-            (static_cast<Object *>(context)->*method)(value_of(d));
-            return true;
+    template <typename Object, typename R, R (Object::*method)(const T &)>
+    struct Method {
+        static bool run(void *context, const sys_event_data *d) noexcept {
+            Object *object = static_cast<Object *>(context);
+            return detail::call_handler([object](const T &v) { return (object->*method)(v); }, value_of(d));
         }
     };
 
@@ -263,25 +297,15 @@ class Event {
 template <typename T>
 template <typename Lambda>
 typename Event<T>::template Pointer<Lambda> Event<T>::Stored<Lambda>::handler = nullptr;
-template <typename T>
-template <typename Lambda>
-alignas(Lambda) unsigned char Event<T>::Captured<Lambda>::bytes[sizeof(Lambda)];
-template <typename T>
-template <typename Lambda>
-sys_event_binding Event<T>::Captured<Lambda>::binding = {nullptr, nullptr, nullptr};
-template <typename T>
-template <typename Lambda>
-bool Event<T>::Captured<Lambda>::subscribed = false;
-template <typename T>
-template <typename Object, void (Object::*method)(const T &)>
-sys_event_binding Event<T>::Bound<Object, method>::binding = {&Event<T>::Bound<Object, method>::call, nullptr,
-                                                              nullptr};
-
-// An event that carries no data (openswarm.json's "type": "none").
+// An event that carries no data (openswarm.json's "type": "none"). Its
+// handlers take nothing; as Event<T>'s, they may be functions, lambdas
+// (with or without captures) or methods, and one returning bool ends its
+// own subscription with false.
 template <>
 class Event<void> {
   public:
     using Handler = void (*)();
+    using EndingHandler = bool (*)();
 
     constexpr explicit Event(sys_event_id id) noexcept : id_(id) {}
     constexpr sys_event_id id() const noexcept { return id_; }
@@ -295,41 +319,109 @@ class Event<void> {
 
     template <Handler handler>
     Status subscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        return Sys_Subscribe_to_Event(id_, pid, &call<handler>, nullptr);
+        return Sys_Subscribe_to_Event(id_, pid, &call<Handler, handler>, nullptr);
     }
     template <Handler handler>
     Status unsubscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        return Sys_Unsubscribe_from_Event(id_, pid, &call<handler>);
+        return Sys_Unsubscribe_from_Event(id_, pid, &call<Handler, handler>);
+    }
+    template <EndingHandler handler>
+    Status subscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Subscribe_to_Event(id_, pid, &call<EndingHandler, handler>, nullptr);
+    }
+    template <EndingHandler handler>
+    Status unsubscribe(sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return Sys_Unsubscribe_from_Event(id_, pid, &call<EndingHandler, handler>);
+    }
+
+    template <typename Lambda>
+    Status subscribe(const Lambda &lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        static_assert(detail::same<decltype(&Lambda::operator()), void (Lambda::*)() const>::value ||
+                          detail::same<decltype(&Lambda::operator()), bool (Lambda::*)() const>::value,
+                      "the handler of an event without data must be a lambda without parameters, "
+                      "returning void or bool");
+        return subscribe_lambda(lambda, pid, detail::choice<captureless<Lambda>()>{});
     }
     template <typename Lambda>
-    Status subscribe(Lambda lambda, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
-        static_assert(detail::converts<Lambda, Handler>::value,
-                      "the handler of an event without data must be a lambda without captures or parameters");
-        Stored<Lambda>::handler = lambda;
-        return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
+    Status unsubscribe(const Lambda &, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return unsubscribe_lambda<Lambda>(pid, detail::choice<captureless<Lambda>()>{});
+    }
+
+    template <typename Object, void (Object::*method)()>
+    Status subscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return detail::Bound<Method<Object, void, method>>::subscribe(id_, pid, &object);
+    }
+    template <typename Object, bool (Object::*method)()>
+    Status subscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return detail::Bound<Method<Object, bool, method>>::subscribe(id_, pid, &object);
+    }
+    template <typename Object, void (Object::*method)()>
+    Status unsubscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return detail::Bound<Method<Object, void, method>>::unsubscribe(id_, pid, &object);
+    }
+    template <typename Object, bool (Object::*method)()>
+    Status unsubscribe(Object &object, sys_pid pid = SYS_PID_SYSTEM) const noexcept {
+        return detail::Bound<Method<Object, bool, method>>::unsubscribe(id_, pid, &object);
     }
 
   private:
-    template <Handler handler>
+    template <typename F, F handler>
     static bool call(sys_pid, sys_event_id, const sys_event_data *) noexcept {
-        handler();
-        return true;
+        return detail::call_handler(handler);
+    }
+
+    template <typename Lambda>
+    using Pointer = decltype(detail::make<const Lambda &>()()) (*)();
+    template <typename Lambda>
+    static constexpr bool captureless() noexcept {
+        return detail::converts<Lambda, Pointer<Lambda>>::value;
     }
     template <typename Lambda>
     struct Stored {
-        static Handler handler;
+        static Pointer<Lambda> handler;
     };
     template <typename Lambda>
     static bool call_stored(sys_pid, sys_event_id, const sys_event_data *) noexcept {
-        Stored<Lambda>::handler();
-        return true;
+        return detail::call_handler(Stored<Lambda>::handler);
     }
+    template <typename Lambda>
+    Status subscribe_lambda(const Lambda &lambda, sys_pid pid, detail::choice<true>) const noexcept {
+        Stored<Lambda>::handler = lambda;
+        return Sys_Subscribe_to_Event(id_, pid, &call_stored<Lambda>, nullptr);
+    }
+    template <typename Lambda>
+    Status unsubscribe_lambda(sys_pid pid, detail::choice<true>) const noexcept {
+        return Sys_Unsubscribe_from_Event(id_, pid, &call_stored<Lambda>);
+    }
+
+    template <typename Lambda>
+    struct Captured {
+        static bool run(void *context, const sys_event_data *) noexcept {
+            return detail::call_handler(*static_cast<const Lambda *>(context));
+        }
+    };
+    template <typename Lambda>
+    Status subscribe_lambda(const Lambda &lambda, sys_pid pid, detail::choice<false>) const noexcept {
+        return detail::subscribe_captures<Captured<Lambda>>(id_, pid, lambda);
+    }
+    template <typename Lambda>
+    Status unsubscribe_lambda(sys_pid pid, detail::choice<false>) const noexcept {
+        return detail::Bound<Captured<Lambda>>::unsubscribe(id_, pid, detail::Captures<Lambda>::bytes);
+    }
+
+    template <typename Object, typename R, R (Object::*method)()>
+    struct Method {
+        static bool run(void *context, const sys_event_data *) noexcept {
+            Object *object = static_cast<Object *>(context);
+            return detail::call_handler([object] { return (object->*method)(); });
+        }
+    };
 
     sys_event_id id_;
 };
 
 template <typename Lambda>
-Event<void>::Handler Event<void>::Stored<Lambda>::handler = nullptr;
+Event<void>::Pointer<Lambda> Event<void>::Stored<Lambda>::handler = nullptr;
 
 // Threads.
 struct Thread {
