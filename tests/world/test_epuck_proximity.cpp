@@ -4,6 +4,8 @@
 // reflection (reading with the emitters off minus the reading in the
 // pulse) has the calibration's mean, less what the sensor reads with
 // nothing near, and its spread.
+#include <ostream>
+#include <string>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,6 +57,11 @@ struct calibration_point {
     double gap_mm, counts, noise_share;
 };
 
+// How ctest lists a case (after its name): what the calibration expects.
+void PrintTo(const calibration_point &p, std::ostream *out) {
+    *out << p.counts << " counts, noise " << p.noise_share * 100 << "%";
+}
+
 class Proximity : public ::testing::TestWithParam<calibration_point> {};
 
 TEST_P(Proximity, ReflectsTheCalibrationsMeanAndSpread) {
@@ -78,7 +85,12 @@ INSTANTIATE_TEST_SUITE_P(WebotsCalibration, Proximity,
                                            calibration_point{25, (383.84 + 234.93) / 2, (0.01472 + 0.0241) / 2},
                                            // past the last point, and nothing in reach
                                            calibration_point{90, NOTHING_NEAR, 0.04897},
-                                           calibration_point{-1, NOTHING_NEAR, 0.04897}));
+                                           calibration_point{-1, NOTHING_NEAR, 0.04897}),
+                         // each case named by its gap (ctest lists the names): at_25mm, nothing_in_reach
+                         [](const ::testing::TestParamInfo<calibration_point> &point) {
+                             return point.param.gap_mm < 0 ? std::string("nothing_in_reach")
+                                                          : "at_" + std::to_string((int)point.param.gap_mm) + "mm";
+                         });
 
 TEST(Proximity, FallsWithDistanceToNothingAt70mm) {
     double last = 1e9;
