@@ -26,11 +26,13 @@ failures = []
 def qemu_controller():
     """The world starts a controller as a program without arguments: a
     script that runs the image in QEMU, the link on the second serial
-    port (USART2) as its standard input and output."""
+    port (USART2) as its standard input and output, the robot's index in
+    the world (OPENSWARM_ROBOT_ID) as its id."""
     path = os.path.join(WORK, "epuck2_in_qemu.sh")
     with open(path, "w") as f:
         f.write("#!/bin/sh\nexec %s -M netduinoplus2 -display none -monitor none "
-                "-serial file:/dev/stderr -serial stdio -semihosting-config enable=on,target=native "
+                "-serial file:/dev/stderr -serial stdio "
+                "-semihosting-config enable=on,target=native,arg=app,arg=--id=$OPENSWARM_ROBOT_ID "
                 "-icount shift=3,align=off,sleep=off -kernel %s\n" % (QEMU, QEMU_ELF))
     os.chmod(path, os.stat(path).st_mode | stat.S_IXUSR)
     return path
@@ -52,6 +54,10 @@ def run(name, controller):
                           timeout=600)
     if done.returncode != 0:
         failures.append(f"{name}: exit {done.returncode}:\n{done.stderr}")
+    # Each robot says its id (robot_id(): its index in the world) on its console.
+    for robot in (0, 1):
+        if f"e-puck {robot} here" not in done.stderr:
+            failures.append(f"{name}: robot {robot} did not say its id ('e-puck {robot} here'):\n{done.stderr}")
     return out
 
 

@@ -1,7 +1,10 @@
 /* An e-puck controller for the world link's test (epuck_link_test.py),
  * written against the e-puck's devices only, as any app for the robot:
  * what the camera sees sets the wheels (the clustering controller's
- * speeds, steps/s), and a thread blinks the RGB LEDs every 500 ms. */
+ * speeds, steps/s), and a thread blinks the RGB LEDs every 500 ms. It
+ * says its id (robot_id: in the world, its index) on its console. */
+#include <stdio.h>
+
 #include "openswarm/kernel.h"
 #include "openswarm/robot.h"
 
@@ -30,6 +33,8 @@ static void blinker(void) {
 int main(void) {
     Sys_Init_Kernel();
     robot_devices_init();
+    robot_console_init();
+    printf("e-puck %u here\n", (unsigned)robot_id());
     Sys_Subscribe_to_Event(EPUCK_EVENT_CAMERA, SYS_PID_SYSTEM, steer, NULL);
     Sys_Start_Process(blinker);
     Sys_Start_Kernel();

@@ -8,7 +8,9 @@ wheel speeds through the wheels' ramp (200 steps/s per command); the
 robot's time advances by exactly each step's advance_ms; the RGB LEDs
 toggle every 500 ms, to the millisecond; STOP gets a last answer and exit
 0; a bad magic or the end of input exit 2 with a message naming what was
-read; two runs give the same bytes."""
+read; two runs give the same bytes; robot_id() is the id the world gives
+(OPENSWARM_ROBOT_ID)."""
+import os
 import struct
 import subprocess
 import sys
@@ -34,8 +36,9 @@ class Robot:
     """One robot process, in lockstep: every input gets one output."""
 
     def __init__(self, app):
+        # As the world starts it: its index in the world is its id (robot_id()).
         self.process = subprocess.Popen([app], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                        stderr=subprocess.PIPE)
+                                        stderr=subprocess.PIPE, env=dict(os.environ, OPENSWARM_ROBOT_ID="7"))
         self.transcript = b""
         self.time = 0
 
@@ -115,6 +118,7 @@ def full_run(app):
     check(last["time"] == robot.time + 10, f"STOP's answer at {last['time']} ms, expected {robot.time + 10}")
     status, rest, err = robot.finish()
     check(status == 0 and rest == b"", f"after STOP: exit {status}, {len(rest)} more bytes, stderr {err!r}")
+    check("e-puck 7 here" in err, f"the app's robot_id() is not the 7 it was given: stderr {err!r}")
     return robot.transcript
 
 

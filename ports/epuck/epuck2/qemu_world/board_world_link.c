@@ -19,6 +19,7 @@
  * is given at the first tick, so this robot's clock reads 1 ms more than
  * the host build's at every step. */
 #include "../../src/epuck_board.h"
+#include "../qemu/board_qemu.h"
 #include "../qemu/semihosting.h"
 #include "openswarm/cortex_m4.h"
 #include "openswarm/epuck_world_link.h"
@@ -133,6 +134,11 @@ static void world_step(void) {
     SYST_CVR = 0;
     SYST_CSR = running;
 }
+
+/* The robot's index in the world: the world gives it to the controller
+ * (OPENSWARM_ROBOT_ID), whose script hands it to the image as --id=N among
+ * the semihosting arguments, which board_qemu.c reads. */
+uint16_t epuck_robot_id(void) { return board_robot_id; }
 
 void epuck_board_start(void) {
     USART2_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE | USART_CR1_RXNEIE;
