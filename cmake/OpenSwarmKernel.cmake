@@ -131,6 +131,7 @@ set(OPENSWARM_PORT_epuck_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_steppers.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_proximity.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_selector.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/robot_identity.c
     ${OPENSWARM_EPUCK_SOURCES})
 set(OPENSWARM_PORT_epuck_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/dspic/include
     ${OPENSWARM_ROOT}/ports/epuck/include)

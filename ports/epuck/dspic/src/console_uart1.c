@@ -21,11 +21,13 @@ static void put(char c) {
     U1TXREG = (uint8_t)c;
 }
 
+void dspic_console_put(char c) {
+    if (c == '\n') put('\r'); /* a terminal's new line */
+    put(c);
+}
+
 void dspic_console_print(const char *text) {
-    for (; *text != '\0'; text++) {
-        if (*text == '\n') put('\r'); /* a terminal's new line */
-        put(*text);
-    }
+    for (; *text != '\0'; text++) dspic_console_put(*text);
 }
 
 void dspic_console_print_hex(uint16_t value) {

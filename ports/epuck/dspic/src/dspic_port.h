@@ -35,6 +35,7 @@ extern void (*dspic_tick_hook)(void);
 
 /* The console: UART1, the e-puck's Bluetooth link, polled. */
 void dspic_console_init(void);
+void dspic_console_put(char c); /* a new line as CR LF */
 void dspic_console_print(const char *text);
 void dspic_console_print_hex(uint16_t value);
 void dspic_console_print_uint(uint16_t value);
