@@ -4,12 +4,13 @@
  *
  *   robot_devices_init()   register the robot's devices (after Sys_Init_Kernel)
  *   robot_id()             the robot's own id: on the e-puck2, its STM32's
- *                          96-bit unique id folded to 16 bits; under QEMU,
- *                          the run's --id=N (0 without); in a world, the
- *                          robot's index in the world file
+ *                          96-bit unique id folded to 16 bits; on the
+ *                          e-puck, its data EEPROM's last word (0 erased);
+ *                          under QEMU, the run's --id=N (0 without); in a
+ *                          world, the robot's index in the world file
  *   robot_console_init()   printf from here on goes to the robot's console
- *                          (the e-puck2's USART3, QEMU's serial port, the
- *                          world's standard error)
+ *                          (the e-puck2's USART3, the e-puck's UART1, QEMU's
+ *                          serial port, the world's standard error)
  *   ROBOT_EVENT_LED        command: one byte, ROBOT_RGB(r, g, b), 0..3 each:
  *                          the robot's status light (the e-puck's RGB LEDs;
  *                          under QEMU, a line on the console)
