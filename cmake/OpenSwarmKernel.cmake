@@ -132,6 +132,11 @@ set(OPENSWARM_PORT_epuck_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_proximity.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_selector.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/robot_identity.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_camera.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/camera_capture.S
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/camera_frame.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/po3030k_setup.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/i2c_master.c
     ${OPENSWARM_EPUCK_SOURCES})
 set(OPENSWARM_PORT_epuck_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/dspic/include
     ${OPENSWARM_ROOT}/ports/epuck/include)

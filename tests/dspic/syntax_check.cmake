@@ -3,8 +3,11 @@
 # types only, warnings as errors) by a compiler with XC16's sizes: 16-bit
 # int and 16-bit pointers (avr-gcc for the ATmega328P). XC16-only
 # constructs are stand-ins (ports/epuck/dspic/include/dspic_compiler.h).
-#   cmake -DCOMPILER=avr-gcc -DROOT=<openswarm> [-DFILES=<files>] -P syntax_check.cmake
-# Without FILES, every file is checked, and the 16-bit assertions with them.
+#   cmake -DCOMPILER=avr-gcc -DROOT=<openswarm> [-DFILES=<files>] [-DDEFINES=<macros>]
+#         -P syntax_check.cmake
+# Without FILES, every file is checked, and the 16-bit assertions with them;
+# DEFINES (e.g. EPUCK_DSPIC_CAMERA=1, the build with the camera) adds -D each.
+string(REPLACE "," ";" FILES "${FILES}") # a list passed through ctest, comma-separated
 if(NOT FILES)
   file(GLOB FILES ${ROOT}/kernel/src/*.c ${ROOT}/ports/epuck/src/*.c
        ${ROOT}/ports/epuck/dspic/src/*.c)
@@ -12,6 +15,9 @@ if(NOT FILES)
 endif()
 set(flags -mmcu=atmega328p -fsyntax-only -std=c11 -Wall -Wextra -Werror -Wshadow -Wundef
     -DDSPIC_SYNTAX_CHECK)
+foreach(define IN LISTS DEFINES)
+  list(APPEND flags -D${define})
+endforeach()
 foreach(dir kernel/include kernel/src ports/epuck/dspic/include ports/epuck/dspic/src
         ports/epuck/include ports/epuck/src sdk/include)
   list(APPEND flags -I${ROOT}/${dir})

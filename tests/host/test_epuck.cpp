@@ -156,7 +156,7 @@ struct Frame {
         return *this;
     }
     uint8_t seen() const {
-        epuck_camera_frame f = {pixels.data(), width, height};
+        epuck_camera_frame f = {pixels.data(), width, height, 0};
         uint8_t out = 0xFF;
         sys_device dev{};
         EXPECT_EQ(1, epuck_camera_classifier(&dev, &f, sizeof f, &out, 1));
@@ -187,14 +187,14 @@ TEST(EpuckCamera, ThePlainJudgementIsTheProcessors) {
     const uint8_t expected[] = {EPUCK_SEEN_NOTHING, EPUCK_SEEN_OBJECT, EPUCK_SEEN_ROBOT, EPUCK_SEEN_OBJECT,
                                 EPUCK_SEEN_OBJECT};
     for (size_t k = 0; k < frames.size(); k++) {
-        epuck_camera_frame f = {frames[k].pixels.data(), frames[k].width, frames[k].height};
+        epuck_camera_frame f = {frames[k].pixels.data(), frames[k].width, frames[k].height, 0};
         epuck_seen seen = EPUCK_SEEN_NOTHING;
         ASSERT_TRUE(epuck_classify_frame(&f, &seen)) << "frame " << k;
         EXPECT_EQ(expected[k], seen) << "frame " << k;
         EXPECT_EQ(expected[k], frames[k].seen()) << "frame " << k;
     }
     std::vector<uint16_t> tiny(10 * 10, WHITE);
-    epuck_camera_frame small = {tiny.data(), 10, 10};
+    epuck_camera_frame small = {tiny.data(), 10, 10, 0};
     epuck_seen seen;
     EXPECT_FALSE(epuck_classify_frame(&small, &seen));
 }
@@ -202,17 +202,17 @@ TEST(EpuckCamera, ThePlainJudgementIsTheProcessors) {
 TEST(EpuckCamera, RefusesWhatIsNotAFrame) {
     sys_device dev{};
     uint8_t out = 0;
-    epuck_camera_frame none = {nullptr, 640, 480};
+    epuck_camera_frame none = {nullptr, 640, 480, 0};
     EXPECT_EQ(0, epuck_camera_classifier(&dev, &none, sizeof none, &out, 1));
     std::vector<uint16_t> tiny(10 * 10, WHITE);
-    epuck_camera_frame small = {tiny.data(), 10, 10};
+    epuck_camera_frame small = {tiny.data(), 10, 10, 0};
     EXPECT_EQ(0, epuck_camera_classifier(&dev, &small, sizeof small, &out, 1));
 }
 
 TEST_F(Epuck, AFrameBecomesTheSeenEvent) {
     boot_devices();
     Frame f = Frame(640, 480, WHITE).paint(0.45, 0.4, 0.55, 0.6, RED);
-    epuck_camera_frame frame = {f.pixels.data(), f.width, f.height};
+    epuck_camera_frame frame = {f.pixels.data(), f.width, f.height, 0};
     irq([&] { epuck_camera_arrived(&frame); });
     settle();
     EXPECT_EQ(EPUCK_SEEN_OBJECT, event_value<uint8_t>(EPUCK_EVENT_CAMERA));

@@ -9,7 +9,8 @@
  * Which 24 it samples is not published: here, the 4 middle rows of the
  * 20 x 20 grid at every third column from the second (6 x 4), a band
  * across the line of sight. A smaller frame's window is the same share of
- * it (a quarter of its width, square). */
+ * it (a quarter of its width, square), unless the frame says its window
+ * (the dsPIC e-puck's frame is the window alone, 20 x 20). */
 #include "openswarm/epuck.h"
 
 #define GRID 20u
@@ -31,8 +32,8 @@ epuck_colour epuck_colour_of(uint16_t rgb565) {
 }
 
 bool epuck_classify_frame(const epuck_camera_frame *f, epuck_seen *seen) {
-    if (f->pixels == NULL || f->width < GRID || f->height < f->width / 4u) return false;
-    uint16_t window = (uint16_t)(f->width / 4u);
+    uint16_t window = f->window != 0 ? f->window : (uint16_t)(f->width / 4u);
+    if (f->pixels == NULL || f->width < GRID || window > f->width || window > f->height) return false;
     uint16_t x0 = (uint16_t)((f->width - window) / 2u), y0 = (uint16_t)((f->height - window) / 2u);
     unsigned red_or_dark = 0, green = 0;
     for (unsigned row = 0; row < SAMPLE_ROWS; row++) {

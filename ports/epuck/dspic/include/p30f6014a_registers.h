@@ -1,6 +1,6 @@
 /* The dsPIC30F6014A's special function registers the port and the e-puck
  * board use, at their addresses in the datasheet's SFR maps (DS70143:
- * core, interrupt controller, Timer1-5, UART1, 12-bit ADC, I/O ports),
+ * core, interrupt controller, Timer1-5, I2C, UART1, 12-bit ADC, I/O ports),
  * with the bits used. Every SFR is a 16-bit word in near data space. */
 #ifndef P30F6014A_REGISTERS_H
 #define P30F6014A_REGISTERS_H
@@ -36,6 +36,7 @@
  * IFS0/IEC0 bits: */
 #define IRQ0_T1 0x0008u
 #define IRQ0_T2 0x0040u
+#define IRQ0_T3 0x0080u /* unused by a timer here: the camera's frame-ready software interrupt */
 #define IRQ0_ADC 0x0800u
 /* IFS1/IEC1 bits */
 #define IRQ1_T4 0x0020u
@@ -44,6 +45,7 @@
  * IPC2 ADC <14:12>; IPC5 T4 <6:4>, T5 <10:8>. */
 #define IPC0_T1_SHIFT 12
 #define IPC1_T2_SHIFT 8
+#define IPC1_T3_SHIFT 12
 #define IPC2_ADC_SHIFT 12
 #define IPC5_T4_SHIFT 4
 #define IPC5_T5_SHIFT 8
@@ -66,6 +68,25 @@
 #define TCON_PRESCALE_1 0x0000u
 #define TCON_PRESCALE_8 0x0010u
 #define TCON_PRESCALE_256 0x0030u
+#define TCON_EXTERNAL 0x0002u /* TCS: count rising edges on the TxCK pin (T4CK RC3, T5CK RC4) */
+
+/* ---- I2C (SCL RG2, SDA RG3) ---- */
+#define I2CRCV DSPIC_SFR(0x0200)
+#define I2CTRN DSPIC_SFR(0x0202)
+#define I2CBRG DSPIC_SFR(0x0204)
+#define I2CCON DSPIC_SFR(0x0206)
+#define I2CSTAT DSPIC_SFR(0x0208)
+#define I2CCON_I2CEN 0x8000u
+#define I2CCON_ACKDT 0x0020u /* 1: the master answers NACK */
+#define I2CCON_ACKEN 0x0010u
+#define I2CCON_RCEN 0x0008u
+#define I2CCON_PEN 0x0004u  /* STOP */
+#define I2CCON_RSEN 0x0002u /* repeated START */
+#define I2CCON_SEN 0x0001u  /* START */
+#define I2CSTAT_ACKSTAT 0x8000u /* 1: the slave did not acknowledge */
+#define I2CSTAT_TRSTAT 0x4000u  /* a master transmission under way */
+#define I2CSTAT_BCL 0x0400u     /* bus collision */
+#define I2CSTAT_RBF 0x0002u     /* a received byte in I2CRCV */
 
 /* ---- UART1 ---- */
 #define U1MODE DSPIC_SFR(0x020C)
@@ -94,8 +115,10 @@
 #define TRISA DSPIC_SFR(0x02C0)
 #define LATA DSPIC_SFR(0x02C4)
 #define TRISC DSPIC_SFR(0x02CC)
+#define PORTC DSPIC_SFR(0x02CE)
 #define LATC DSPIC_SFR(0x02D0)
 #define TRISD DSPIC_SFR(0x02D2)
+#define PORTD DSPIC_SFR(0x02D4)
 #define LATD DSPIC_SFR(0x02D6)
 #define TRISF DSPIC_SFR(0x02DE)
 #define LATF DSPIC_SFR(0x02E2)

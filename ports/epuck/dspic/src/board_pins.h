@@ -32,4 +32,14 @@
 #define SELECTOR_SHIFT 6u
 #define SELECTOR_MASK 0xFu
 
+/* The camera (PO3030K): pixel bytes on RD8..RD15 (bit 0 on RD8); HREF on
+ * RC3 = T4CK and VSYNC on RC4 = T5CK, so Timer4 and Timer5 count them;
+ * PCLK on RC14; its reset, active low, on RC13; I2C on RG2 (SCL), RG3
+ * (SDA), the I2C module's own pins. */
+#define CAMERA_DATA_PINS 0xFF00u
+#define CAMERA_HREF_PIN (1u << 3)
+#define CAMERA_VSYNC_PIN (1u << 4)
+#define CAMERA_PCLK_PIN (1u << 14)
+#define CAMERA_RESET_PIN (1u << 13)
+
 #endif

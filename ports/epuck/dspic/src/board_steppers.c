@@ -68,7 +68,10 @@ static void set_speed(const stepper *m, volatile int8_t *step, int16_t speed) {
     port_irq_restore(s);
 }
 
+/* With the camera (board.h) Timer4 and Timer5 count HREF and VSYNC and
+ * are not touched here: the coils stay released (board_steppers_init). */
 void epuck_board_set_wheels(int16_t left_speed, int16_t right_speed) {
+    if (EPUCK_DSPIC_CAMERA) return;
     set_speed(&left, &left_step, left_speed);
     set_speed(&right, &right_step, right_speed);
 }
@@ -78,6 +81,7 @@ static void step(const stepper *m, uint8_t *phase, int8_t direction) {
     set_coils(m->shift, coil_patterns[*phase]);
 }
 
+#if !EPUCK_DSPIC_CAMERA
 DSPIC_ISR(_T5Interrupt);
 DSPIC_ISR(_T5Interrupt) {
     IFS1 &= (uint16_t)~IRQ1_T5;
@@ -89,3 +93,4 @@ DSPIC_ISR(_T4Interrupt) {
     IFS1 &= (uint16_t)~IRQ1_T4;
     step(&right, &right_phase, right_step);
 }
+#endif

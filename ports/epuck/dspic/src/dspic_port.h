@@ -17,6 +17,10 @@
  * never call it, come first so a step is not delayed by a tick. */
 #define DSPIC_PRIORITY_KERNEL 3u
 #define DSPIC_PRIORITY_STEPPERS 5u
+/* The camera's VSYNC and line interrupts: a line is read by counting
+ * cycles from HREF, so they come before everything else (never the
+ * kernel: a frame is handed on through the kernel-level Timer3 flag). */
+#define DSPIC_PRIORITY_CAMERA 6u
 
 /* Bytes above SPLIM a stack-error trap may stack into (its 2-word frame,
  * rounded up): port_context_init leaves them free. */

@@ -38,7 +38,7 @@ static volatile uint32_t dropped;
 #define HANDED_ON 1u
 #define ENDED 2u
 static uint8_t frame_state;
-static const epuck_camera_frame frame = {memory.pixels, EPUCK2_CAMERA_WIDTH, EPUCK2_CAMERA_HEIGHT};
+static const epuck_camera_frame frame = {memory.pixels, EPUCK2_CAMERA_WIDTH, EPUCK2_CAMERA_HEIGHT, 0};
 
 /* HSYNC PA4, PCLK PA6, D5 PB6, VSYNC PB7, D0 PC6, D1 PC7, D2 PE0, D3 PE1,
  * D4 PE4, D6 PE5, D7 PE6: all alternate function 13. */

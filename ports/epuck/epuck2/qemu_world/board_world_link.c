@@ -108,7 +108,7 @@ static void take_inputs(void) {
         epuck_proximity_arrived(&samples);
     }
     if (pixels != 0) {
-        epuck_camera_frame f = {frame, in.frame_width, in.frame_height};
+        epuck_camera_frame f = {frame, in.frame_width, in.frame_height, 0};
         epuck_camera_arrived(&f);
     }
     ticks_left = in.advance_ms;

@@ -40,7 +40,7 @@ void board_world_deliver_proximity(const epuck_proximity_samples *samples) {
 }
 
 void board_world_deliver_frame(const uint16_t *pixels, uint16_t width, uint16_t height) {
-    epuck_camera_frame frame = {pixels, width, height};
+    epuck_camera_frame frame = {pixels, width, height, 0};
     host_cpu_interrupt(camera_isr, &frame);
 }
 

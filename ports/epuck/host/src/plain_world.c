@@ -14,7 +14,7 @@
 #include "openswarm/epuck_world_link.h"
 
 static uint16_t pixels[EPUCK_LINK_MAX_PIXELS];
-static epuck_camera_frame frame = {pixels, 0, 0};
+static epuck_camera_frame frame = {pixels, 0, 0, 0};
 static int link_out;
 static uint32_t now_ms;
 static int16_t wheel[2];

@@ -92,6 +92,11 @@ uint8_t epuck_proximity_reflection(sys_device *dev, const void *in, uint8_t size
 typedef struct epuck_camera_frame {
     const uint16_t *pixels;
     uint16_t width, height;
+    /* The side, in this frame's pixels, of the classifier's window (the
+     * sensor's central 160 x 160). 0: the frame is the whole 640-wide view
+     * (the e-puck2's, the world's), the window a quarter of its width; the
+     * dsPIC e-puck's 20 x 20 frame is the window itself (20). */
+    uint16_t window;
 } epuck_camera_frame;
 
 typedef enum epuck_seen { EPUCK_SEEN_NOTHING = 0, EPUCK_SEEN_ROBOT, EPUCK_SEEN_OBJECT } epuck_seen;
