@@ -95,6 +95,16 @@ set(OPENSWARM_BOARD_epuck2_robot_SOURCES
     ${OPENSWARM_EPUCK2_DRIVER_SOURCES})
 set(OPENSWARM_BOARD_epuck2_robot_LINKER_SCRIPT
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/robot/epuck2_robot.ld)
+# Where the robot image is linked, by what the robot keeps at the flash's
+# start (openswarm build sets it from openswarm.json's "epuck2":
+# {"bootloader"}): none, the image at 0x08000000 with the whole 1 MB
+# (GCtronic's standard firmware's way); aseba, at 0x08020000 after the
+# Aseba bootloader's 128 KB. The linker script gives the image the rest.
+set(OPENSWARM_EPUCK2_BOOTLOADER none CACHE STRING
+  "e-puck2 robot image: none (linked at 0x08000000) or aseba (at 0x08020000, after the Aseba bootloader)")
+set_property(CACHE OPENSWARM_EPUCK2_BOOTLOADER PROPERTY STRINGS none aseba)
+set(OPENSWARM_EPUCK2_FLASH_ORIGIN_none 0x08000000)
+set(OPENSWARM_EPUCK2_FLASH_ORIGIN_aseba 0x08020000)
 set(OPENSWARM_PORT_epuck2_INCLUDES ${OPENSWARM_ROOT}/ports/cortex_m4/include
     ${OPENSWARM_ROOT}/ports/epuck/include)
 
@@ -220,6 +230,16 @@ function(openswarm_add_kernel target)
       -T${OPENSWARM_BOARD_epuck2_${K_BOARD}_LINKER_SCRIPT}
       -L${OPENSWARM_ROOT}/ports/cortex_m4/ld -L${script_dir}
       -Wl,--undefined=stm32f407_vectors -Wl,--undefined=HardFault_Handler)
+    if(K_BOARD STREQUAL "robot")
+      if(NOT DEFINED OPENSWARM_EPUCK2_FLASH_ORIGIN_${OPENSWARM_EPUCK2_BOOTLOADER})
+        message(FATAL_ERROR "openswarm_add_kernel(${target}): OPENSWARM_EPUCK2_BOOTLOADER is "
+          "'${OPENSWARM_EPUCK2_BOOTLOADER}'; give none (the robot image at 0x08000000, no bootloader) "
+          "or aseba (at 0x08020000, after the Aseba bootloader): -DOPENSWARM_EPUCK2_BOOTLOADER=none, "
+          "or \"epuck2\": {\"bootloader\": ...} in openswarm.json with `openswarm build`")
+      endif()
+      target_link_options(${target} INTERFACE
+        -Wl,--defsym=EPUCK2_FLASH_ORIGIN=${OPENSWARM_EPUCK2_FLASH_ORIGIN_${OPENSWARM_EPUCK2_BOOTLOADER}})
+    endif()
   endif()
   if(K_CONFIG)
     target_compile_definitions(${target} PUBLIC "OS_CONFIG_FILE=\"${K_CONFIG}\"")

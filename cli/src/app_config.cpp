@@ -282,7 +282,42 @@ void load_kilobot(const fs::path &file, const json &k, AppConfig &c) {
     c.overhead_controller = choice;
 }
 
+// The e-puck2's own settings, like the Kilobot's: checked in every build,
+// used by the epuck2 port's alone.
+void load_epuck2(const fs::path &file, const json &e, AppConfig &c) {
+    if (!e.is_object())
+        fail(file, "epuck2", "expected an object {\"bootloader\": \"none\" or \"aseba\"}, found " + found(e));
+    check_keys(file, "epuck2", e, {"bootloader"});
+    if (!e.contains("bootloader")) return;
+    std::vector<std::string> names;
+    for (const auto &p : epuck2_placements()) names.push_back(p.bootloader);
+    std::string choice = string_at(file, "epuck2.bootloader", e["bootloader"], "\"none\" or \"aseba\"");
+    if (std::find(names.begin(), names.end(), choice) == names.end())
+        fail(file, "epuck2.bootloader",
+             "unknown choice \"" + choice + "\"; expected \"none\" (the robot image at 0x08000000, the "
+             "flash's start: a robot with GCtronic's standard firmware, flashed through its programmer) "
+             "or \"aseba\" (at 0x08020000, after the Aseba bootloader's 128 KB)" +
+                 did_you_mean(choice, names));
+    c.epuck2_bootloader = choice;
+}
+
 }  // namespace
+
+const FlashPlacement &robot_placement(const AppConfig &c) {
+    return epuck2_placement(c.epuck2_bootloader.empty() ? "none" : c.epuck2_bootloader);
+}
+
+unsigned flash_budget(const AppConfig &c) {
+    return c.port == "epuck2" ? robot_placement(c).bytes : port_info(c.port).flash_bytes;
+}
+
+std::string flash_budget_note(const AppConfig &c) {
+    if (c.port != "epuck2") return port_info(c.port).flash_note;
+    const FlashPlacement &p = robot_placement(c);
+    if (p.bytes == port_info(c.port).flash_bytes) return "";
+    return "of its 1 MB: openswarm.json's \"epuck2\": {\"bootloader\": \"" + p.bootloader +
+           "\"} puts the robot image at " + hex_address(p.origin) + ", " + p.what;
+}
 
 const std::map<std::string, int> &overhead_controller_choices() {
     static const std::map<std::string, int> choices = {{"off", 0}, {"port", 1}, {"events", 2}};
@@ -325,7 +360,7 @@ AppConfig load_app_config(const fs::path &dir) {
     json doc = parse_json_file(config.file, text);
     const fs::path &file = config.file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
-    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices", "kilobot"});
+    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices", "kilobot", "epuck2"});
     config.name = string_at(file, "name", require(file, doc, "name"), "the app's name");
     if (!is_app_name(config.name))
         fail(file, "name", quoted_start(config.name) + " is not a usable app name: letters, digits, - and _, "
@@ -344,6 +379,7 @@ AppConfig load_app_config(const fs::path &dir) {
     if (doc.contains("threads")) load_threads(file, doc["threads"], config);
     if (doc.contains("devices")) load_devices(file, doc["devices"], config);
     if (doc.contains("kilobot")) load_kilobot(file, doc["kilobot"], config);
+    if (doc.contains("epuck2")) load_epuck2(file, doc["epuck2"], config);
     return config;
 }
 

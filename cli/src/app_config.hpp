@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ports.hpp"
+
 namespace openswarm {
 
 // A bad openswarm.json: the message is ready to print.
@@ -49,7 +51,20 @@ struct AppConfig {
     // "kilobot": {"overhead_controller": ...}: "port", "events", "off";
     // "" = not given (the port's default, "port").
     std::string overhead_controller;
+    // "epuck2": {"bootloader": ...}: "none" or "aseba" (epuck2_placements);
+    // "" = not given (the default, "none").
+    std::string epuck2_bootloader;
 };
+
+// Where this app's e-puck2 robot image goes: its "epuck2.bootloader"'s
+// placement, or the default's.
+const FlashPlacement &robot_placement(const AppConfig &c);
+
+// The flash an image of the app may fill on c.port: the port's, or for the
+// e-puck2 what its placement leaves; and why it is less than the MCU's
+// ("" when it is not).
+unsigned flash_budget(const AppConfig &c);
+std::string flash_budget_note(const AppConfig &c);
 
 // The KILOBOT_OVERHEAD_CONTROL value of each overhead_controller choice
 // (ports/kilobot/include/openswarm/robot.h).

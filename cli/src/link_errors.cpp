@@ -43,10 +43,10 @@ std::string ram_explanation(long over, const AppConfig &config, const fs::path &
 }
 
 std::string flash_explanation(long over, const AppConfig &config) {
-    const PortInfo &port = port_info(config.port);
+    const std::string note = flash_budget_note(config);
     return "flash overflow by " + std::to_string(over) + " bytes: the image does not fit the " +
-           std::to_string(port.flash_bytes) + " bytes the " + port.name + " leaves a program" +
-           (port.flash_note.empty() ? "" : " (" + port.flash_note + ")") +
+           std::to_string(flash_budget(config)) + " bytes the " + config.port + " leaves a program" +
+           (note.empty() ? "" : " (" + note + ")") +
            ". Make the app smaller: `openswarm size` on a build that fits shows where flash goes";
 }
 

@@ -1,5 +1,6 @@
 #include "ports.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace openswarm {
@@ -46,15 +47,16 @@ const std::vector<PortInfo> &ports() {
         // The kernel's two events (6 bytes) and the board's 16 ids
         // (PORT_EVENT_COUNT in ports/cortex_m4's port_arch.h), of which
         // epuck_devices_init registers 8 at their values' sizes (wheels 4,
-        // proximity 32, six of 1: 42 bytes); flash after the e-puck2's
-        // 128 KB bootloader; RAM: SRAM1+2 (the image leaves CCM unused).
+        // proximity 32, six of 1: 42 bytes); the whole 1 MB of flash (an
+        // app's own budget is its placement's, flash_budget: less after
+        // the Aseba bootloader); RAM: SRAM1+2 (the image leaves CCM unused).
         // Two images: <app>.elf for QEMU, <app>-robot.elf for the robot.
         {"epuck2", "e-puck2: STM32F407 (Cortex-M4F at 168 MHz), run in QEMU (netduinoplus2)",
-         1024 * 1024 - 128 * 1024, 128 * 1024, 2 + 16, 6 + 42, 16, 48, 1024, 64, {}, "arm-none-eabi-gcc",
+         1024 * 1024, 128 * 1024, 2 + 16, 6 + 42, 16, 48, 1024, 64, {}, "arm-none-eabi-gcc",
          "sudo apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi (or run OpenSwarm's "
          "./setup.sh)",
-         "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu,
-         "of its 1 MB: the e-puck2's bootloader keeps the first 128 KB", 0, ".elf", "-robot.elf"},
+         "ports/cortex_m4/cmake/arm-none-eabi.cmake", "arm-none-eabi-size", Runner::qemu, "", 0, ".elf",
+         "-robot.elf"},
         // The kernel's two events and the board's 8 (PORT_EVENT_COUNT in
         // ports/epuck/dspic's port_arch.h, registered at 42 bytes as on the
         // e-puck2); pools from its port_config.h; 144 KB of flash, 8 KB of
@@ -99,6 +101,29 @@ const std::vector<DeviceInfo> &devices_of(const std::string &port) {
     };
     static const std::vector<DeviceInfo> none;
     return port == "kilobot" ? kilobot : none;
+}
+
+// The linker script takes the origin (ports/epuck/epuck2/robot/
+// epuck2_robot.ld, EPUCK2_FLASH_ORIGIN from OPENSWARM_EPUCK2_BOOTLOADER in
+// cmake/OpenSwarmKernel.cmake) and gives the image the rest of the 1 MB.
+const std::vector<FlashPlacement> &epuck2_placements() {
+    static const std::vector<FlashPlacement> all = {
+        {"none", 0x08000000u, 1024 * 1024, "no bootloader"},
+        {"aseba", 0x08020000u, 1024 * 1024 - 128 * 1024, "after the Aseba bootloader's 128 KB"},
+    };
+    return all;
+}
+
+const FlashPlacement &epuck2_placement(const std::string &bootloader) {
+    for (const auto &p : epuck2_placements())
+        if (p.bootloader == bootloader) return p;
+    throw std::out_of_range("epuck2 bootloader " + bootloader);
+}
+
+std::string hex_address(unsigned address) {
+    char text[16];
+    std::snprintf(text, sizeof text, "0x%08X", address);
+    return text;
 }
 
 std::vector<std::string> port_names() {

@@ -87,6 +87,24 @@ struct DeviceInfo {
 };
 const std::vector<DeviceInfo> &devices_of(const std::string &port);
 
+// Where the e-puck2's robot image goes in its 1 MB of flash, by what the
+// robot keeps at 0x08000000 (openswarm.json's "epuck2": {"bootloader"}):
+// "none", GCtronic's standard firmware's way (its Makefile's default,
+// USE_ASEBA_BOOTLOADER=no), the image at the flash's start; "aseba", after
+// the 128 KB of the Aseba bootloader (USE_ASEBA_BOOTLOADER=yes). The first
+// is the default.
+struct FlashPlacement {
+    std::string bootloader; // as openswarm.json names it
+    unsigned origin;        // where the image is linked, its vector table first
+    unsigned bytes;         // the flash from there to the end
+    std::string what;       // for the build's summary and errors
+};
+const std::vector<FlashPlacement> &epuck2_placements();
+// The placement of that name; std::out_of_range for another.
+const FlashPlacement &epuck2_placement(const std::string &bootloader);
+// "0x08020000": an address as the docs and the linker scripts write it.
+std::string hex_address(unsigned address);
+
 const std::vector<PortInfo> &ports();
 std::vector<std::string> port_names();
 bool is_port(const std::string &name);

@@ -110,9 +110,11 @@ function(openswarm_add_firmware name)
 endfunction()
 
 # The e-puck2's robot image beside the QEMU one: the same app on the
-# robot board (ports/epuck/epuck2/robot), <name>-robot.elf linked at
-# 0x08020000, and <name>-robot.bin, the flash's bytes from there (what a
-# bootloader or `st-flash write ... 0x08020000` takes; gdb loads the ELF).
+# robot board (ports/epuck/epuck2/robot), <name>-robot.elf linked where
+# OPENSWARM_EPUCK2_BOOTLOADER says (none: 0x08000000; aseba: 0x08020000,
+# after the Aseba bootloader), and <name>-robot.bin, the flash's bytes from
+# there (what `st-flash write <name>-robot.bin <that address>` or a
+# bootloader takes; gdb loads the ELF where it is linked).
 function(openswarm_add_robot_image name sources generated_sources config_args)
   set(robot ${name}-robot)
   openswarm_add_kernel(${robot}_openswarm PORT epuck2 BOARD robot ${config_args})

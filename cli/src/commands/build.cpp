@@ -114,7 +114,7 @@ void print_summary(const BuildResult &r, const std::vector<Share> &shares, const
                     r.image.string().c_str(), r.port.c_str());
         return;
     }
-    std::printf("Flash %s\nRAM   %s\n", bar(r.flash, info.flash_bytes).c_str(),
+    std::printf("Flash %s\nRAM   %s\n", bar(r.flash, r.flash_total).c_str(),
                 bar(r.ram, info.ram_bytes).c_str());
     if (shares.empty()) {
         std::printf("Shares of kernel and app: unavailable, %s\n", why.c_str());
@@ -130,9 +130,12 @@ void print_summary(const BuildResult &r, const std::vector<Share> &shares, const
     std::printf("Built %s for %s\n", r.image.string().c_str(), r.port.c_str());
     if (r.robot) {
         fs::path bin = fs::path(r.robot->image).replace_extension(".bin");
-        std::printf("Robot image (flash from 0x08020000, after the bootloader):\nFlash %s\nRAM   %s\n"
+        const FlashPlacement &at = r.robot->placement;
+        std::printf("Robot image (flash from %s, %s: openswarm.json's \"epuck2\": {\"bootloader\": "
+                    "\"%s\"}):\nFlash %s\nRAM   %s\n"
                     "Built %s and %s: ports/epuck/README.md says how to flash it\n",
-                    bar(r.robot->flash, info.flash_bytes).c_str(), bar(r.robot->ram, info.ram_bytes).c_str(),
+                    hex_address(at.origin).c_str(), at.what.c_str(), at.bootloader.c_str(),
+                    bar(r.robot->flash, at.bytes).c_str(), bar(r.robot->ram, info.ram_bytes).c_str(),
                     r.robot->image.string().c_str(), bin.string().c_str());
     }
 }
@@ -141,7 +144,7 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
     const PortInfo &info = port_info(r.port);
     nlohmann::ordered_json j = {
         {"image", r.image.string()},       {"port", r.port}, {"flash", r.flash},
-        {"flash_total", info.flash_bytes}, {"ram", r.ram},   {"ram_total", info.ram_bytes}};
+        {"flash_total", r.flash_total},    {"ram", r.ram},   {"ram_total", info.ram_bytes}};
     if (shares.empty()) {
         j["share"] = nullptr;
         j["share_unavailable"] = why;
@@ -158,7 +161,10 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
     if (r.robot)
         j["robot"] = {{"image", r.robot->image.string()},
                       {"bin", fs::path(r.robot->image).replace_extension(".bin").string()},
+                      {"bootloader", r.robot->placement.bootloader},
+                      {"flash_origin", r.robot->placement.origin},
                       {"flash", r.robot->flash},
+                      {"flash_total", r.robot->placement.bytes},
                       {"ram", r.robot->ram}};
     std::printf("%s\n", j.dump().c_str());
 }
@@ -230,8 +236,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     fs::path build_dir = dir / "build" / (debug ? port + "-debug" : port);
     fs::path generated = generated_dir(dir, port);
     config.port = port;
+    const PortInfo &info = port_info(port);
     try {
-        generate_app_files(config, libraries_used(dir, port_info(port)), generated);
+        generate_app_files(config, libraries_used(dir, info), generated);
     } catch (const ConfigError &e) {
         report(e.what());
         exit_code = EXIT_USAGE;
@@ -244,6 +251,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
     configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
     configure.push_back(std::string("-DOPENSWARM_WERROR=") + (werror ? "ON" : "OFF"));
+    // Where the e-puck2's robot image is linked (cmake/OpenSwarmKernel.cmake).
+    if (port == "epuck2")
+        configure.push_back("-DOPENSWARM_EPUCK2_BOOTLOADER=" + robot_placement(config).bootloader);
     say("Configuring " + config.name + " for " + port +
         (debug ? " (debug: -Og, no link-time optimisation)" : ""));
     if (run(configure) != 0) {
@@ -273,8 +283,8 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     BuildResult result;
     result.port = port;
-    result.image = build_dir / (config.name + port_info(port).image_suffix);
-    const PortInfo &info = port_info(port);
+    result.image = build_dir / (config.name + info.image_suffix);
+    result.flash_total = flash_budget(config);
     if (!image_size(info, result.image, result.flash, result.ram)) {
         report("cannot read the size of " + result.image.string() + " with " + info.size_tool);
         exit_code = EXIT_FAILED;
@@ -282,7 +292,8 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     warn_main_stack(info, result, config);
     if (!info.robot_image_suffix.empty()) {
-        ImageSize robot;
+        RobotImage robot;
+        robot.placement = robot_placement(config);
         robot.image = build_dir / (config.name + info.robot_image_suffix);
         if (!image_size(info, robot.image, robot.flash, robot.ram)) {
             report("cannot read the size of " + robot.image.string() + " with " + info.size_tool);
@@ -293,7 +304,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     if (brief && info.flash_bytes)
         std::printf("Built %s (flash %u of %u bytes, RAM %u of %u)\n", result.image.string().c_str(),
-                    result.flash, info.flash_bytes, result.ram, info.ram_bytes);
+                    result.flash, result.flash_total, result.ram, info.ram_bytes);
     else if (brief)
         std::printf("Built %s\n", result.image.string().c_str());
     return result;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../paths.hpp"
+#include "../ports.hpp"
 
 namespace openswarm {
 
@@ -16,13 +17,21 @@ struct ImageSize {
     unsigned flash = 0, ram = 0;
 };
 
+// The e-puck2's robot image: its size, and where in flash it goes.
+struct RobotImage : ImageSize {
+    FlashPlacement placement;
+};
+
 struct BuildResult {
     std::filesystem::path image; // what `run` runs
     unsigned flash = 0, ram = 0; // bytes used
+    // The flash the app may fill: the port's, or for the e-puck2 what the
+    // app's "epuck2.bootloader" leaves the robot image (flash_budget).
+    unsigned flash_total = 0;
     std::string port;
     // The port's image for the real robot, when it is not the one `run`
     // runs (the e-puck2's: <app>-robot.elf, and .bin beside it).
-    std::optional<ImageSize> robot;
+    std::optional<RobotImage> robot;
 };
 
 // Where `build` writes the files generated from openswarm.json.

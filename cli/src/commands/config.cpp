@@ -28,6 +28,13 @@ void add_config_command(CLI::App &app, const Paths &) {
                     const PortInfo &p = port_info(c.port);
                     std::printf("name  %s\nport  %s (%s)\nimage build/%s/%s.elf\n", c.name.c_str(),
                                 c.port.c_str(), p.description.c_str(), c.port.c_str(), c.name.c_str());
+                    if (c.port == "epuck2") {
+                        const FlashPlacement &at = robot_placement(c);
+                        std::printf("robot image build/epuck2/%s-robot.elf at %s, %u bytes of flash (%s: "
+                                    "epuck2.bootloader \"%s\")\n",
+                                    c.name.c_str(), hex_address(at.origin).c_str(), at.bytes, at.what.c_str(),
+                                    at.bootloader.c_str());
+                    }
                     std::printf("scheduler %s, time slice %ld ms\n",
                                 c.scheduler.empty() ? "round-robin" : c.scheduler.c_str(),
                                 c.time_slice_ms ? c.time_slice_ms : 10L);

@@ -1,5 +1,5 @@
-/* The e-puck2's own board: the clock tree, the vector table after the
- * bootloader, the console on USART3 (the ESP32's Bluetooth serial link),
+/* The e-puck2's own board: the clock tree, the vector table where the
+ * image is linked, the console on USART3 (the ESP32's Bluetooth serial link),
  * and a halt that stops the wheels. No semihosting: on the robot a BKPT
  * with no debugger attached is a HardFault. */
 #include "openswarm/cortex_m4.h"
@@ -28,7 +28,9 @@ static void halt_for_clocks(epuck2_clock_status status) {
 }
 
 void board_init(void) {
-    /* The bootloader jumped here with its own table in place. */
+    /* Our table, wherever the image is linked: after the Aseba bootloader,
+     * which jumped here with its own table in place, or at 0x08000000,
+     * where the reset found it through the boot alias at 0. */
     SCB_VTOR = (uint32_t)(uintptr_t)stm32f407_vectors;
     epuck2_clock_status clocks = epuck2_clock_tree_start();
     if (clocks != EPUCK2_CLOCKS_RUNNING) halt_for_clocks(clocks);
