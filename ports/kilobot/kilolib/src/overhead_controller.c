@@ -3,7 +3,8 @@
  * activity, which replaces the one before. Activities run on the system
  * thread, on main()'s stack, as the classic library's main loop runs them:
  * no thread, no stack of their own. */
-#include <setjmp.h>
+#include <avr/interrupt.h>
+#include <avr/io.h>
 #include <util/atomic.h>
 
 #include "kilolib_internal.h"
@@ -14,9 +15,11 @@ static kilolib_activity_fn activity_fn; /* what the current activity runs, if an
 /* Activities started so far, and which of them runs (both mod 256): they
  * differ once the running one is replaced. */
 static uint8_t started, running;
-/* Where a replaced activity's code goes (run_activities' loop), its frames
- * dropped as a killed thread's stack would be. */
-static jmp_buf stopped;
+/* The stack pointer where the activities' loop begins: a replaced
+ * activity's code goes back there, its frames dropped as a killed thread's
+ * stack would be. (setjmp would keep 23 bytes of registers for it; the
+ * loop needs none, it starts afresh.) */
+static uint16_t activities_sp;
 
 uint8_t kilolib_activity(void) { return activity; }
 
@@ -33,15 +36,20 @@ void kilolib_activity_start(uint8_t what, kilolib_activity_fn fn) {
     started++;
 }
 
+static void __attribute__((noreturn)) run_activities(void);
+
 void kilolib_stop_point(void) {
-    if (started != running && Sys_In_SystemProgram()) longjmp(stopped, 1);
+    if (started == running || !Sys_In_SystemProgram()) return;
+    cli();
+    SP = activities_sp;
+    sei();
+    run_activities();
 }
 
 /* The system thread's program: the current activity's code, once per
  * start (the calibration motion returns; the program and the status lights
  * never do); waiting for the next start meanwhile. */
-void kilolib_run_activities(void) {
-    setjmp(stopped);
+static void run_activities(void) {
     for (;;) {
         uint8_t n;
         kilolib_activity_fn fn;
@@ -56,6 +64,11 @@ void kilolib_run_activities(void) {
         else
             kilolib_wait(UINT32_MAX); /* until a system message starts another */
     }
+}
+
+void kilolib_run_activities(void) {
+    activities_sp = SP;
+    run_activities();
 }
 
 /* The same request again (the overhead controller repeats its messages)
