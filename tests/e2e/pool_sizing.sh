@@ -68,7 +68,7 @@ sed -i 's|"port": "kilobot",|"port": "kilobot",\n  "kernel": { "max_threads": 2 
 status=0
 (cd classic && "$openswarm" build > /dev/null 2> refused.log) || status=$?
 [ "$status" -eq 2 ]
-grep -q 'openswarm.json: "kernel.max_threads": 2 threads in openswarm.json and the system thread need kernel.max_threads >= 3, found 2; raise it, or leave it out' classic/refused.log
+grep -q 'openswarm.json: "threads": 2 threads and the system thread need kernel.max_threads >= 3, found 2' classic/refused.log
 
 # Two threads without "stack" and a default of 200 bytes, of which each
 # uses 150: the lights turn green and the motors run.
