@@ -9,7 +9,7 @@ set(OPENSWARM_ROOT ${CMAKE_CURRENT_LIST_DIR}/..)
 set(OPENSWARM_KERNEL_SOURCES
     kernel.c process.c stack_pool.c scheduler.c scheduler_round_robin.c
     scheduler_priority.c event_table.c event_queue.c event_dispatch.c wait.c
-    system_time.c hal.c fault.c status_names.c)
+    system_time.c system_program.c hal.c fault.c status_names.c)
 list(TRANSFORM OPENSWARM_KERNEL_SOURCES PREPEND ${OPENSWARM_ROOT}/kernel/src/)
 
 set(OPENSWARM_PORT_host_SOURCES

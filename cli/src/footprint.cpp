@@ -104,6 +104,14 @@ Footprint footprint_of(const AppConfig &config, const Attribution &a,
             if (a.kernel_objects.count(t.object)) carve(t.name, t.stack);
     f.port_events = port.device_events;
     f.port_event_bytes = port.device_event_bytes;
+    // A classic program of a library registers what the library's pools
+    // hold (kilolib's: no clock event, no sensors).
+    const bool classic = config.threads.empty() && config.events.empty() && config.devices.empty();
+    for (const auto &library : port.libraries) {
+        auto data = library.classic_pools.find("event_data");
+        if (classic && data != library.classic_pools.end() && a.kernel_objects.count(library.object))
+            f.port_event_bytes = (unsigned)data->second;
+    }
     f.pool = a.ram_of(owner::stacks);
     f.event_data = a.ram_of(owner::event_data);
     f.queue = a.ram_of(owner::event_queue);

@@ -57,6 +57,7 @@ std::string count_of(size_t n, const std::string &what) {
 std::string threads_starting(const AppConfig &c, const Libraries &libraries) {
     std::vector<std::string> parts = {count_of(c.threads.size(), "thread") + " in openswarm.json"};
     for (const PortLibrary *library : libraries) {
+        if (library->threads.empty()) continue; // kilolib's program runs on the system thread
         std::vector<std::string> names;
         std::string prefix = library->name + ": ";
         for (const auto &t : library->threads)
@@ -111,6 +112,10 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
     check_app_limits(c, port, libraries);
     check_event_pools(c, port);
     std::map<std::string, long> values = c.kernel;
+    // A classic program of a port library (the app asks nothing of the
+    // kernel itself) gets the library's pools where the file sets none.
+    if (c.threads.empty() && c.events.empty() && c.devices.empty())
+        for (const PortLibrary *library : libraries) values.insert(library->classic_pools.begin(), library->classic_pools.end());
     // Room for what the app declares, where the file leaves the size open.
     if (!c.events.empty()) {
         unsigned needed = port.device_events + (unsigned)c.events.size();

@@ -7,16 +7,18 @@ namespace openswarm {
 
 namespace {
 
-// kilo_start starts the program's thread and the message transmitter
-// (KILOLIB_LOOP_STACK in overhead_controller.c, KILOLIB_TX_STACK in
-// kilolib.c). The overhead controller's other activities (status lights,
-// calibration motion) take the program's place, not a place of their own:
-// kilolib_activity_start kills the running activity before it starts the
-// next, on the same stack size.
+// kilolib starts no thread: setup() and loop(), and the overhead
+// controller's activities, run on the system thread (main's stack), the
+// transmitter in a handler. A classic program gets the pools of
+// ports/kilobot/kilolib/include/kilolib_pools.h (the same values; the
+// e2e test kilolib_cost checks they agree): the system thread alone, the
+// port's events, subscriptions and devices and no more.
 PortLibrary kilolib() {
-    return {"kilolib", "kilolib.h",
-            {{"kilolib: the program (setup, loop)", 192, "overhead_controller.c.obj"},
-             {"kilolib: message transmitter", 48, "kilolib.c.obj"}}};
+    return {"kilolib", "kilolib.h", {},
+            {{"max_threads", 1}, {"stack_pool", 0}, {"stack_check", 0}, {"clock_event", 0},
+             {"handler_context", 0}, {"max_events", 10}, {"event_data", 71},
+             {"max_subscriptions", 5}, {"max_devices", 3}},
+            "kilolib.c.obj"};
 }
 
 // The analog sensors' pre-processors: the ADC count, or a table mapping it.

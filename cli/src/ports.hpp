@@ -1,6 +1,7 @@
 // The robots OpenSwarm builds for.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,14 @@ struct LibraryThread {
 struct PortLibrary {
     std::string name, header;
     std::vector<LibraryThread> threads;
+    // The kernel settings (openswarm.json's "kernel" names) a program of
+    // the library alone needs, when the app asks nothing of the kernel
+    // itself (no threads, events or devices in openswarm.json); where the
+    // file sets none, the build uses these rather than the port's defaults.
+    std::map<std::string, long> classic_pools = {};
+    // The object file whose presence in a link map says the library is in
+    // the image (classic_pools' event_data is then the port's own events').
+    std::string object = "";
 };
 // Those of a port's libraries that one app uses.
 using Libraries = std::vector<const PortLibrary *>;

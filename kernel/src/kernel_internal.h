@@ -95,6 +95,9 @@ typedef struct os_kernel {
     bool reconsider;
     bool reap_pending;
     bool stop_requested;
+    /* The system thread runs its program (Sys_Run_SystemProgram), not the
+     * kernel's work: what is sent meanwhile is dispatched at once. */
+    bool program_running;
 #if OS_CFG_CLOCK_EVENT
     uint8_t clock_listeners; /* has SYS_EVENT_1MS_TIMER a handler or waiter: OS_CLOCK_* */
 #endif
@@ -237,6 +240,12 @@ void os_check_timeouts(void);
  * an interrupt (with OS_CFG_TICKLESS, with the tick stopped until the next
  * deadline if nothing needs it sooner). Interrupts masked. */
 void os_idle(void);
+void os_idle_at_most(uint32_t max_ms); /* and wakes after max_ms at the latest */
+
+/* system_program.c: an event was sent or an interrupt ends while the system
+ * thread may be running its program: the handlers run now, on its stack.
+ * Interrupts masked. */
+void os_program_preempted(void);
 
 /* fault.c */
 void os_fault(sys_fault fault, sys_pid pid);

@@ -111,9 +111,17 @@ bool os_decide(void) {
     return true;
 }
 
+/* With a single thread slot only the system thread runs: the decisions
+ * below are never taken (and the linker drops them). */
+#define OS_THREADS_RUN (OS_CFG_MAX_THREADS > 1)
+
 void os_schedule(void) {
     sys_tcb *cur = os.current;
-    if (cur == OS_SYSTEM || os.isr_depth != 0) return; /* the system loop decides */
+    if (os.isr_depth != 0) return; /* the interrupt's end decides */
+    if (!OS_THREADS_RUN || cur == OS_SYSTEM) {
+        os_program_preempted(); /* the system loop decides, unless its program runs */
+        return;
+    }
     os_check_stack(cur);                               /* before it runs on or blocks */
     os_decide();
 }
@@ -155,7 +163,11 @@ void os_isr_enter(void) {
 /* The outermost interrupt's end decides at once (no guard check: the tick
  * makes one), if anything the decision reads has changed. */
 void os_isr_exit(void) {
-    if (--os.isr_depth == 0 && os.current != OS_SYSTEM && os.reconsider) os_decide();
+    if (--os.isr_depth != 0) return;
+    if (!OS_THREADS_RUN || os.current == OS_SYSTEM)
+        os_program_preempted();
+    else if (os.reconsider)
+        os_decide();
 }
 
 sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {

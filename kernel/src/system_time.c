@@ -79,10 +79,16 @@ void os_ticks_slept(uint16_t ticks) {
 }
 #endif
 
-void os_idle(void) {
+void os_idle(void) { os_idle_at_most(UINT32_MAX); }
+
+/* A program on the system thread waits for a time of its own (kilolib's
+ * delay()), which the kernel's deadlines do not know. */
+void os_idle_at_most(uint32_t max_ms) {
 #if OS_CFG_TICKLESS
-    port_idle_for(ticks_until_needed());
+    uint32_t ticks = ticks_until_needed();
+    port_idle_for(ticks < max_ms ? ticks : max_ms);
 #else
+    (void)max_ms; /* the tick wakes it every millisecond */
     port_idle();
 #endif
 }

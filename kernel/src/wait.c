@@ -34,7 +34,7 @@ static sys_status block_current(os_wait *w, sys_event_id event, bool timed, uint
 /* Only a thread of the app's may wait: not the system thread (handlers),
  * an interrupt or a critical section. */
 static inline bool may_block(void) {
-    return (os.isr_depth | os.lock_depth) == 0 && os.current != OS_SYSTEM;
+    return OS_CFG_MAX_THREADS > 1 && (os.isr_depth | os.lock_depth) == 0 && os.current != OS_SYSTEM;
 }
 
 /* The running thread waits as w says (the caller sets what an event's

@@ -1,6 +1,6 @@
 /* {{name}}: a program for the classic Kilobot library, unchanged: under
- * OpenSwarm, loop() runs in a thread and the message callbacks are event
- * handlers. */
+ * OpenSwarm, setup() and loop() run on the system thread (main's stack) as
+ * with the classic library, and the message callbacks are event handlers. */
 #include <kilolib.h>
 
 void setup(void) {

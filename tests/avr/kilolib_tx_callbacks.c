@@ -4,7 +4,7 @@
  * through a 160-byte scratch buffer and computes its CRC; message_tx_success
  * prints. Robot 1 talks, robot 2 prints what it hears. Under OpenSwarm the
  * callbacks run as an event handler on the system stack, so this is fine;
- * on the transmitter thread's own small stack it would overflow, the guard
+ * on a small thread stack it would overflow, the guard
  * would stop that thread, and nothing more would be sent. */
 #include <kilolib.h>
 #include <string.h>

@@ -50,7 +50,8 @@
 #define OS_CFG_TICKLESS 0
 #endif
 
-/* Threads, including the system thread (pid 0). At most 16. */
+/* Threads, including the system thread (pid 0). At most 16; 1 leaves the
+ * system thread alone (its program, Sys_Run_SystemProgram, and handlers). */
 #ifndef OS_CFG_MAX_THREADS
 #define OS_CFG_MAX_THREADS 8
 #endif
@@ -139,8 +140,8 @@
     (OS_CFG_TICKLESS != 0 && OS_CFG_TICKLESS != 1)
 #error "OS_CFG_STACK_CHECK, OS_CFG_CLOCK_EVENT, OS_CFG_HANDLER_CONTEXT and OS_CFG_TICKLESS must be 0 or 1"
 #endif
-#if OS_CFG_MAX_THREADS < 2 || OS_CFG_MAX_THREADS > 16
-#error "OS_CFG_MAX_THREADS must be 2..16 (pids keep the slot in 4 bits)"
+#if OS_CFG_MAX_THREADS < 1 || OS_CFG_MAX_THREADS > 16
+#error "OS_CFG_MAX_THREADS must be 1..16 (1: the system thread alone; pids keep the slot in 4 bits)"
 #endif
 #if OS_CFG_MAX_EVENTS < 2 || OS_CFG_MAX_EVENTS > 255
 #error "OS_CFG_MAX_EVENTS must be 2..255 (the kernel's own events use ids 0 and 1)"

@@ -37,6 +37,24 @@ void Sys_Start_Kernel(void);
  * after Sys_Stop_Kernel. */
 void Sys_Run_SystemThread(void);
 
+/* Turn the caller into the system thread running program, a loop of the
+ * app's own on main()'s stack (no thread, no stack of its own): events
+ * it sends, and those interrupts send while it runs, are dispatched at
+ * once, their handlers nested on its stack; it waits with Sys_Idle, where
+ * the system thread reaps, runs the ready threads and idles. If program
+ * returns, the caller goes on as Sys_Run_SystemThread. */
+void Sys_Run_SystemProgram(void (*program)(void));
+
+/* Whether the caller is that program (not a handler, interrupt or thread). */
+bool Sys_In_SystemProgram(void);
+
+/* From the program: the system thread's work, or, if there is none, the
+ * ready threads run until none is left, or the CPU sleeps until an
+ * interrupt (at most max_ms). Returns after one such turn: the program
+ * asks again until what it waits for has come. SYS_E_CONTEXT from
+ * anything but the program. */
+sys_status Sys_Idle(uint32_t max_ms);
+
 /* Ask the system thread to stop scheduling and return from
  * Sys_Run_SystemThread (callable from anywhere, including interrupts). */
 void Sys_Stop_Kernel(void);

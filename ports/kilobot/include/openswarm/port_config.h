@@ -1,8 +1,9 @@
 /* Kilobot port: pool sizes that fit 2 KB of RAM with the robot's devices
  * (LED, motors, IR: 16-byte values; light, voltage, temperature when
- * kilobot_sensors_init registers them: 2-byte values) and kilolib's two
- * threads (192 + 64 bytes of stack), leaving about 900 bytes to the main
- * stack. An application overrides any of them (OS_CONFIG_FILE). */
+ * kilobot_sensors_init registers them: 2-byte values) and a few threads,
+ * leaving about 900 bytes to the main stack. A classic kilolib program,
+ * which needs no thread, gets kilolib_pools.h's instead. An application
+ * overrides any of them (OS_CONFIG_FILE). */
 #ifndef OPENSWARM_PORT_CONFIG_H
 #define OPENSWARM_PORT_CONFIG_H
 

@@ -7,9 +7,12 @@
  *     void loop() { ... }
  *     int main() { kilo_init(); kilo_start(setup, loop); return 0; }
  *
- * Under OpenSwarm, loop() runs in a thread (it is preempted, so it may spin)
- * and the message callbacks run as event handlers; the program may add
- * threads and events of its own with the kernel's Sys_* calls.
+ * Under OpenSwarm, setup() and loop() run on the system thread (main's
+ * stack, as with the classic library: no thread stack); the message
+ * callbacks run as event handlers, which interrupt loop() even while it
+ * spins; delay() sleeps and serves them. The program may add threads and
+ * events of its own with the kernel's Sys_* calls (its threads run while
+ * it waits in delay() or between two loop() calls).
  */
 #ifndef KILOLIB_H
 #define KILOLIB_H

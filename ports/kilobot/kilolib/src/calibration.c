@@ -8,8 +8,7 @@
 
 static uint8_t moving_left, moving_right; /* duties of the calibration motion */
 
-static void calibration_motion(void *arg) {
-    (void)arg;
+static void calibration_motion(void) {
     set_motors(moving_left ? 255 : 0, moving_right ? 255 : 0); /* vibration motors need a kick */
     delay(15);
     set_motors(moving_left, moving_right);

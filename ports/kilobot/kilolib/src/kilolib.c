@@ -11,7 +11,6 @@
 
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
-#include "openswarm/kilobot_sim.h"
 
 /* KILOLIB_IDLE_LOOP 1 (openswarm.json: "kernel": {"kilolib_idle_loop":
  * true}): a call of loop() during which kilo_ticks did not advance is
@@ -23,12 +22,6 @@
  * faster than a tick (32 ms), runs differently: hence off by default. */
 #ifndef KILOLIB_IDLE_LOOP
 #define KILOLIB_IDLE_LOOP 0
-#endif
-
-/* The transmitter thread only sleeps and transmits: the program's
- * callbacks run on the system stack (see transmitter). */
-#ifndef KILOLIB_TX_STACK
-#define KILOLIB_TX_STACK 48
 #endif
 
 volatile uint32_t kilo_ticks;
@@ -116,21 +109,32 @@ void kilolib_identity_load(void) {
 }
 
 /* setup() runs once per power-up or reset, as with the classic library:
- * RUN after a pause resumes with loop(). A setup() cut short (the thread
- * killed by another activity) has not run. */
+ * RUN after a pause resumes with loop(). A setup() cut short (another
+ * activity replaced it) has not run. */
 static bool setup_done;
 
-void kilolib_program(void *arg) {
-    (void)arg;
+/* Frames delivered so far (mod 256): the idle loop's wait ends at one. */
+static volatile uint8_t frames_heard;
+
+/* Until the next kilo tick or message (KILOLIB_IDLE_LOOP), asleep. */
+static void wait_for_tick_or_message(uint32_t ticks) {
+    uint8_t heard = frames_heard;
+    while (kilo_ticks_now() == ticks && frames_heard == heard) {
+        kilolib_stop_point();
+        kilolib_wait(ms_to_next_kilo_tick());
+    }
+}
+
+void kilolib_program(void) {
     if (!setup_done) {
         user_setup();
         setup_done = true;
     }
     for (;;) {
+        kilolib_stop_point(); /* as the classic library's main loop looks between two loop() */
         uint32_t ticks = kilo_ticks_now();
         user_loop();
-        if (KILOLIB_IDLE_LOOP && kilo_ticks_now() == ticks)
-            Sys_Wait_for_Event_Timeout(KILOBOT_EVENT_IR_RX, ms_to_next_kilo_tick(), 0, 0, 0);
+        if (KILOLIB_IDLE_LOOP && kilo_ticks_now() == ticks) wait_for_tick_or_message(ticks);
     }
 }
 
@@ -140,6 +144,7 @@ static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d
     (void)pid;
     (void)e;
     const kilobot_ir_rx *rx = d->value;
+    frames_heard++;
     message_t msg;
     memcpy(msg.rawdata, rx->frame, sizeof msg.rawdata);
     if (msg.type >= SPECIAL) {
@@ -153,20 +158,13 @@ static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d
 
 /* kilolib's own work runs as an event handler, on the system (main)
  * stack: the program's transmit callbacks, as the classic library's run
- * from its timer interrupt, so they may do anything (print, compute a CRC)
- * that the transmitter's small stack could not hold; and an activity's
- * thread, which must wait until the thread it replaces is reaped. */
-static message_t *outgoing;
+ * from its timer interrupt, so they may do anything (print, compute a CRC). */
+static void transmitter_looks(void);
 
 static bool run_call(sys_pid pid, sys_event_id event, const sys_event_data *call) {
     (void)pid;
     (void)event;
-    switch (*(const uint8_t *)call->value) {
-    case KILOLIB_TX_DUE: outgoing = kilo_message_tx(); break;
-    case KILOLIB_TX_SENT: kilo_message_tx_success(); break;
-    case KILOLIB_START_ACTIVITY: kilolib_activity_thread_start(); break;
-    default: break;
-    }
+    if (*(const uint8_t *)call->value == KILOLIB_TX_DUE) transmitter_looks();
     return true;
 }
 
@@ -190,32 +188,64 @@ static uint16_t steps_after(uint16_t steps, uint32_t ticks) {
     return total > 0xFFFFu ? 0xFFFFu : (uint16_t)total;
 }
 
-/* Whether kilo_message_tx's message went out. A program that set no
- * kilo_message_tx sends nothing: the default is not called (through the
- * system thread) at every tick. */
-static bool send_message(void) {
-    if (kilo_message_tx == no_tx) return false;
-    outgoing = 0;
-    if (!kilolib_call(KILOLIB_TX_DUE) || outgoing == 0) return false;
-    while (kilobot_ir_transmit(outgoing->rawdata) != SYS_OK) Sys_Sleep(1u + (rand_soft() & 7u));
-    kilolib_call(KILOLIB_TX_SENT);
-    return true;
+/* The transmitter, a handler the tick calls on (count_time): it looks a
+ * random 0-15 ms into each kilo tick; a message the busy channel held back
+ * is tried again after a random 1-8 ms. Its state, the handler's alone: */
+static uint16_t tx_steps;   /* steps since the last message went out */
+static uint32_t tx_seen;    /* kilo_ticks when it last looked */
+static message_t *tx_held;  /* kilo_message_tx's message, not out yet */
+static volatile uint8_t tx_wait_ms; /* until it looks again; 0: looking (its call queued) */
+
+static void look_again(uint8_t ms) {
+    ATOMIC_BLOCK(ATOMIC_RESTORESTATE) { tx_wait_ms = ms; }
 }
 
-static void transmitter(void *arg) {
-    (void)arg;
-    uint16_t steps = 0;
-    uint32_t seen = kilo_ticks_now();
+/* A program that set no kilo_message_tx sends nothing: the default is not
+ * called at every tick. Ticks that pass during a send count at once. */
+static void transmitter_looks(void) {
     for (;;) {
-        uint32_t now = kilo_ticks_now();
-        if (now == seen) { /* ticks that pass during a send count at once */
-            Sys_Sleep(ms_to_next_kilo_tick() + (rand_soft() & 15u));
-            continue;
+        if (tx_held != 0) {
+            if (kilobot_ir_transmit(tx_held->rawdata) != SYS_OK) {
+                look_again((uint8_t)(1u + (rand_soft() & 7u)));
+                return;
+            }
+            tx_held = 0;
+            kilo_message_tx_success();
+            tx_steps = 0;
         }
-        steps = steps_after(steps, now - seen);
-        seen = now;
-        if (steps > kilo_tx_period && kilolib_activity() == RUN && send_message()) steps = 0;
+        uint32_t now = kilo_ticks_now();
+        if (now == tx_seen) {
+            look_again((uint8_t)(ms_to_next_kilo_tick() + (rand_soft() & 15u)));
+            return;
+        }
+        tx_steps = steps_after(tx_steps, now - tx_seen);
+        tx_seen = now;
+        if (tx_steps > kilo_tx_period && kilolib_activity() == RUN && kilo_message_tx != no_tx)
+            tx_held = kilo_message_tx();
     }
+}
+
+/* The port's clock hook, in the tick's interrupt (or all at once after a
+ * sleep with the tick stopped): kilo_ticks, and the transmitter's call
+ * when its wait is over. A full event queue (counted in event_queue_full)
+ * has it asked again a millisecond later. */
+static void count_time(uint16_t ms) {
+    count_kilo_ticks(ms);
+    uint8_t wait = tx_wait_ms;
+    if (wait == 0) return;
+    if (ms < wait) {
+        tx_wait_ms = (uint8_t)(wait - ms);
+        return;
+    }
+    tx_wait_ms = kilolib_call(KILOLIB_TX_DUE) ? 0 : 1;
+}
+
+/* The program waits, at most ms: asleep until the transmitter's next look
+ * at the latest, which the kernel's deadlines do not know (tickless idle);
+ * with the periodic tick every millisecond wakes it anyway. */
+void kilolib_wait(uint32_t ms) {
+    uint8_t tx = tx_wait_ms;
+    Sys_Idle(tx != 0 && tx < ms ? tx : ms);
 }
 
 /* After power-up the robot starts as if the overhead controller had just
@@ -225,7 +255,7 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     user_loop = loop;
     kilo_ticks = 0;
     tick_fraction = 0;
-    kilobot_elapsed_hook = count_kilo_ticks;
+    kilobot_elapsed_hook = count_time;
     Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
     Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
     Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);
@@ -233,14 +263,13 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
         kilolib_activity_start(WAKEUP, kilolib_status_lights);
     else
         kilolib_activity_start(RUN, kilolib_program);
-    sys_pid tx = SYS_PID_NONE;
-    if (Sys_Start_Process_Ex(transmitter, 0, KILOLIB_TX_STACK, 0, &tx) == SYS_OK)
-        sim_thread_name(tx, PSTR("kilolib message transmitter"));
+    transmitter_looks(); /* its first look: the first kilo tick */
     Sys_Start_Kernel();
-    Sys_Run_SystemThread();
+    Sys_Run_SystemProgram(kilolib_run_activities);
 }
 
 void set_motors(uint8_t left, uint8_t right) {
+    kilolib_stop_point();
     kilobot_motors m = {left, right};
     Sys_Send_Event(KILOBOT_EVENT_MOTORS, &m, sizeof m);
 }
@@ -250,18 +279,32 @@ void spinup_motors(void) {
     delay(15);
 }
 
-void set_color(uint8_t rgb) { Sys_Send_Event(KILOBOT_EVENT_LED, &rgb, 1); }
+void set_color(uint8_t rgb) {
+    kilolib_stop_point();
+    Sys_Send_Event(KILOBOT_EVENT_LED, &rgb, 1);
+}
 
 int16_t get_ambientlight(void) { return kilobot_adc_read(KILOBOT_ADC_LIGHT); }
 int16_t get_voltage(void) { return kilobot_adc_read(KILOBOT_ADC_VOLTAGE); }
 int16_t get_temperature(void) { return kilobot_adc_read(KILOBOT_ADC_TEMPERATURE); }
 
 /* The classic library's delay busy-waits, and programs call it from their
- * message callbacks too: here those run as event handlers, which cannot
- * sleep (SYS_E_CONTEXT), so there it busy-waits as the classic one does
- * (interrupts run meanwhile; the handler overrun report comes after 1 s).
- * In setup() and loop(), threads, it sleeps and other threads run. */
+ * message callbacks too: here those run as event handlers, which must not
+ * wait for handlers (they run one at a time), so there it busy-waits as
+ * the classic one does (interrupts run meanwhile; the handler overrun
+ * report comes after 1 s). In setup() and loop() the robot sleeps, and
+ * messages, the transmitter and the overhead controller are served
+ * meanwhile; a thread of the app's sleeps. */
 void delay(uint16_t ms) {
+    if (Sys_In_SystemProgram()) {
+        uint32_t end = Sys_Get_SystemTime() + ms;
+        for (;;) {
+            kilolib_stop_point();
+            int32_t left = (int32_t)(end - Sys_Get_SystemTime());
+            if (left <= 0) return;
+            kilolib_wait((uint32_t)left);
+        }
+    }
     if (Sys_Sleep(ms) != SYS_E_CONTEXT) return;
     while (ms-- != 0) _delay_ms(1);
 }

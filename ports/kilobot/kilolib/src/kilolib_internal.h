@@ -7,39 +7,46 @@
 #include "kilolib.h"
 #include "openswarm/kernel.h"
 
-/* kilolib.c. kilolib's own work to run as a handler, on the system stack
- * and after any thread ended before it is reaped; the data is one byte,
- * which work (kilolib_call). */
+/* kilolib.c. kilolib's own work to run as a handler, on the system stack;
+ * the data is one byte, which work (kilolib_call). */
 #define KILOLIB_EVENT_CALL ((sys_event_id)(SYS_EVENT_PORT_FIRST + 7))
 enum kilolib_call {
-    KILOLIB_TX_DUE,        /* kilo_message_tx() */
-    KILOLIB_TX_SENT,       /* kilo_message_tx_success() */
-    KILOLIB_START_ACTIVITY /* the thread of the activity kilolib_activity_start asked for */
+    KILOLIB_TX_DUE /* the transmitter looks: kilo_message_tx() and the send */
 };
-/* Queue one (from a thread it runs before the call returns). */
+/* Queue one (from the program it runs before the call returns). */
 bool kilolib_call(uint8_t what);
-void kilolib_program(void *arg); /* the program: setup() the first time, then loop() for ever */
+void kilolib_program(void); /* the program: setup() the first time, then loop() for ever */
 /* kilo_uid and the motor calibration (kilo_turn_left, ... and the motors'
  * kilobot_calib) as the EEPROM holds them. */
 void kilolib_identity_load(void);
+/* The program waits (at most ms): the CPU sleeps, handlers run, and the
+ * transmitter's next look wakes it in time (tickless idle). */
+void kilolib_wait(uint32_t ms);
 
 /* overhead_controller.c. The robot does one thing at a time, named by the
  * system message that asked for it: RUN (the program), CALIB (a calibration
- * motion), VOLTAGE, CHARGE or WAKEUP (a status on the LED), SLEEP (nothing). */
+ * motion), VOLTAGE, CHARGE or WAKEUP (a status on the LED), SLEEP (nothing).
+ * The activity runs on the system thread (main's stack), in place of the
+ * kernel's idle loop: kilolib_run_activities, for ever. */
+typedef void (*kilolib_activity_fn)(void);
 void kilolib_system_message(const message_t *msg);
 /* Whether this run began with RESET (asked once: the answer is then false). */
 bool kilolib_restarted(void);
 uint8_t kilolib_activity(void);
-/* The current activity ends (its thread killed, motors off, LED dark) and
- * fn, if any, starts in a thread of its own once the old thread is reaped
- * (kilolib_activity_thread_start, through KILOLIB_START_ACTIVITY). */
-void kilolib_activity_start(uint8_t activity, sys_process_fn fn);
-void kilolib_activity_thread_start(void);
+/* The current activity ends (motors off, LED dark: at once; its code at its
+ * next kilolib call, kilolib_stop_point) and fn, if any, runs next. */
+void kilolib_activity_start(uint8_t activity, kilolib_activity_fn fn);
+/* The system thread's program (Sys_Run_SystemProgram): the activities. */
+void kilolib_run_activities(void);
+/* Where an activity that was replaced stops: the kilolib calls it makes
+ * (delay, set_color, set_motors) leave it for the next. Nothing elsewhere
+ * (a handler, a thread of the app's). */
+void kilolib_stop_point(void);
 
 /* calibration.c: CALIB and READUID */
 void kilolib_calibration_message(const message_t *msg);
 
 /* status_lights.c: the LED pattern of the current activity, for ever */
-void kilolib_status_lights(void *arg);
+void kilolib_status_lights(void);
 
 #endif

@@ -1,49 +1,79 @@
 /* The overhead controller's system messages (types from 0x80), handled as
  * the classic Kilobot library documents them. Each asks the robot for one
- * activity, which replaces the one before. */
+ * activity, which replaces the one before. Activities run on the system
+ * thread, on main()'s stack, as the classic library's main loop runs them:
+ * no thread, no stack of their own. */
+#include <avr/interrupt.h>
+#include <avr/io.h>
+#include <util/atomic.h>
+
 #include "kilolib_internal.h"
 #include "openswarm/kilobot.h"
-#include "openswarm/kilobot_sim.h"
-
-#ifndef KILOLIB_LOOP_STACK
-#define KILOLIB_LOOP_STACK 192 /* bytes for setup() and loop(), beyond the port's frame */
-#endif
 
 static uint8_t activity;
-static sys_pid activity_pid = SYS_PID_NONE;
+static kilolib_activity_fn activity_fn; /* what the current activity runs, if anything */
+/* Activities started so far, and which of them runs (both mod 256): they
+ * differ once the running one is replaced. */
+static uint8_t started, running;
+/* The stack pointer where the activities' loop begins: a replaced
+ * activity's code goes back there, its frames dropped as a killed thread's
+ * stack would be. (setjmp would keep 23 bytes of registers for it; the
+ * loop needs none, it starts afresh.) */
+static uint16_t activities_sp;
 
 uint8_t kilolib_activity(void) { return activity; }
 
-static sys_process_fn activity_fn; /* the thread the current activity runs, if any */
-
-/* The current activity ends (its thread killed, motors off, LED dark) and
- * the new one's thread, if any, starts once the old thread is reaped:
- * every activity gets the program's stack size, so the old thread's slot
- * and stack are the ones it reuses (they are not free before). */
-void kilolib_activity_start(uint8_t what, sys_process_fn fn) {
-    if (activity_pid != SYS_PID_NONE) {
-        Sys_Kill_Process(activity_pid); /* SYS_E_INVALID if it had ended: nothing to kill */
-        activity_pid = SYS_PID_NONE;
-        /* Sent as events, after whatever the killed thread still had queued. */
+/* From a handler (a system message): the current activity ends, motors
+ * off and LED dark at once (sent as events, after whatever it still had
+ * queued); its code stops at its next kilolib call (kilolib_stop_point). */
+void kilolib_activity_start(uint8_t what, kilolib_activity_fn fn) {
+    if (activity_fn != 0) {
         set_motors(0, 0);
         set_color(0);
     }
     activity = what;
     activity_fn = fn;
-    /* A full event queue (counted in event_queue_full): start it now, which
-     * works unless the old thread still holds the only slot. */
-    if (fn != 0 && !kilolib_call(KILOLIB_START_ACTIVITY)) kilolib_activity_thread_start();
+    started++;
 }
 
-void kilolib_activity_thread_start(void) {
-    if (activity_fn != 0 && activity_pid == SYS_PID_NONE &&
-        Sys_Start_Process_Ex(activity_fn, 0, KILOLIB_LOOP_STACK, 0, &activity_pid) == SYS_OK)
-        sim_thread_name(activity_pid, PSTR("kilolib program (setup, loop)"));
+static void __attribute__((noreturn)) run_activities(void);
+
+void kilolib_stop_point(void) {
+    if (started == running || !Sys_In_SystemProgram()) return;
+    cli();
+    SP = activities_sp;
+    sei();
+    run_activities();
+}
+
+/* The system thread's program: the current activity's code, once per
+ * start (the calibration motion returns; the program and the status lights
+ * never do); waiting for the next start meanwhile. */
+static void run_activities(void) {
+    for (;;) {
+        uint8_t n;
+        kilolib_activity_fn fn;
+        ATOMIC_BLOCK(ATOMIC_RESTORESTATE) {
+            n = started;
+            fn = activity_fn;
+        }
+        bool fresh = n != running;
+        running = n;
+        if (fresh && fn != 0)
+            fn();
+        else
+            kilolib_wait(UINT32_MAX); /* until a system message starts another */
+    }
+}
+
+void kilolib_run_activities(void) {
+    activities_sp = SP;
+    run_activities();
 }
 
 /* The same request again (the overhead controller repeats its messages)
  * leaves the activity running undisturbed. */
-static void activity_switch(uint8_t what, sys_process_fn fn) {
+static void activity_switch(uint8_t what, kilolib_activity_fn fn) {
     if (activity != what) kilolib_activity_start(what, fn);
 }
 

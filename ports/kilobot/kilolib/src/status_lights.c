@@ -16,8 +16,7 @@ static uint8_t battery_colour(void) {
     return kilobot_battery_light(v);
 }
 
-void kilolib_status_lights(void *arg) {
-    (void)arg;
+void kilolib_status_lights(void) {
     const uint8_t shown = kilolib_activity();
     for (;;) {
         uint8_t colour = shown == VOLTAGE  ? battery_colour()
