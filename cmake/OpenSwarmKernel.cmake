@@ -142,6 +142,7 @@ set(OPENSWARM_PORT_epuck_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_proximity.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_selector.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/robot_identity.c
+    ${OPENSWARM_ROOT}/ports/epuck/dspic/src/step_schedule.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/board_camera.c
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/camera_capture.S
     ${OPENSWARM_ROOT}/ports/epuck/dspic/src/camera_frame.c

@@ -6,7 +6,7 @@
 #   cmake -DCOMPILER=avr-gcc -DROOT=<openswarm> [-DFILES=<files>] [-DDEFINES=<macros>]
 #         -P syntax_check.cmake
 # Without FILES, every file is checked, and the 16-bit assertions with them;
-# DEFINES (e.g. EPUCK_DSPIC_CAMERA=1, the build with the camera) adds -D each.
+# DEFINES (e.g. EPUCK_DSPIC_CAMERA=0, the build without the camera) adds -D each.
 string(REPLACE "," ";" FILES "${FILES}") # a list passed through ctest, comma-separated
 if(NOT FILES)
   file(GLOB FILES ${ROOT}/kernel/src/*.c ${ROOT}/ports/epuck/src/*.c

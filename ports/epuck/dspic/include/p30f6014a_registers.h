@@ -36,12 +36,12 @@
  * IFS0/IEC0 bits: */
 #define IRQ0_T1 0x0008u
 #define IRQ0_T2 0x0040u
-#define IRQ0_T3 0x0080u /* unused by a timer here: the camera's frame-ready software interrupt */
+#define IRQ0_T3 0x0080u
 #define IRQ0_ADC 0x0800u
 /* IFS1/IEC1 bits */
 #define IRQ1_T4 0x0020u
 #define IRQ1_T5 0x0040u
-/* Priority fields, 3 bits each: IPC0 T1 <14:12>; IPC1 T2 <10:8>;
+/* Priority fields, 3 bits each: IPC0 T1 <14:12>; IPC1 T2 <10:8>, T3 <14:12>;
  * IPC2 ADC <14:12>; IPC5 T4 <6:4>, T5 <10:8>. */
 #define IPC0_T1_SHIFT 12
 #define IPC1_T2_SHIFT 8
@@ -57,7 +57,10 @@
 #define T1CON DSPIC_SFR(0x0104)
 #define TMR2 DSPIC_SFR(0x0106)
 #define PR2 DSPIC_SFR(0x010C)
+#define TMR3 DSPIC_SFR(0x010A)
+#define PR3 DSPIC_SFR(0x010E)
 #define T2CON DSPIC_SFR(0x0110)
+#define T3CON DSPIC_SFR(0x0112)
 #define TMR4 DSPIC_SFR(0x0114)
 #define TMR5 DSPIC_SFR(0x0118)
 #define PR4 DSPIC_SFR(0x011A)

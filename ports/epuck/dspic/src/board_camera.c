@@ -4,10 +4,10 @@
  * Timer4 counts HREF (T4CK): every href_per_row-th line its interrupt
  * (camera_capture.S, cycle-counted) reads a row's bytes where
  * camera_frame_row() says and calls board_camera_row_end. A whole frame
- * is handed to the device layer from Timer3's interrupt, raised by
- * software at the kernel's priority: the camera's own priority (6) is
- * above the kernel-aware interrupts and must not call the kernel. Built
- * only with EPUCK_DSPIC_CAMERA (board.h says why). */
+ * is handed to the device layer from the kernel's tick (board_camera_poll,
+ * at most a millisecond later): the camera's own priority (6) is above the
+ * kernel-aware interrupts and must not call the kernel. Left out of a
+ * build with EPUCK_DSPIC_CAMERA 0 (board.h). */
 #include "board.h"
 
 #include <stddef.h>
@@ -30,7 +30,7 @@ uint16_t camera_row_columns;
 uint16_t camera_row_delay;
 
 static uint8_t href_per_row;
-static const epuck_camera_frame *ready;
+static const epuck_camera_frame *volatile ready; /* whole, not yet handed on */
 
 /* The library holds reset low for a 100-pass loop; 200 NOPs here
  * (14 us), then as long again before the first I2C transfer. */
@@ -65,18 +65,14 @@ static bool set_up(po3030k_capture *plan) {
     return true;
 }
 
-static void deliver(void) { epuck_camera_arrived(ready); }
+/* From the row interrupt (priority 6): the frame waits for the tick. */
+static void frame_whole(const epuck_camera_frame *frame) { ready = frame; }
 
-/* From the row interrupt (priority 6): the frame waits for Timer3's. */
-static void frame_whole(const epuck_camera_frame *frame) {
-    ready = frame;
-    IFS0 |= IRQ0_T3;
-}
-
-DSPIC_ISR(_T3Interrupt);
-DSPIC_ISR(_T3Interrupt) {
-    IFS0 &= (uint16_t)~IRQ0_T3;
-    dspic_isr_run(deliver);
+void board_camera_poll(void) {
+    const epuck_camera_frame *frame = ready;
+    if (frame == NULL) return;
+    ready = NULL;
+    epuck_camera_arrived(frame);
 }
 
 /* camera_capture.S, after a row: the next one, or Timer4 off until the
@@ -104,7 +100,6 @@ DSPIC_ISR(_T5Interrupt) {
 static void set_priority(void) {
     IPC5 = (uint16_t)((IPC5 & ~((IPC_FIELD << IPC5_T4_SHIFT) | (IPC_FIELD << IPC5_T5_SHIFT))) |
                       (DSPIC_PRIORITY_CAMERA << IPC5_T4_SHIFT) | (DSPIC_PRIORITY_CAMERA << IPC5_T5_SHIFT));
-    IPC1 = (uint16_t)((IPC1 & ~(IPC_FIELD << IPC1_T3_SHIFT)) | (DSPIC_PRIORITY_KERNEL << IPC1_T3_SHIFT));
 }
 
 /* Timer4: an interrupt every href_per_row HREFs (the interrupt clears
@@ -116,10 +111,8 @@ static void start_timers(void) {
     T5CON = 0;
     TMR5 = 0;
     PR5 = 1;
-    IFS0 &= (uint16_t)~IRQ0_T3;
     IFS1 &= (uint16_t)~IRQ1_T4;
     IFS1 &= (uint16_t)~IRQ1_T5;
-    IEC0 |= IRQ0_T3;
     IEC1 |= IRQ1_T4 | IRQ1_T5;
     T5CON = TCON_ON | TCON_EXTERNAL;
 }

@@ -1,7 +1,8 @@
-/* The e-puck's two steppers, driven as the e-puck library drives them:
- * the four coils of each from port pins, one full step (the next of four
- * coil patterns) per interrupt of its own timer, so the timer's period
- * sets the speed. 1000 steps a wheel turn. */
+/* The e-puck's two steppers, as the e-puck library drives them: the four
+ * coils of each from port pins, one full step (the next of four coil
+ * patterns) at a time. Both are timed by Timer3 (the camera counts its
+ * lines and frames with Timer4 and Timer5): its period is set to the
+ * nearer motor's next step (step_schedule.c). 1000 steps a wheel turn. */
 #include "board.h"
 
 #include <stdlib.h>
@@ -9,12 +10,13 @@
 #include "board_pins.h"
 #include "dspic_compiler.h"
 #include "dspic_port.h"
+#include "step_schedule.h"
 #include "../../src/epuck_board.h"
 #include "p30f6014a_registers.h"
 
-/* The timers count Fcy / 256 = 57600 Hz: a period of 57600 / speed
- * counts (57599 at 1 step/s fits in 16 bits; at 1000 steps/s, 58 counts:
- * 993 steps/s, the rounding's 0.7%). */
+/* Timer3 counts Fcy / 256 = 57600 Hz: 57600 / speed counts a step
+ * (57600 at 1 step/s fits in 16 bits; at 1000 steps/s, 58 counts: 993
+ * steps/s, the rounding's 0.7%). */
 #define STEP_CLOCK_HZ (DSPIC_FCY_HZ / 256u)
 
 /* Coil patterns A..D (bit 0 = A): 0101, 0110, 1010, 1001 as A, B, C, D.
@@ -22,75 +24,84 @@
  * motors face opposite ways). */
 static const uint8_t coil_patterns[4] = {0xA, 0x6, 0x5, 0x9};
 
-typedef struct stepper {
-    volatile uint16_t *tcon, *pr, *tmr;
-    volatile uint16_t *ifs, *iec;
-    uint16_t irq;
-    uint8_t shift;  /* the coils' first pin on PORTD */
-    int8_t forward; /* the step through the table that drives forward */
-} stepper;
+enum { LEFT, RIGHT };
+static const uint8_t coil_shift[STEP_MOTORS] = {LEFT_COILS_SHIFT, RIGHT_COILS_SHIFT};
+static const int8_t forward[STEP_MOTORS] = {-1, 1}; /* the step through the table that drives forward */
 
-static const stepper left = {&T5CON, &PR5, &TMR5, &IFS1, &IEC1, IRQ1_T5, LEFT_COILS_SHIFT, -1};
-static const stepper right = {&T4CON, &PR4, &TMR4, &IFS1, &IEC1, IRQ1_T4, RIGHT_COILS_SHIFT, 1};
-
-/* Written with the motor's timer stopped, read by its interrupt. */
-static volatile int8_t left_step, right_step;
-static uint8_t left_phase, right_phase;
+/* Written masked, read by Timer3's interrupt. */
+static step_schedule schedule;
+static int8_t direction[STEP_MOTORS];
+static uint8_t phase[STEP_MOTORS];
 
 void board_steppers_init(void) {
     TRISD &= (uint16_t)~COIL_PINS;
     LATD &= (uint16_t)~COIL_PINS;
-    IPC5 = (uint16_t)((IPC5 & ~((IPC_FIELD << IPC5_T4_SHIFT) | (IPC_FIELD << IPC5_T5_SHIFT))) |
-                      (DSPIC_PRIORITY_STEPPERS << IPC5_T4_SHIFT) |
-                      (DSPIC_PRIORITY_STEPPERS << IPC5_T5_SHIFT));
+    IPC1 = (uint16_t)((IPC1 & ~(IPC_FIELD << IPC1_T3_SHIFT)) | (DSPIC_PRIORITY_STEPPERS << IPC1_T3_SHIFT));
 }
 
-static void set_coils(uint8_t shift, uint16_t pattern) {
-    LATD = (uint16_t)((LATD & ~(0xFu << shift)) | (pattern << shift));
+static void set_coils(uint8_t motor, uint16_t pattern) {
+    LATD = (uint16_t)((LATD & ~(0xFu << coil_shift[motor])) | (pattern << coil_shift[motor]));
 }
 
-/* Masked: the other motor's interrupt writes PORTD's latch too. */
-static void set_speed(const stepper *m, volatile int8_t *step, int16_t speed) {
+static void step(uint8_t motor) {
+    phase[motor] = (uint8_t)((phase[motor] + direction[motor]) & 3u);
+    set_coils(motor, coil_patterns[phase[motor]]);
+}
+
+static void step_due(uint8_t stepping) {
+    for (uint8_t m = 0; m < STEP_MOTORS; m++)
+        if (stepping & (1u << m)) step(m);
+}
+
+/* The timer's next interrupt `counts` from now (0: stopped). PR3 + 1
+ * counts pass from a match to the next. */
+static void program_timer(uint16_t counts) {
+    if (counts == 0) {
+        T3CON = 0;
+        IEC0 &= (uint16_t)~IRQ0_T3;
+        return;
+    }
+    PR3 = (uint16_t)(counts - 1u);
+}
+
+DSPIC_ISR(_T3Interrupt);
+DSPIC_ISR(_T3Interrupt) {
+    IFS0 &= (uint16_t)~IRQ0_T3;
+    uint16_t next;
+    step_due(step_schedule_tick(&schedule, (uint16_t)(PR3 + 1u), &next));
+    program_timer(next);
+}
+
+/* Masked: Timer3's interrupt reads the schedule and writes PORTD's latch.
+ * The timer stops while the schedule changes; a match it had just reached
+ * (its interrupt pending) is served first. */
+static void set_speed(uint8_t motor, int16_t speed) {
     port_irq_state_t s = port_irq_save();
-    *m->tcon = 0;
-    *m->iec &= (uint16_t)~m->irq;
+    T3CON = 0;
+    uint16_t next;
+    if (IFS0 & IRQ0_T3) {
+        IFS0 &= (uint16_t)~IRQ0_T3;
+        step_due(step_schedule_tick(&schedule, (uint16_t)(PR3 + 1u), &next));
+    }
+    uint16_t period = 0;
     if (speed == 0) {
-        set_coils(m->shift, 0); /* released: no current while standing */
+        set_coils(motor, 0); /* released: no current while standing */
     } else {
         unsigned long magnitude = (unsigned long)labs(speed);
-        *step = (int8_t)(speed > 0 ? m->forward : -m->forward);
-        *m->pr = (uint16_t)((STEP_CLOCK_HZ + magnitude / 2u) / magnitude - 1u);
-        *m->tmr = 0;
-        *m->ifs &= (uint16_t)~m->irq;
-        *m->iec |= m->irq;
-        *m->tcon = TCON_ON | TCON_PRESCALE_256;
+        direction[motor] = (int8_t)(speed > 0 ? forward[motor] : -forward[motor]);
+        period = (uint16_t)((STEP_CLOCK_HZ + magnitude / 2u) / magnitude);
+    }
+    next = step_schedule_set(&schedule, motor, period, TMR3);
+    program_timer(next);
+    if (next != 0) {
+        TMR3 = 0;
+        IEC0 |= IRQ0_T3;
+        T3CON = TCON_ON | TCON_PRESCALE_256;
     }
     port_irq_restore(s);
 }
 
-/* With the camera (board.h) Timer4 and Timer5 count HREF and VSYNC and
- * are not touched here: the coils stay released (board_steppers_init). */
 void epuck_board_set_wheels(int16_t left_speed, int16_t right_speed) {
-    if (EPUCK_DSPIC_CAMERA) return;
-    set_speed(&left, &left_step, left_speed);
-    set_speed(&right, &right_step, right_speed);
+    set_speed(LEFT, left_speed);
+    set_speed(RIGHT, right_speed);
 }
-
-static void step(const stepper *m, uint8_t *phase, int8_t direction) {
-    *phase = (uint8_t)((*phase + direction) & 3u);
-    set_coils(m->shift, coil_patterns[*phase]);
-}
-
-#if !EPUCK_DSPIC_CAMERA
-DSPIC_ISR(_T5Interrupt);
-DSPIC_ISR(_T5Interrupt) {
-    IFS1 &= (uint16_t)~IRQ1_T5;
-    step(&left, &left_phase, left_step);
-}
-
-DSPIC_ISR(_T4Interrupt);
-DSPIC_ISR(_T4Interrupt) {
-    IFS1 &= (uint16_t)~IRQ1_T4;
-    step(&right, &right_phase, right_step);
-}
-#endif
