@@ -44,6 +44,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     r->avr = firmware_load(elf);
     if (r->avr == NULL) return -1;
     main_stack_paint(r, elf);
+    if (o->counters_period >= 0) firmware_counters_locate(r, elf);
     if (index == 0) {
         nominal_hz = r->avr->frequency;
     } else if (r->avr->frequency != nominal_hz) {
@@ -151,7 +152,7 @@ static int load_robots(const options *o, FILE *csv) {
 /* --counters: every robot's, at the nominal clock's cycle now. */
 static void print_counters(const options *o, avr_cycle_count_t now) {
     for (int i = 0; i < o->robots; i++)
-        firmware_counters_print(&robots[i], firmware_of(o, i), (double)now / nominal_hz);
+        firmware_counters_print(&robots[i], (double)now / nominal_hz);
     fflush(stdout);
 }
 

@@ -199,6 +199,14 @@ typedef struct robot {
     /* Powered off (--faults brownout) until this cycle of the nominal
      * clock: not run, deaf to IR. 0: powered. */
     avr_cycle_count_t off_until;
+    /* Where its firmware keeps the counters --counters reads (data-space
+     * addresses, 0: none), from the ELF's symbols when it was loaded: a
+     * file rebuilt during the run must not move them. */
+    struct counter_symbols {
+        uint32_t kernel, kernel_size;
+        uint32_t ir, ir_size;
+        uint32_t stack_pool, stack_pool_size; /* the kernel's os_stack_pool */
+    } counters;
 } robot;
 
 /* firmware.c: check and load an ELF into a new simulated MCU */
@@ -225,8 +233,10 @@ typedef struct thread_stack {
 } thread_stack;
 int thread_stacks_read(const robot *r, uint32_t pool, uint32_t size, thread_stack *out, int room);
 /* firmware_counters.c: --counters, robot r's kernel and IR counters and
- * main stack, read from its RAM by symbol, as one line on stdout. */
-void firmware_counters_print(const robot *r, const char *elf_path, double seconds);
+ * main stack, read from its RAM by symbol, as one line on stdout; the
+ * symbols read as the firmware is loaded (firmware_counters_locate). */
+void firmware_counters_locate(robot *r, const char *elf_path);
+void firmware_counters_print(const robot *r, double seconds);
 int main_stack_report(const robot *r, int print);
 
 /* interrupt_watch.c: a robot running with interrupts masked for more than

@@ -27,11 +27,7 @@ static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc",
                                        "collisions", "busy"};
 #define IR_COUNTERS (sizeof ir_names / sizeof ir_names[0])
 
-typedef struct counter_symbols {
-    uint32_t kernel, kernel_size; /* data-space address; 0: none */
-    uint32_t ir, ir_size;
-    uint32_t stack_pool, stack_pool_size; /* the kernel's os_stack_pool */
-} counter_symbols;
+typedef struct counter_symbols counter_symbols;
 
 /* name, or name.lto_priv.N as link-time optimisation renames a static. */
 static int named(const char *name, const char *wanted) {
@@ -55,16 +51,11 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
     }
 }
 
-/* Read once per firmware file: robots that share one share the answer. */
-static counter_symbols symbols_of(const char *elf_path) {
-    static const char *read_path;
-    static counter_symbols symbols;
-    if (elf_path != read_path) {
-        memset(&symbols, 0, sizeof symbols);
-        firmware_symbols(elf_path, note_symbol, &symbols);
-        read_path = elf_path;
-    }
-    return symbols;
+/* At load: the file may be rebuilt while the run goes on (the symbols of
+ * another build would point into the wrong RAM). */
+void firmware_counters_locate(robot *r, const char *elf_path) {
+    memset(&r->counters, 0, sizeof r->counters);
+    firmware_symbols(elf_path, note_symbol, &r->counters);
 }
 
 static unsigned u16_at(const avr_t *avr, uint32_t address) {
@@ -104,8 +95,8 @@ static void print_thread_stacks(FILE *out, const robot *r, const counter_symbols
     for (int i = 0; i < n; i++) fprintf(out, "%s%u/%u", i ? "," : "", stacks[i].used, stacks[i].room);
 }
 
-void firmware_counters_print(const robot *r, const char *elf_path, double seconds) {
-    counter_symbols s = symbols_of(elf_path);
+void firmware_counters_print(const robot *r, double seconds) {
+    const counter_symbols s = r->counters;
     unsigned room, used = main_stack_worst(r, &room);
     printf("counters t=%.3f robot=%d", seconds, r->index);
     print_kernel(stdout, r->avr, &s);
