@@ -64,13 +64,17 @@ static void program_timer(uint16_t counts) {
     PR3 = (uint16_t)(counts - 1u);
 }
 
-DSPIC_ISR(_T3Interrupt);
-DSPIC_ISR(_T3Interrupt) {
+/* Timer3 matched (PR3 + 1 counts after the last match): the motors due
+ * step; the counts to the next step (0: none). */
+static uint16_t on_match(void) {
     IFS0 &= (uint16_t)~IRQ0_T3;
     uint16_t next;
     step_due(step_schedule_tick(&schedule, (uint16_t)(PR3 + 1u), &next));
-    program_timer(next);
+    return next;
 }
+
+DSPIC_ISR(_T3Interrupt);
+DSPIC_ISR(_T3Interrupt) { program_timer(on_match()); }
 
 /* Masked: Timer3's interrupt reads the schedule and writes PORTD's latch.
  * The timer stops while the schedule changes; a match it had just reached
@@ -78,11 +82,7 @@ DSPIC_ISR(_T3Interrupt) {
 static void set_speed(uint8_t motor, int16_t speed) {
     port_irq_state_t s = port_irq_save();
     T3CON = 0;
-    uint16_t next;
-    if (IFS0 & IRQ0_T3) {
-        IFS0 &= (uint16_t)~IRQ0_T3;
-        step_due(step_schedule_tick(&schedule, (uint16_t)(PR3 + 1u), &next));
-    }
+    if (IFS0 & IRQ0_T3) (void)on_match();
     uint16_t period = 0;
     if (speed == 0) {
         set_coils(motor, 0); /* released: no current while standing */
@@ -91,7 +91,7 @@ static void set_speed(uint8_t motor, int16_t speed) {
         direction[motor] = (int8_t)(speed > 0 ? forward[motor] : -forward[motor]);
         period = (uint16_t)((STEP_CLOCK_HZ + magnitude / 2u) / magnitude);
     }
-    next = step_schedule_set(&schedule, motor, period, TMR3);
+    uint16_t next = step_schedule_set(&schedule, motor, period, TMR3);
     program_timer(next);
     if (next != 0) {
         TMR3 = 0;
