@@ -16,7 +16,7 @@ namespace {
 PortLibrary kilolib() {
     return {"kilolib", "kilolib.h", {},
             {{"max_threads", 1}, {"stack_pool", 0}, {"stack_check", 0}, {"clock_event", 0},
-             {"handler_context", 0}, {"max_events", 10}, {"event_data", 71},
+             {"handler_context", 0}, {"max_events", 10}, {"event_data", 33},
              {"max_subscriptions", 5}, {"max_devices", 3}},
             "kilolib.c.obj"};
 }
@@ -34,14 +34,14 @@ std::vector<ProcessorInfo> kilobot_sensor_processors() {
 
 const std::vector<PortInfo> &ports() {
     static const std::vector<PortInfo> all = {
-        // Device events: LED, motors, IR in and out (OS_CFG_HAL_MAX_VALUE, 17
-        // bytes each), light, voltage, temperature (an int16_t each),
+        // Device events: LED, motors, IR in and out (1, 2, 17 and 10 bytes:
+        // kilobot_devices_init), light, voltage, temperature (an int16_t each),
         // kilolib's calls (1 byte); kilobot.h, port_arch.h, port_config.h,
         // kilolib_internal.h.
         // Flash below the bootloader (OPENSWARM_FLASH_BYTES in avr-gcc.cmake).
         // The main stack: the blinky template's worst use measured in the
         // simulator is 81 bytes (openswarm size measures an app's own).
-        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 0x7000, 2048, 10, 6 + 4 * 17 + 3 * 2 + 1,
+        {"kilobot", "Kilobot: ATmega328P at 8 MHz, run in simavr", 0x7000, 2048, 10, 6 + 1 + 2 + 17 + 10 + 3 * 2 + 1,
          4, 14, 96, 16, {kilolib()}, "avr-gcc",
          "sudo apt-get install gcc-avr avr-libc binutils-avr (or run OpenSwarm's ./setup.sh)",
          "ports/kilobot/cmake/avr-gcc.cmake", "avr-size", Runner::simavr,

@@ -83,7 +83,7 @@ expect 2 "\"threads\[1\].entry\": \"a\" starts two threads" "$openswarm" build -
 printf '{"name": "keep", "port": "kilobot", "events": [{"name": "a"}], "kernel": {"max_events": 10}}' > keep/openswarm.json
 expect 2 "\"kernel.max_events\": the kernel's and the kilobot's 10 events and openswarm.json's 1 need 11, found 10" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "kernel": {"event_data": 10}}' > keep/openswarm.json
-expect 2 "\"kernel.event_data\": .* need 81, found 10" "$openswarm" build -C keep
+expect 2 "\"kernel.event_data\": .* need 43, found 10" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "a", "stack": 96}], "kernel": {"stack_pool": 50}}' > keep/openswarm.json
 expect 2 "\"kernel.stack_pool\": the stacks of 1 thread in openswarm.json, as the pool carves them, need 112, found 50" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "threads": [{"entry": "not an identifier"}]}' > keep/openswarm.json
@@ -142,7 +142,7 @@ out=$("$openswarm" build -C warned 2>&1); status=$?
 
 # The smallest pools the checks accept run the app as declared.
 "$openswarm" new tight >/dev/null
-python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); j["kernel"] = {"max_events": 11, "event_data": 81, "stack_pool": 112}; json.dump(j, open(sys.argv[1], "w"))' tight/openswarm.json
+python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); j["kernel"] = {"max_events": 11, "event_data": 43, "stack_pool": 112}; json.dump(j, open(sys.argv[1], "w"))' tight/openswarm.json
 [ "$("$openswarm" run -C tight --time 1 2>&1 | grep -c '\] led ')" -ge 3 ] \
     && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: the smallest accepted pools do not run blinky"; }
 

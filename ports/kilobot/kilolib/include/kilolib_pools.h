@@ -2,8 +2,8 @@
  * configuration it generates for an app that includes kilolib.h): setup()
  * and loop() run on the system thread, so nothing needs a thread of its
  * own. What the robot registers, and no more: the kernel's events, the
- * port's 8 ids (LED, motors and IR registered at OS_CFG_HAL_MAX_VALUE
- * bytes, kilolib's calls at 1); their 5 subscriptions (a handler for each
+ * port's 8 ids (LED, motors and IR registered at their values' sizes,
+ * kilolib's calls at 1); their 5 subscriptions (a handler for each
  * output device, kilolib's message delivery and calls); the LED, motors
  * and IR devices. A setting the app's configuration gives (openswarm.json's
  * "kernel") comes first and wins. */
@@ -29,7 +29,7 @@
 #define OS_CFG_MAX_EVENTS 10 /* the kernel's 2 and the port's 8 */
 #endif
 #ifndef OS_CFG_EVENT_DATA_BYTES
-#define OS_CFG_EVENT_DATA_BYTES 71 /* the fault event 2, 4 devices' events 17 (OS_CFG_HAL_MAX_VALUE), the calls 1 */
+#define OS_CFG_EVENT_DATA_BYTES 33 /* the fault event 2, the devices' events 1 + 2 + 17 + 10, the calls 1 */
 #endif
 #ifndef OS_CFG_MAX_SUBSCRIPTIONS
 #define OS_CFG_MAX_SUBSCRIPTIONS 5
