@@ -53,7 +53,8 @@ def build_cycles(root, build_dir):
     port of `root`; its ELF."""
     run(["cmake", "-S", os.path.join(root, "bench", "avr"), "-B", build_dir, "-G", "Ninja",
          "-DCMAKE_TOOLCHAIN_FILE=" + AVR_TOOLCHAIN])
-    run(["cmake", "--build", build_dir, "--target", "kernel_cycles", "footprint_threads2", "bare"])
+    run(["cmake", "--build", build_dir, "--target", "kernel_cycles", "kernel_cycles_minimal", "footprint_threads2",
+         "bare"])
     return build_dir
 
 
@@ -305,21 +306,25 @@ def cycle_rows(evs):
     ]
 
 
-def measure_cycles(build_dir):
-    elf = os.path.join(build_dir, "kernel_cycles.elf")
+def measure_cycles(build_dir, firmware="kernel_cycles"):
+    elf = os.path.join(build_dir, firmware + ".elf")
     return cycle_rows(events(elf, "--watch-irq", "14", "--watch-irq", "7"))
 
 
-def cycle_table(rows, before, rev):
-    out = ["| what | from | to | min | median | max | samples (left out) |"
+def cycle_table(rows, minimal, before, rev):
+    """The cycle rows; `minimal` the same measured without the optional
+    features (its median, min-max), `before` those of git `rev`."""
+    out = ["| what | from | to | min | median | max | samples (left out) | optional features off: median (min-max) |"
            + (f" before ({rev}): median (min-max) |" if before else "") + " target |",
-           "|---|---|---|---:|---:|---:|---:|" + ("---:|" if before else "") + "---|"]
+           "|---|---|---|---:|---:|---:|---:|---:|" + ("---:|" if before else "") + "---|"]
     for i, (name, start, end, (lo, med, hi, n, left), target) in enumerate(rows):
+        m = minimal[i][3]
         old = ""
         if before:
             b = before[i][3]
             old = f" {b[1]} ({b[0]}-{b[2]}) |"
-        out.append(f"| {name} | {start} | {end} | {lo} | {med} | {hi} | {n} ({left}) |{old} {target} |")
+        out.append(f"| {name} | {start} | {end} | {lo} | {med} | {hi} | {n} ({left}) | {m[1]} ({m[0]}-{m[2]}) |"
+                   f"{old} {target} |")
     return out
 
 
@@ -351,7 +356,8 @@ def main():
         before, flash_before = measure_cycles(baseline), flash_two_threads(baseline)
     if args.cycles:
         now = build_cycles(ROOT, FW)
-        print("\n".join(cycle_table(measure_cycles(now), before, args.baseline)))
+        print("\n".join(cycle_table(measure_cycles(now), measure_cycles(now, "kernel_cycles_minimal"), before,
+                                     args.baseline)))
         print(f"kernel + port flash, app with 2 user threads: {flash_two_threads(now)} bytes"
               + (f" (before: {flash_before})" if flash_before else ""))
         return
@@ -392,8 +398,11 @@ def main():
                "into (a tick during a yield) is left out and counted, as is the first of each\n"
                "figure (a thread's first start). `Sys_Yield` is called from two functions, so link-time\n"
                "optimisation cannot fold it into its caller. Medians are samples (the lower middle\n"
-               "one), never means.\n")
-    out.extend(cycle_table(rows, before, args.baseline))
+               "one), never means. The column of the optional features off measures the same\n"
+               "firmware against `bench/avr/cycles_minimal_config.h` (`OS_CFG_STACK_CHECK 0`,\n"
+               "`OS_CFG_CLOCK_EVENT 0`, `OS_CFG_HANDLER_LIMIT_MS 0`, `OS_CFG_HANDLER_CONTEXT 0`):\n"
+               "what a robot gains on each path by going without them.\n")
+    out.extend(cycle_table(rows, measure_cycles(FW, "kernel_cycles_minimal"), before, args.baseline))
     out.append("")
     out.append(WHERE_THE_CYCLES_GO)
     out.append("## Footprint\n")
