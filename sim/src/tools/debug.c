@@ -10,8 +10,22 @@
 
 #include "sim.h"
 
+/* The file is tried first here: simavr's own attempt prints its own
+ * message and leaves errno to whatever its cleanup did. */
+static int vcd_writable(const char *path) {
+    FILE *f = fopen(path, "w");
+    if (f == NULL) {
+        fprintf(stderr, "openswarm-sim: --vcd %s: cannot create the file (%s); give a path in a writable folder\n",
+                path, strerror(errno));
+        return 0;
+    }
+    fclose(f);
+    return 1;
+}
+
 static int vcd_open(robot *r, const char *path) {
     avr_t *avr = r->avr;
+    if (!vcd_writable(path)) return -1;
     if (avr_vcd_init(avr, path, &r->vcd, 1000) != 0) {
         fprintf(stderr, "openswarm-sim: --vcd %s: cannot create the file\n", path);
         return -1;
@@ -23,8 +37,7 @@ static int vcd_open(robot *r, const char *path) {
     /* The file is created here: a folder that is missing or not writable
      * fails the run (it ran without a trace, exit 0). */
     if (avr_vcd_start(&r->vcd) != 0) {
-        fprintf(stderr, "openswarm-sim: --vcd %s: cannot create the file (%s); give a path in a writable folder\n",
-                path, strerror(errno));
+        fprintf(stderr, "openswarm-sim: --vcd %s: cannot create the file; give a path in a writable folder\n", path);
         avr_vcd_close(&r->vcd);
         return -1;
     }
