@@ -217,7 +217,10 @@ sent, a thread ended, a stop, the end of a slice), so the tick in the middle of 
 no decision; and the tick checks the running thread's stack guard only when it leads to a
 decision (at least once a slice) instead of every millisecond. Together they take the tick
 with no switch from 303 cycles to 178 (180 since the system program's path: kilolib's setup/loop on the system thread); setting and clearing the flag costs 3 to 24 cycles
-on the paths that do decide (the `before` column). The other targets are not met; what the
+on the paths that do decide (the `before` column). The other targets are not met, and
+going without the optional features would not meet them either (their column: 0 to 51
+cycles a path, the most (47 and 51) on the send and its round trip);
+what the
 cycles are spent on, counted from the disassembly (`avr-objdump -d`):
 
 - **Any interrupt** that may call the kernel is a C handler that calls functions, so avr-gcc
