@@ -142,15 +142,12 @@ def main():
     for key in NEVER:
         worst = max(samples[end][r].get(key, 0) for r in robots)
         expect(worst == 0, f"{key}: {worst} at worst")
-    # Rates over robots that ran an interval through: not reset or browned
-    # out within it (over an hour nearly every robot is reset some time, so
-    # "never reset at all" leaves none), per robot, the second interval's
-    # expected count scaled to its robots.
+    # The robots that ran an interval through: not reset or browned out
+    # within it (over an hour nearly every robot is reset some time, so
+    # "never reset at all" leaves none).
     def steady(since, until):
         return [r for r in robots if r in samples[since] and r in samples[until]
                 and not any(since < t <= until for t in restarts.get(r, []))]
-
-    first_robots, second_robots = steady(quarter, half), steady(three_quarters, end)
 
     # A peak (a high-water mark) only rises. The highest of rare
     # coincidences of interrupts and messages rises ever more slowly, by
@@ -176,6 +173,10 @@ def main():
     expect(not room, f"no main stack reached its room: {room}")
     full = [r for r in robots if samples[end][r]["thread_stack_room"] <= 0]
     expect(not full, f"no thread stack reached its room: {full}")
+    # Rates over the robots that ran each interval through, the second
+    # interval's expected count scaled to its robots.
+    first_robots, second_robots = steady(quarter, half), steady(three_quarters, end)
+
     def gained(key, since, until, rs):
         return sum(samples[until][r].get(key, 0) - samples[since][r].get(key, 0) for r in rs)
 
