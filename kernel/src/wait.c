@@ -4,7 +4,7 @@
  * same event and each is woken with its own copy of the data. */
 #include "kernel_internal.h"
 
-static void settle_timeouts(void);
+static uint32_t settle_timeouts(void);
 
 /* The running thread's timed wait w starts: it ends timeout_ms from now.
  * Out of line, so an untimed wait saves no registers for its 32-bit
@@ -12,6 +12,7 @@ static void settle_timeouts(void);
 static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
     w->deadline = os.now_ms + timeout_ms;
     settle_timeouts(); /* w's may be the nearest deadline now (none is due) */
+    os_tick_look_again(); /* and nearer than the quiet ticks reach */
 }
 
 /* The running thread blocks on w until woken: the status it is woken with
@@ -19,7 +20,7 @@ static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
 static sys_status block_current(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
     if (event != OS_NO_EVENT) { /* a sleep listens to nothing */
         os.event_waiters++;
-        os_listeners_changed();
+        os_listeners_changed(event);
     }
     w->event = event;
     w->timed = timed;
@@ -114,10 +115,11 @@ sys_status Sys_Sleep_Until(uint32_t *wake_ms, uint32_t period_ms) {
 }
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */
-static inline void leave_wait(sys_tcb *t, const os_wait *w) {
-    if (w->event != OS_NO_EVENT) {
+static OS_HOT void leave_wait(sys_tcb *t, const os_wait *w) {
+    sys_event_id event = w->event; /* read once: the byte stores below may alias it */
+    if (event != OS_NO_EVENT) {
         os.event_waiters--;
-        os_listeners_changed();
+        os_listeners_changed(event);
     }
     t->wait = NULL;
 }
@@ -164,7 +166,7 @@ void os_wake_all_waiting_for(sys_event_id event, sys_status status) {
  * Distances to deadlines are taken modulo 2^32 from now, so any 32-bit
  * timeout works; os.timeout_next == now_ms means none is pending (the tick
  * meets that value again only after 2^32 ms, and then finds nothing due). */
-static OS_COLD void settle_timeouts(void) {
+static OS_COLD uint32_t settle_timeouts(void) {
     uint32_t nearest = 0; /* ms from now; 0: none */
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait; /* set exactly while t is blocked */
@@ -176,9 +178,11 @@ static OS_COLD void settle_timeouts(void) {
             nearest = left;
     }
     os.timeout_next = os.now_ms + nearest;
+    return nearest;
 }
 
-/* From the tick, once os.now_ms has advanced. */
-void os_check_timeouts(void) {
-    if (os.now_ms == os.timeout_next) settle_timeouts();
+OS_COLD void os_check_timeouts(void) {
+    uint32_t left = os.timeout_next - os.now_ms;
+    if (left == 0) left = settle_timeouts(); /* the nearest left, 0: none (wraps to 255 too) */
+    os.quiet_ticks = left > UINT8_MAX ? UINT8_MAX : (uint8_t)((uint8_t)left - 1u);
 }
