@@ -210,32 +210,39 @@ def speed(elf, seconds, *extra):
 # instruction timings): static facts of the code, not measurements.
 WHERE_THE_CYCLES_GO = """### Where the cycles go, and which targets are not met
 
-Two changes made the kernel faster without changing what it does (each commit gives its
+Three changes made the kernel faster without changing what it does (each commit gives its
 measured effect): the end of an interrupt decides again only if something a decision reads
 has changed (`os.reconsider`: a thread made ready, a priority or the policy changed, an event
 sent, a thread ended, a stop, the end of a slice), so the tick in the middle of a slice runs
-no decision; and the tick checks the running thread's stack guard only when it leads to a
-decision (at least once a slice) instead of every millisecond. Together they take the tick
-with no switch from 303 cycles to 178 (180 since the system program's path: kilolib's setup/loop on the system thread); setting and clearing the flag costs 3 to 24 cycles
-on the paths that do decide (the `before` column). The other targets are not met, and
-going without the optional features would not meet them either (their column: 0 to 51
-cycles a path, the most (47 and 51) on the send and its round trip);
-what the
-cycles are spent on, counted from the disassembly (`avr-objdump -d`):
+no decision; the tick checks the running thread's stack guard only when it leads to a
+decision (at least once a slice) instead of every millisecond; and most ticks are quiet
+(`os_tick_quiet`, `system_time.c`): a countdown (`os.quiet_ticks`) says how many of the coming
+ticks need no look at the deadlines, the handler watch or the clock event, so a tick that
+does not end the slice either counts the time and the slice and returns from the interrupt
+without `os_isr_enter` and `os_isr_exit`. The first two took the tick with no switch from 303
+cycles to 178 (180 with the system program's path), the third to 101 and the tick that
+switches from 512 to 494; it costs 2 or 3 cycles on the paths that start handlers or wait
+for an event (the `before` column). The other targets are not met, and going without the
+optional features would not meet them either (their column: 0 to 51 cycles a path, the
+most on the send and its round trip); what the cycles are spent on, counted from the
+disassembly (`avr-objdump -d`):
 
 - **Any interrupt** that may call the kernel is a C handler that calls functions, so avr-gcc
   saves and restores the 12 call-clobbered registers, r0, r1 and SREG: with the interrupt's
-  entry (4 cycles), the vector's jump (3) and `reti` (4), about 75 cycles before the kernel
+  entry (4 cycles), the vector's jump (3) and `reti` (4), about 70 cycles before the kernel
   does anything. A thread switch from an interrupt then saves the 18 callee-saved registers in
   `port_switch` (100 cycles thread to thread, the first row): all 32 registers and SREG
   change hands, as in FreeRTOS's port, which saves them in one place.
-- **Tick with no switch (180, target 150):** besides those 75, the 32-bit system time
-  (`os.now_ms++`: 20), the nearest deadline compared with it (14), the slice count (18), the
-  interrupt-nesting count in and out (10), the handler watchdog and the clock event's
-  listener test (`OS_CFG_HANDLER_LIMIT_MS`, `OS_CFG_CLOCK_EVENT`: 13) and the call to
-  `os_isr_exit` (15). Each is a feature (exact 32-bit time and timeouts, slices, the handler
-  watchdog, the clock event); meeting 150 would take a tick written in assembly that reads
-  the kernel's state, which the port boundary (kernel state private to `kernel/`) forbids.
+- **Tick with no switch (101, target 150: met):** besides those 70, the quiet countdown's
+  test and decrement (7), the slice's test and count (16: every tick counts it, so a slice
+  ends on its tick whatever the countdown says), the time's lowest byte (6: the other three
+  take the carry once in 256 ticks, out of line) and the jump out (2). The tick's interrupt
+  still saves every call-clobbered register: the ticks that are not quiet call the kernel,
+  and avr-gcc saves them at the interrupt's entry either way. A tick that is not quiet (the
+  end of a slice, or the countdown run out: at the nearest deadline, every tick while
+  handlers run or the clock event has a listener, and at least every 256 ticks) does what
+  every tick did before, in `os_tick`, less the deadlines, the handler watch and the clock
+  event when only the slice ended.
 - **Sys_Yield (target 200):** `port_switch` is 100 of it; the kernel's part (about 130 for
   2 threads) is the checks a yield must make (in a thread, not in an interrupt or a critical
   section; the system thread has no work; someone is ready: 25), the stack guard (18), the
@@ -243,7 +250,9 @@ cycles are spent on, counted from the disassembly (`avr-objdump -d`):
   time: about 35 with round robin's walk to the tail, more with more threads: the 4-thread
   row), the ready list's head and a fresh slice (20), the switch count (12) and the calls'
   register saves (18).
-- **Tick to another thread (target 300):** the tick above, then the general decision
+- **Tick to another thread (target 300):** the tick that ends the slice (the quiet test that
+  fails, `os_isr_enter`, `os_tick`: the time, the countdown, the slice's count and the stack
+  guard), then the general decision
   (`os_decide`: the event queue, the system thread's work, the slice, the policy's
   `insert`), the switch count and `port_switch`, then the other thread's way back out of its
   own interrupt or call chain.
@@ -260,8 +269,9 @@ cycles are spent on, counted from the disassembly (`avr-objdump -d`):
   system stack, without the switch; the round trip adds `Sys_Send_Event`'s checks and the
   decision a thread's send makes.
 - **Flash (target 2560 bytes for the app with 2 user threads):** not met and not worked on
-  here; the Footprint section shows the optional features' share and where the code goes
-  by source file.
+  here; the quiet tick added about 170 bytes (two ways through the tick: the interrupt's
+  own test and count, and `os_tick` with the look split out of line). The Footprint section
+  shows the optional features' share and where the code goes by source file.
 
 """
 
@@ -454,7 +464,8 @@ def main():
     # The tick's interrupt and the kernel and port functions it calls (which
     # of them stand alone depends on what link-time optimisation inlined);
     # with tickless idle, the alarm's interrupt and the wake-up's count.
-    tick_functions = ("__vector_14", "kilobot_tick", "os_tick", "os_isr_exit")
+    tick_functions = ("__vector_14", "kilobot_tick", "os_tick", "count_slice_and_check_guard",
+                      "os_check_timeouts", "carry_time", "os_isr_exit")
     alarm_functions = ("__vector_11", "port_tickless_wake", "kilobot_tickless_stop", "os_ticks_slept")
     seconds = 2
     at_rest = {}

@@ -119,7 +119,7 @@ static void pack_subscriptions(void) {
 /* A subscription ends: its entry is marked. */
 static OS_HOT void unsubscribe(subscription *sub) {
     sub->handler = NULL;
-    os_listeners_changed();
+    os_listeners_changed(sub->event);
 }
 
 /* Remove the subscriptions matching (event or any, pid or any). */
@@ -127,7 +127,7 @@ static void remove_subscriptions(sys_event_id event, bool any_event, sys_pid pid
     for (subscription *sub = subs; sub != subs_end; sub++) {
         if ((any_event || sub->event == event) && (any_pid || sub->pid == pid)) sub->handler = NULL;
     }
-    os_listeners_changed();
+    os_listeners_changed(any_event ? SYS_EVENT_1MS_TIMER : event); /* any: the clock's too */
 }
 
 sys_status Sys_Unregister_Event(sys_event_id event) {
@@ -203,7 +203,7 @@ static sys_status subscribe(sys_event_id event, sys_pid pid, sys_event_handler h
         sub->with = with;
         sub->event = event;
         sub->pid = pid;
-        os_listeners_changed();
+        os_listeners_changed(event);
     }
     port_irq_restore(s);
     return st;
@@ -282,6 +282,9 @@ static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding w
 void os_run_handlers(const sys_event_data *data) {
     const subscription *end = subs_end; /* later subscriptions wait for the next occurrence */
     os.handling_event = (uint8_t)(data->event + 1u);
+#if OS_CFG_HANDLER_LIMIT_MS
+    os_tick_look_again(); /* the watch counts every tick while handlers run */
+#endif
     for (subscription *sub = subs; sub != end; sub++) {
         sys_event_handler handler = sub->handler;
         if (handler != NULL && sub->event == data->event) {

@@ -82,6 +82,12 @@ typedef struct os_kernel {
 #if OS_CFG_HANDLER_LIMIT_MS
     uint16_t handler_ms; /* ticks the running handler has taken so far */
 #endif
+    /* How many of the coming ticks need no look at the deadlines, the
+     * handler watch or the clock event: the tick counts them down and,
+     * if the slice does not end either, does nothing else (system_time.c). */
+#if OS_CFG_QUIET_TICK
+    uint8_t quiet_ticks;
+#endif
     uint8_t event_waiters; /* threads blocked on an event: none means no waiter scan */
     uint8_t lock_depth; /* critical-section nesting of the running thread */
     uint8_t isr_depth;
@@ -119,15 +125,32 @@ static OS_HOT bool os_system_work_pending(void) {
     return work != 0;
 }
 
-/* Handlers or waiters may have come or gone: the next tick asks again
- * whether the 1 ms clock event has any (instead of every millisecond). */
+/* Something the quiet ticks were reckoned from changed (a new deadline,
+ * handlers start, the clock event's listeners): the next tick looks. */
+#if OS_CFG_QUIET_TICK
+static OS_HOT void os_tick_look_again(void) { os.quiet_ticks = 0; }
+/* The rest of the tick is out of line, so the quiet tick's interrupt saves
+ * no registers for it; without the quiet tick it is inlined (less flash). */
+#define OS_TICK_COLD OS_COLD
+#else
+static OS_HOT void os_tick_look_again(void) {}
+#define OS_TICK_COLD
+#endif
+
+/* Handlers or waiters of event may have come or gone: if it is the 1 ms
+ * clock event, the next tick asks again whether it has any (instead of
+ * every millisecond; system_time.c). */
 #if OS_CFG_CLOCK_EVENT
 #define OS_CLOCK_UNKNOWN 0u /* what a reset leaves: ask at the next tick */
 #define OS_CLOCK_UNHEARD 1u
 #define OS_CLOCK_HEARD 2u
-static OS_HOT void os_listeners_changed(void) { os.clock_listeners = OS_CLOCK_UNKNOWN; }
+static OS_HOT void os_listeners_changed(sys_event_id event) {
+    if (event != SYS_EVENT_1MS_TIMER) return;
+    os.clock_listeners = OS_CLOCK_UNKNOWN;
+    os_tick_look_again();
+}
 #else
-static OS_HOT void os_listeners_changed(void) {}
+static OS_HOT void os_listeners_changed(sys_event_id event) { (void)event; }
 #endif
 
 /* process.c */
@@ -234,6 +257,9 @@ void os_dispatch_on_system_stack(void);
 void os_wake_waiters(const sys_event_data *data);
 void os_wait_abandon(sys_tcb *t); /* t stops waiting: woken or killed */
 void os_wake_all_waiting_for(sys_event_id event, sys_status status);
+/* From a tick that looks, once os.now_ms has advanced: the waits whose
+ * deadline came end, and the quiet ticks are those before the nearest
+ * deadline left, as far as a byte counts. */
 void os_check_timeouts(void);
 
 /* system_time.c: the system thread has nothing to run; it sleeps until

@@ -12,6 +12,7 @@ static void settle_timeouts(void);
 static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
     w->deadline = os.now_ms + timeout_ms;
     settle_timeouts(); /* w's may be the nearest deadline now (none is due) */
+    os_tick_look_again(); /* and nearer than the quiet ticks reach */
 }
 
 /* The running thread blocks on w until woken: the status it is woken with
@@ -19,7 +20,7 @@ static OS_COLD void start_timeout(os_wait *w, uint32_t timeout_ms) {
 static sys_status block_current(os_wait *w, sys_event_id event, bool timed, uint32_t timeout_ms) {
     if (event != OS_NO_EVENT) { /* a sleep listens to nothing */
         os.event_waiters++;
-        os_listeners_changed();
+        os_listeners_changed(event);
     }
     w->event = event;
     w->timed = timed;
@@ -114,10 +115,11 @@ sys_status Sys_Sleep_Until(uint32_t *wake_ms, uint32_t period_ms) {
 }
 
 /* The thread stops waiting (woken, or killed): it no longer counts. */
-static inline void leave_wait(sys_tcb *t, const os_wait *w) {
-    if (w->event != OS_NO_EVENT) {
+static OS_HOT void leave_wait(sys_tcb *t, const os_wait *w) {
+    sys_event_id event = w->event; /* read once: the byte stores below may alias it */
+    if (event != OS_NO_EVENT) {
         os.event_waiters--;
-        os_listeners_changed();
+        os_listeners_changed(event);
     }
     t->wait = NULL;
 }
@@ -178,7 +180,10 @@ static OS_COLD void settle_timeouts(void) {
     os.timeout_next = os.now_ms + nearest;
 }
 
-/* From the tick, once os.now_ms has advanced. */
-void os_check_timeouts(void) {
+OS_TICK_COLD void os_check_timeouts(void) {
     if (os.now_ms == os.timeout_next) settle_timeouts();
+#if OS_CFG_QUIET_TICK
+    uint32_t left = os.timeout_next - os.now_ms; /* to the nearest deadline; 0: none (wraps to 255) */
+    os.quiet_ticks = left > UINT8_MAX ? UINT8_MAX : (uint8_t)((uint8_t)left - 1u);
+#endif
 }

@@ -158,6 +158,41 @@ static void priority_setup(void) {
     Sys_Start_Process_Ex(spinner, (void *)&spins[0], 0, 0, NULL);
 }
 
+/* ---- time ---- */
+
+/* Most ticks count the time and the slice and look no further (the quiet
+ * ticks, system_time.c); here every tick interrupts one of two spinning
+ * threads. A 300 ms sleep crosses the clock's lowest byte and ends on
+ * time; a 5 ms sleep started then, while the next deadline (the far
+ * sleeper's) is 700 ms away, ends on time too; the slices turn meanwhile.
+ * The control thread outranks the spinners: it reads the time as it wakes. */
+static void far_sleeper(void *arg) {
+    (void)arg;
+    Sys_Sleep(1000);
+}
+
+static void time_control(void *arg) {
+    (void)arg;
+    uint32_t t0 = Sys_Get_SystemTime();
+    uint32_t switches0 = Sys_Get_SwitchCount();
+    Sys_Sleep(300);
+    CHECK_EQ(t0 + 300, Sys_Get_SystemTime());
+    Sys_Sleep(5);
+    CHECK_EQ(t0 + 305, Sys_Get_SystemTime());
+    CHECK(Sys_Get_SwitchCount() - switches0 >= 300 / OS_CFG_TIME_SLICE_MS);
+    CHECK(spins[0] > 0 && spins[1] > 0);
+    finish();
+}
+
+static void time_setup(void) {
+    spins[0] = spins[1] = 0;
+    Sys_Set_Scheduler(&sys_scheduler_priority);
+    Sys_Start_Process_Ex(time_control, NULL, CONTROL_STACK, 2, NULL);
+    Sys_Start_Process_Ex(far_sleeper, NULL, 0, 1, NULL);
+    Sys_Start_Process_Ex(spinner, (void *)&spins[0], 0, 0, NULL);
+    Sys_Start_Process_Ex(spinner, (void *)&spins[1], 0, 0, NULL);
+}
+
 /* ---- events and waiting ---- */
 
 static bool record_handler(sys_pid pid, sys_event_id e, const sys_event_data *d) {
@@ -512,6 +547,7 @@ int main(void) {
     RUN(preempt);
     RUN(reap);
     RUN(priority);
+    RUN(time);
     RUN(events);
     RUN(wait);
     RUN(context);

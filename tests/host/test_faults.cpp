@@ -1,6 +1,7 @@
 // Stack overflow detection: the guard is checked at every scheduling decision
-// a thread makes and at every tick; a broken one is reported by the port,
-// through the fault hook and through SYS_EVENT_FAULT.
+// a thread makes and at every tick that leads to one; a broken one is
+// reported by the port, through the fault hook and through SYS_EVENT_FAULT.
+// And the watch on handlers that never return.
 #include "kernel_fixture.hpp"
 
 #include <cstring>
@@ -149,6 +150,49 @@ TEST_F(Faults, AThreadWithinItsStackRaisesNoFault) {
     EXPECT_EQ(49, depth.load());
     EXPECT_EQ(0, hook_calls.load());
     EXPECT_EQ(0u, stats().stack_overflows);
+}
+
+// A handler that never returns is reported once, when it has run
+// OS_CFG_HANDLER_LIMIT_MS ticks: counted from its start, although the tick
+// had counted ahead without looking (no deadline in sight) when it began.
+// The real-time clock: the manual one waits for each tick's end, which a
+// spinning handler never lets come.
+TEST_F(Faults, AHandlerOverrunIsReportedAtTheLimitFromItsStart) {
+    testing::internal::CaptureStderr(); // the host port reports faults there
+    static std::atomic<bool> release;
+    static std::atomic<uint32_t> began, reported;
+    release = false;
+    began = reported = 0;
+    hook_calls = 0;
+    boot(
+        [&] {
+            Sys_Set_FaultHook([](sys_fault f, sys_pid) {
+                if (f == SYS_FAULT_HANDLER_OVERRUN) reported = Sys_Get_SystemTime();
+                hook_calls++;
+            });
+            Sys_Register_Event(EV_A);
+            Sys_Subscribe_to_Event(EV_A, SYS_PID_SYSTEM,
+                                   [](sys_pid, sys_event_id, const sys_event_data *) {
+                                       began = Sys_Get_SystemTime();
+                                       while (!release) {
+                                       }
+                                       return true;
+                                   },
+                                   nullptr);
+            spawn([] {
+                Sys_Sleep(300);
+                Sys_Send_Event(EV_A, nullptr, 0);
+            });
+        },
+        HOST_CLOCK_REALTIME);
+    EXPECT_TRUE(eventually([&] { return reported != 0; }));
+    release = true;
+    EXPECT_GE(began.load(), 300u);
+    EXPECT_EQ(uint32_t{OS_CFG_HANDLER_LIMIT_MS}, reported - began);
+    EXPECT_EQ(1, hook_calls.load()) << "said once";
+    EXPECT_EQ(1u, stats().handler_overruns);
+    power_off();
+    testing::internal::GetCapturedStderr();
 }
 
 // The names the ports' consoles print ("kernel fault: stack overflow in

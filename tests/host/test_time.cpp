@@ -126,6 +126,49 @@ TEST_F(Time, DeadlinesStayExactAsWaitsComeAndGo) {
     EXPECT_EQ("c-timeout@2 c-event@5 b@7 a@10 c@11", joined());
 }
 
+// Most ticks count the time alone, up to the next one a deadline needs, a
+// byte's worth at most (system_time.c): the time and far deadlines stay
+// exact across as many of those as they take, and the clock across its
+// lowest byte's wraps (at 256, 512, 768, 1024 and 1280).
+TEST_F(Time, FarDeadlinesAndTheTimeStayExactPastWhatAByteCounts) {
+    const uint32_t durations[] = {255, 256, 257, 600};
+    boot([&] {
+        spawn([&] {
+            for (uint32_t ms : durations) {
+                uint32_t before = Sys_Get_SystemTime();
+                Sys_Sleep(ms);
+                uint32_t now = Sys_Get_SystemTime();
+                note(std::to_string(now - before) + "@" + std::to_string(now));
+            }
+        });
+    });
+    settle();
+    ticks(1368);
+    EXPECT_EQ("255@255 256@511 257@768 600@1368", joined());
+    uint32_t now = 0;
+    irq([&] { now = Sys_Get_SystemTime(); });
+    EXPECT_EQ(1368u, now);
+}
+
+// A deadline sooner than the next one the tick expects: at 300, the tick
+// that ends b's sleep finds the next deadline (a's) 700 ms away and counts
+// the ticks up to a byte's worth without looking; b's 5 ms sleep, started
+// then, still ends at 305.
+TEST_F(Time, ASleepStartedWhenTheNextDeadlineIsFarEndsOnTime) {
+    boot([&] {
+        spawn([] { Sys_Sleep(1000); });
+        spawn([] {
+            Sys_Sleep(300);
+            note("woke@" + std::to_string(Sys_Get_SystemTime()));
+            Sys_Sleep(5);
+            note("slept@" + std::to_string(Sys_Get_SystemTime()));
+        });
+    });
+    settle();
+    ticks(320);
+    EXPECT_EQ("woke@300 slept@305", joined());
+}
+
 TEST_F(Time, SleepZeroReturnsAtOnceAndSleepOutsideAThreadIsRefused) {
     sys_status in_setup = SYS_OK, in_irq = SYS_OK, zero = SYS_E_INVALID;
     boot([&] {

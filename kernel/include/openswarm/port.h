@@ -97,6 +97,12 @@ void os_isr_enter(void);
 void os_isr_exit(void);
 /* One 1 ms tick; call between os_isr_enter and os_isr_exit. */
 void os_tick(void);
+/* The 1 ms tick, if it needs nothing but the time and the slice's count
+ * (most do): it is counted and true is returned, and the interrupt needs
+ * neither os_isr_enter nor os_isr_exit. Otherwise nothing is done and
+ * false returned: call os_isr_enter, os_tick and os_isr_exit. Interrupts
+ * masked. */
+bool os_tick_quiet(void);
 /* ticks that passed while the tick was stopped by port_idle_for, credited
  * at once (interrupts masked, the system thread idle): the time advances
  * by ticks and waits whose deadline came meanwhile end. A port that sleeps

@@ -59,7 +59,8 @@ static bool service_batch(void) {
     bool stop = atomic_exchange(&pending_stop, false);
     if (ticks == 0 && !isr && !stop) return false;
     os_isr_enter();
-    while (ticks-- != 0) os_tick();
+    while (ticks-- != 0)
+        if (!os_tick_quiet()) os_tick(); /* the quiet way when it can, as a robot's tick */
     if (isr) isr_fn(isr_arg);
     if (stop) Sys_Stop_Kernel();
     os_isr_exit(); /* may switch threads; we continue when resumed */
