@@ -223,8 +223,8 @@ without `os_isr_enter` and `os_isr_exit`. The first two took the tick with no sw
 cycles to 178 (180 with the system program's path), the third to 101 and the tick that
 switches from 512 to 494; it costs 2 or 3 cycles on the paths that start handlers or wait
 for an event (the `before` column). The other targets are not met, and going without the
-optional features would not meet them either (their column: 0 to 51 cycles a path, the
-most on the send and its round trip); what the cycles are spent on, counted from the
+optional features would not meet them either (their column: 0 to 52 cycles a path, the
+most (48 and 52) on the send and its round trip); what the cycles are spent on, counted from the
 disassembly (`avr-objdump -d`):
 
 - **Any interrupt** that may call the kernel is a C handler that calls functions, so avr-gcc
@@ -256,22 +256,32 @@ disassembly (`avr-objdump -d`):
   (`os_decide`: the event queue, the system thread's work, the slice, the policy's
   `insert`), the switch count and `port_switch`, then the other thread's way back out of its
   own interrupt or call chain.
-- **Interrupt to a woken thread (target 350):** the interrupt's send holds the occurrence
-  (no copy into the queue), but the waiter is woken by the dispatch, which runs as the system
-  thread on its own stack (`port_call_on_system_stack`): the queue is popped, every thread
-  slot is looked at for a waiter (6 slots here), the waiter is made ready through the policy,
-  the handler table is scanned, and only then the decision switches to the waiter, which
-  returns through its wait's calls (`Sys_Wait_for_Event`, `wait_for`, `block`,
-  `block_current`, `os_schedule`, `os_decide`), each restoring the registers it saved.
-  The semantics cost this: waiters and handlers of one occurrence are served in one
-  dispatch, in order, on the system thread, never in the interrupt.
+- **Interrupt to a woken thread (target 350):** measured step by step with markers in a
+  scratch build (the CPU idle): the interrupt's entry and `Sys_Send_Event`'s checks (65), the
+  send holding the occurrence (55: no copy into the queue), the interrupt's end and the
+  system thread's way to its dispatch (108), the dispatch's pop, its look at every thread slot
+  for a waiter (6 slots here), the copy and the waiter made ready through the policy (280),
+  the handler table's scan (21), the way back to the decision (65), the decision (66),
+  `port_switch` (123 with the switch count) and the waiter's return through its wait's calls
+  (12). The semantics cost most of it: waiters and handlers of one occurrence are served in
+  one dispatch, in order, on the system thread, never in the interrupt; any number of threads
+  may wait for one event, each woken with its own copy. Waking the waiters in the send
+  instead, when nothing needs the system thread (no handler, no waiter's condition, nothing
+  queued before it), was tried and measured **slower**: 870 cycles, as telling whether an
+  occurrence needs the system thread took 156 (a scan of the waiters for a condition, one
+  of the handlers) while the wake itself stayed (branch `inplace-wake-experiment`). 350
+  would need the waiters found without a scan: a list of them per event (2 bytes more per
+  event slot, past the 4-byte target) and a count of the handlers per event.
 - **Interrupt to handler, send round trip (targets 250, 350):** the same dispatch on the
   system stack, without the switch; the round trip adds `Sys_Send_Event`'s checks and the
   decision a thread's send makes.
-- **Flash (target 2560 bytes for the app with 2 user threads):** not met and not worked on
-  here; the quiet tick added about 170 bytes (two ways through the tick: the interrupt's
-  own test and count, and `os_tick` with the look split out of line). The Footprint section
-  shows the optional features' share and where the code goes by source file.
+- **Flash (target 2560 bytes for the app with 2 user threads):** not met; the quiet tick
+  added about 200 bytes (3696 before it, 3892 with it: two ways through the tick, the
+  interrupt's own test and count and `os_tick` with the look split out of line), which
+  `OS_CFG_QUIET_TICK 0` gives back at the tick's old 180 cycles. Without the optional
+  features (the quiet tick kept) the kernel is still 2850 bytes with one user thread (the Footprint section): the
+  target needs about a third less code, not fewer features. The Footprint section shows
+  where the code goes by source file.
 
 """
 
