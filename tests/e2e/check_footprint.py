@@ -125,7 +125,7 @@ def main():
                       open(os.path.join(root, "docs", "benchmarks.md")).read(), re.M)
     if not bench or tuple(map(int, bench.groups())) != (c, t, e):
         fail(f"C + {t} n + {e} m with C = {c} disagrees with docs/benchmarks.md's equation; "
-             "update footprint.cpp after a benchmark run")
+             "update costs_for in cli/src/ports.cpp after a benchmark run")
     # The per-event cost is the event table's bytes per slot in the link map.
     link_map = open(os.path.join(app, "build", port + "-size", "link.map")).read()
     # (a global without initialiser: listed among the common symbols)
