@@ -221,7 +221,7 @@ ticks need no look at the deadlines, the handler watch or the clock event, so a 
 does not end the slice either counts the time and the slice and returns from the interrupt
 without `os_isr_enter` and `os_isr_exit`. The first two took the tick with no switch from 303
 cycles to 178 (180 with the system program's path), the third to 101 and the tick that
-switches from 512 to 494; it costs 2 or 3 cycles on the paths that start handlers or wait
+switches from 512 to 495; it costs 2 to 4 cycles on the paths that start handlers or wait
 for an event (the `before` column). The other targets are not met, and going without the
 optional features would not meet them either (their column: 0 to 52 cycles a path, the
 most (48 and 52) on the send and its round trip); what the cycles are spent on, counted from the
