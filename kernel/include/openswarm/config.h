@@ -53,9 +53,10 @@
 /* The quiet tick: most ticks need nothing but the time and the slice's
  * count, so a countdown of the coming ticks that need no more lets them
  * return at once (os_tick_quiet: 101 cycles a tick on the Kilobot instead
- * of 180, for about 170 bytes of flash). On wherever threads run; with the
- * system thread alone (kilolib's programs) off by default: no slice to
- * count, and kilolib's clock hook takes every tick the full way anyway. */
+ * of 180, for about 200 bytes of flash and 1 of RAM). On wherever threads
+ * run; with the system thread alone (kilolib's programs) off by default:
+ * no slice to count, and kilolib's clock hook takes every tick the full
+ * way anyway. */
 #ifndef OS_CFG_QUIET_TICK
 #define OS_CFG_QUIET_TICK (OS_CFG_MAX_THREADS > 1)
 #endif
