@@ -126,12 +126,27 @@ void os_schedule(void) {
     os_decide();
 }
 
+/* The running thread cur - its guard checked, no work for the system
+ * thread, someone ready - goes back to the ready list through the policy
+ * and the head runs (cur again if it still comes first). os_make_ready
+ * and switch_to spelled out (a running thread is never NEW, and no yield
+ * request is pending here): calling them costs 44 more cycles a yield
+ * (bench/avr_bench.py). */
+static OS_HOT void rotate(sys_tcb *cur) {
+    cur->state = SYS_PROCESS_READY;
+    cur->next = NULL;
+    os.policy->insert(&os.ready, cur);
+    sys_tcb *next = ready_pop();
+    next->state = SYS_PROCESS_RUNNING;
+    if (next == cur) return;
+    count_switch();
+    os.current = next;
+    port_switch(&cur->ctx, &next->ctx);
+}
+
 /* Sys_Yield: a running thread outside any critical section, interrupts
  * masked. The common case - nothing for the system thread to do, someone
- * ready - rotates directly; anything else takes the general decision.
- * The rotation spells out os_make_ready and switch_to (a running
- * thread is never NEW, and this path sets no yield request): calling them
- * costs 44 more cycles a yield (bench/avr_bench.py). */
+ * ready - rotates directly; anything else takes the general decision. */
 void os_yield(void) {
     sys_tcb *cur = os.current;
     if (os.ready == NULL || os_system_work_pending() || !os_stack_guard_intact(cur)) {
@@ -140,15 +155,25 @@ void os_yield(void) {
         os.yield_requested = false;
         return;
     }
-    cur->state = SYS_PROCESS_READY;
-    cur->next = NULL;
-    os.policy->insert(&os.ready, cur);
-    sys_tcb *next = ready_pop();
-    next->state = SYS_PROCESS_RUNNING;
-    if (next == cur) return; /* it still comes first (a higher priority) */
-    count_switch();
-    os.current = next;
-    port_switch(&cur->ctx, &next->ctx);
+    rotate(cur);
+}
+
+/* May the tick that ends the running thread's slice take the plain way
+ * (os_slice_over)? A user thread runs outside any critical section, no
+ * interrupt is nested, its guard is intact, the system thread has no work
+ * and someone is ready: the general decision would rotate. Reads only. */
+bool os_slice_end_is_plain(void) {
+    sys_tcb *cur = os.current;
+    return os.isr_depth == 0 && cur != OS_SYSTEM && os.lock_depth == 0 && os.ready != NULL &&
+           !os_system_work_pending() && os_stack_guard_intact(cur);
+}
+
+/* The slice ended (counted by the tick) on the plain way: the decision
+ * the end of the tick's interrupt would take, without the interrupt's
+ * entry, the general tick and the general decision around it. */
+void os_slice_over(void) {
+    os.reconsider = false; /* this decision sees every change */
+    rotate(os.current);
 }
 
 /* With the tick stopped (tickless idle), the port first credits the time

@@ -107,16 +107,33 @@ OS_TICK_COLD void os_tick(void) {
     look_at_handlers_and_clock();
 }
 
+#if OS_CFG_QUIET_TICK
+/* A quiet tick that ends the slice, when the decision it leads to is a
+ * plain rotation: counted, then rotated. Out of line: the common quiet
+ * tick's interrupt then saves no more registers. */
+static OS_COLD bool tick_ending_slice(void) {
+    if (!os_slice_end_is_plain()) return false;
+    os.quiet_ticks--;
+    os.slice_left = 0;
+    advance_time();
+    os_slice_over();
+    return true;
+}
+#endif
+
 /* Most ticks need nothing but the time and the slice's count: no deadline
  * comes, no handler runs, the clock event has no listener and the slice
  * does not end. The end of such a tick's interrupt has no decision to
  * take either (a thread outside a critical section has none pending;
  * inside one, or on the system thread, the end of an interrupt takes
- * none), so it needs no os_isr_enter/os_isr_exit. */
+ * none), so it needs no os_isr_enter/os_isr_exit. The tick that ends a
+ * slice takes this way too when the decision is a plain rotation
+ * (tick_ending_slice). */
 bool os_tick_quiet(void) {
 #if OS_CFG_QUIET_TICK
     uint16_t slice = os.slice_left;
-    if (os.quiet_ticks == 0 || slice == 1) return false;
+    if (os.quiet_ticks == 0) return false;
+    if (slice == 1) return tick_ending_slice();
     os.quiet_ticks--;
     if (slice != 0) os.slice_left = slice - 1u; /* 0: over, or nobody's */
     advance_time();

@@ -58,6 +58,9 @@ static bool service_batch(void) {
     bool isr = atomic_exchange(&pending_isr, false);
     bool stop = atomic_exchange(&pending_stop, false);
     if (ticks == 0 && !isr && !stop) return false;
+    /* A lone tick takes a robot's way: quiet, or the end of a slice that
+     * rotates at once (which may switch threads: we continue when resumed). */
+    if (ticks == 1 && !isr && !stop && os_tick_quiet()) return true;
     os_isr_enter();
     while (ticks-- != 0)
         if (!os_tick_quiet()) os_tick(); /* the quiet way when it can, as a robot's tick */
