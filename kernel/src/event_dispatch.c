@@ -27,7 +27,7 @@ static sys_event_data occurrence;
  * of a thread, the rest is dispatched by the system thread before that
  * thread runs on.) */
 void os_dispatch_all(void) {
-    while (!os_event_queue_empty() && !os.reap_pending) {
+    while (!os_event_queue_empty() && !os_reap_pending()) {
         if (!os_event_queue_pop(&occurrence)) continue;
         os_wake_waiters(&occurrence);
         os_run_handlers(&occurrence);

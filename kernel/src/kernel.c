@@ -33,8 +33,8 @@ void Sys_Start_Kernel(void) {
 
 void Sys_Run_SystemThread(void) {
     port_irq_disable();
-    while (!os.stop_requested) {
-        if (os.reap_pending) {
+    while ((os.system_work & OS_WORK_STOP) == 0) {
+        if (os_reap_pending()) {
             os_reap_zombies();
         } else if (!os_event_queue_empty()) {
             os_dispatch_all();
@@ -45,13 +45,13 @@ void Sys_Run_SystemThread(void) {
             if (!os_decide()) os_idle(); /* nobody else can run */
         }
     }
-    os.stop_requested = false;
+    os.system_work &= (uint8_t)~OS_WORK_STOP;
     port_irq_enable();
 }
 
 void Sys_Stop_Kernel(void) {
     port_irq_state_t s = port_irq_save();
-    os.stop_requested = true;
+    os.system_work |= OS_WORK_STOP;
     os.reconsider = true;
     os_schedule();
     port_irq_restore(s);

@@ -69,6 +69,7 @@ typedef struct os_kernel {
     sys_tcb threads[OS_CFG_MAX_THREADS]; /* [0] is the system thread */
     sys_tcb *current;
     sys_tcb *ready;     /* ordered by the scheduling policy */
+    sys_tcb *ready_tail; /* its last thread, while it has one (scheduler.c) */
     sys_tcb *preempted; /* thread to resume once the system thread's work is done */
     const sys_scheduler *policy;
     uint32_t now_ms;
@@ -99,8 +100,7 @@ typedef struct os_kernel {
      * middle of a slice, then costs no decision. Set by whoever changes
      * these, cleared by the decision that sees them. */
     bool reconsider;
-    bool reap_pending;
-    bool stop_requested;
+    uint8_t system_work; /* OS_WORK_*: one byte, so a decision reads both at once */
     /* The system thread runs its program (Sys_Run_SystemProgram), not the
      * kernel's work: what is sent meanwhile is dispatched at once. */
     bool program_running;
@@ -118,10 +118,15 @@ extern sys_stats os_stats;
 
 static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
 
+/* The system thread's work besides the events (os.system_work). */
+#define OS_WORK_REAP 1u /* a thread ended: its slot and stack to free */
+#define OS_WORK_STOP 2u /* Sys_Stop_Kernel: the system thread returns */
+static OS_HOT bool os_reap_pending(void) { return (os.system_work & OS_WORK_REAP) != 0; }
+
 /* Has the system thread work to do (on every scheduling decision)? */
 static OS_HOT bool os_system_work_pending(void) {
     uint8_t work = (uint8_t)(os.queued_bytes | os.held_event);
-    work |= (uint8_t)((uint8_t)os.reap_pending | (uint8_t)os.stop_requested);
+    work |= os.system_work;
     return work != 0;
 }
 

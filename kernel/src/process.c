@@ -77,7 +77,7 @@ static void make_zombie(sys_tcb *t) {
     }
     os_subscriptions_remove_thread(t->pid);
     t->state = SYS_PROCESS_ZOMBIE;
-    os.reap_pending = true;
+    os.system_work |= OS_WORK_REAP;
     os.reconsider = true;
 }
 
@@ -101,7 +101,7 @@ void os_reap_zombies(void) {
         /* 0xFF means "none": only slot 15, with 16 threads, could get it */
         if (OS_CFG_MAX_THREADS == 16 && t->pid == SYS_PID_NONE) t->pid = (sys_pid)(t->pid + 0x10u);
     }
-    os.reap_pending = false;
+    os.system_work &= (uint8_t)~OS_WORK_REAP;
 }
 
 sys_status Sys_Kill_Process(sys_pid pid) {

@@ -21,25 +21,44 @@ void os_scheduler_reset(void) {
     os.slice_left = 0; /* nobody holds a slice: the first thread popped gets one */
 }
 
+/* t (its next NULL) joins the ready list where the policy says. Round
+ * robin (the default) queues it after os.ready_tail, in the same few
+ * cycles however many threads are ready, without its policy's walk. */
+static OS_HOT void ready_insert(sys_tcb *t) {
+    if (os.policy != &sys_scheduler_round_robin) {
+        os.policy->insert(&os.ready, t);
+        if (t->next != NULL) return;
+    } else if (os.ready == NULL) {
+        os.ready = t;
+    } else {
+        os.ready_tail->next = t;
+    }
+    os.ready_tail = t;
+}
+
 void os_make_ready(sys_tcb *t) {
     if (t->state != SYS_PROCESS_NEW) t->state = SYS_PROCESS_READY;
     t->next = NULL;
-    os.policy->insert(&os.ready, t);
+    ready_insert(t);
     os.reconsider = true;
 }
 
 void os_ready_remove(sys_tcb *t) {
+    sys_tcb *prev = NULL;
     for (sys_tcb **link = &os.ready; *link != NULL; link = &(*link)->next) {
         if (*link == t) {
             *link = t->next;
+            if (os.ready_tail == t) os.ready_tail = prev; /* NULL: the list is empty */
             t->next = NULL;
             return;
         }
+        prev = *link;
     }
 }
 
 /* The head leaves the ready list; its stale next is cleared when it is
- * queued again (os_make_ready). */
+ * queued again (os_make_ready). os.ready_tail is left as it is: read only
+ * while the list is not empty. */
 static OS_HOT sys_tcb *ready_pop(void) {
     sys_tcb *t = os.ready;
     if (t != NULL) {
@@ -126,17 +145,39 @@ void os_schedule(void) {
     os_decide();
 }
 
+/* Round robin's rotation in one step: the head leaves the ready list and
+ * cur (running, so in no list) is queued at the tail. Someone is ready. */
+static OS_HOT sys_tcb *ready_rotate(sys_tcb *cur) {
+    sys_tcb *first = os.ready;
+    sys_tcb *rest = first->next;
+    cur->next = NULL;
+    if (rest == NULL) {
+        os.ready = cur;
+    } else {
+        os.ready = rest;
+        os.ready_tail->next = cur;
+    }
+    os.ready_tail = cur;
+    os.slice_left = os.slice_ms; /* a fresh turn */
+    return first;
+}
+
 /* The running thread cur - its guard checked, no work for the system
  * thread, someone ready - goes back to the ready list through the policy
- * and the head runs (cur again if it still comes first). os_make_ready
- * and switch_to spelled out (a running thread is never NEW, and no yield
- * request is pending here): calling them costs 44 more cycles a yield
- * (bench/avr_bench.py). */
+ * and the head runs (cur again if it still comes first): the decision
+ * os_decide would take, without its general checks. switch_to is spelled
+ * out (no yield request is pending here): calling it, and os_make_ready
+ * for round robin, cost 44 more cycles a yield (bench/avr_bench.py). */
 static OS_HOT void rotate(sys_tcb *cur) {
     cur->state = SYS_PROCESS_READY;
-    cur->next = NULL;
-    os.policy->insert(&os.ready, cur);
-    sys_tcb *next = ready_pop();
+    sys_tcb *next;
+    if (os.policy == &sys_scheduler_round_robin) {
+        next = ready_rotate(cur);
+    } else {
+        os_make_ready(cur);
+        os.reconsider = false; /* this rotation is the decision it asks for */
+        next = ready_pop();
+    }
     next->state = SYS_PROCESS_RUNNING;
     if (next == cur) return;
     count_switch();
@@ -206,7 +247,7 @@ sys_status Sys_Set_Scheduler(const sys_scheduler *scheduler) {
         sys_tcb *t = list;
         list = t->next;
         t->next = NULL;
-        scheduler->insert(&os.ready, t);
+        ready_insert(t);
     }
     os.reconsider = true; /* an interrupt's end decides again */
     os_schedule();

@@ -9,8 +9,8 @@
 /* The system thread's work - reaping, then the queued occurrences - until
  * none is left. Interrupts masked. */
 static void system_work(void) {
-    while (os.reap_pending || !os_event_queue_empty()) {
-        if (os.reap_pending)
+    while (os_reap_pending() || !os_event_queue_empty()) {
+        if (os_reap_pending())
             os_reap_zombies();
         else
             os_dispatch_all();
@@ -22,7 +22,7 @@ static void system_work(void) {
  * The flag is down meanwhile, so the handlers' own sends and interrupts
  * join this dispatch instead of nesting a second one. */
 void os_program_preempted(void) {
-    if (!os.program_running || (!os.reap_pending && os_event_queue_empty())) return;
+    if (!os.program_running || (!os_reap_pending() && os_event_queue_empty())) return;
     os.program_running = false;
     system_work();
     os.program_running = true;
@@ -52,7 +52,7 @@ sys_status Sys_Idle(uint32_t max_ms) {
     if (!Sys_In_SystemProgram()) return SYS_E_CONTEXT;
     port_irq_disable();
     os.program_running = false;
-    if (os.reap_pending || !os_event_queue_empty()) {
+    if (os_reap_pending() || !os_event_queue_empty()) {
         system_work();
     } else {
         OS_SYSTEM->state = SYS_PROCESS_READY;

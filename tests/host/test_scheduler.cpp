@@ -166,6 +166,26 @@ TEST_F(Scheduler, ReplacedAtRunTime) {
     power_off();
 }
 
+// The ready list keeps its last thread for round robin's queueing: when
+// that thread leaves (killed while ready), the next one queued goes after
+// the one before it, and every thread still gets its turn.
+TEST_F(Scheduler, AThreadQueuedAfterTheLastReadyOneWasKilledStillGetsItsTurn) {
+    std::atomic<long> c[4] = {};
+    sys_pid p[4] = {};
+    boot([&] {
+        for (int i = 0; i < 3; i++) p[i] = spawn([&c, i] { spin(c[i]); });
+    });
+    host_cpu_advance(1); /* p[0] runs; p[1] and p[2] (the last) are ready */
+    ASSERT_EQ(p[0], running());
+    irq([&] { EXPECT_STATUS(SYS_OK, Sys_Kill_Process(p[2])); });
+    irq([&] { p[3] = spawn([&c] { spin(c[3]); }); });
+    const sys_pid turns[3] = {p[0], p[1], p[3]};
+    std::vector<sys_pid> who = sample(60); /* after ticks 2 to 61 */
+    for (int tick = 2; tick <= 61; tick++)
+        EXPECT_EQ(turns[(tick / 10) % 3], who[tick - 2]) << "after tick " << tick;
+    power_off();
+}
+
 // A policy written by an application: last in, first out.
 static void insert_at_head(sys_tcb **head, sys_tcb *t) {
     *Sys_Tcb_Next(t) = *head;
