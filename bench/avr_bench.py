@@ -210,21 +210,29 @@ def speed(elf, seconds, *extra):
 # instruction timings): static facts of the code, not measurements.
 WHERE_THE_CYCLES_GO = """### Where the cycles go, and which targets are not met
 
-Three changes made the kernel faster without changing what it does (each commit gives its
+Five changes made the kernel faster without changing what it does (each commit gives its
 measured effect): the end of an interrupt decides again only if something a decision reads
 has changed (`os.reconsider`: a thread made ready, a priority or the policy changed, an event
 sent, a thread ended, a stop, the end of a slice), so the tick in the middle of a slice runs
 no decision; the tick checks the running thread's stack guard only when it leads to a
-decision (at least once a slice) instead of every millisecond; and most ticks are quiet
+decision (at least once a slice) instead of every millisecond; most ticks are quiet
 (`os_tick_quiet`, `system_time.c`): a countdown (`os.quiet_ticks`) says how many of the coming
 ticks need no look at the deadlines, the handler watch or the clock event, so a tick that
-does not end the slice either counts the time and the slice and returns from the interrupt
-without `os_isr_enter` and `os_isr_exit`. The first two took the tick with no switch from 303
-cycles to 178 (180 with the system program's path), the third to 101 and the tick that
-switches from 512 to 495; it costs 2 to 4 cycles on the paths that start handlers or wait
-for an event (the `before` column). The other targets are not met, and going without the
-optional features would not meet them either (their column: 0 to 52 cycles a path, the
-most (48 and 52) on the send and its round trip); what the cycles are spent on, counted from the
+does not end the slice counts the time and the slice and returns from the interrupt
+without `os_isr_enter` and `os_isr_exit`; the tick that ends a slice takes that way too when
+its decision is a plain rotation (`tick_ending_slice`: a user thread outside critical
+sections and nested interrupts, its guard intact, no work for the system thread, someone
+ready), rotating as `Sys_Yield` does instead of taking the general tick and decision; and
+round robin queues a thread in constant time (`scheduler.c`: the ready list keeps its last
+thread, and a yield or a slice's end rotates in one step), where its policy's `insert`
+walked the list. The first two took the tick with no switch from 303 cycles to 178, the
+third to 101 (102 now: the test for the slice's end); the last two took the tick that
+switches from 495 to 348 (4 threads: 523 to 357) and `Sys_Yield` from 282 to 246 (4
+threads: 308 to 257), now the same however many threads are ready. They cost about 10
+cycles on each insert under another policy (the priority policy's woken thread: 894 before
+them, 914 now), 2 to 4 on the paths that start handlers, and flash (below). Going without
+the optional features meets no other target (their column: 0 to 53 cycles a path, the
+most on the send and its round trip); what the cycles are spent on, counted from the
 disassembly (`avr-objdump -d`):
 
 - **Any interrupt** that may call the kernel is a C handler that calls functions, so avr-gcc
@@ -233,8 +241,8 @@ disassembly (`avr-objdump -d`):
   does anything. A thread switch from an interrupt then saves the 18 callee-saved registers in
   `port_switch` (100 cycles thread to thread, the first row): all 32 registers and SREG
   change hands, as in FreeRTOS's port, which saves them in one place.
-- **Tick with no switch (101, target 150: met):** besides those 70, the quiet countdown's
-  test and decrement (7), the slice's test and count (16: every tick counts it, so a slice
+- **Tick with no switch (102, target 150: met):** besides those 70, the quiet countdown's
+  test and decrement (7), the test for the slice's end (1 more than before it went out of line), the slice's test and count (16: every tick counts it, so a slice
   ends on its tick whatever the countdown says), the time's lowest byte (6: the other three
   take the carry once in 256 ticks, out of line) and the jump out (2). The tick's interrupt
   still saves every call-clobbered register: the ticks that are not quiet call the kernel,
@@ -243,21 +251,28 @@ disassembly (`avr-objdump -d`):
   handlers run or the clock event has a listener, and at least every 256 ticks) does what
   every tick did before, in `os_tick`, less the deadlines, the handler watch and the clock
   event when only the slice ended.
-- **Sys_Yield (target 200):** `port_switch` is 100 of it; the kernel's part (about 130 for
-  2 threads) is the checks a yield must make (in a thread, not in an interrupt or a critical
-  section; the system thread has no work; someone is ready: 25), the stack guard (18), the
-  scheduling policy's `insert` through its function pointer (the policy is replaceable at run
-  time: about 35 with round robin's walk to the tail, more with more threads: the 4-thread
-  row), the ready list's head and a fresh slice (20), the switch count (12) and the calls'
-  register saves (18).
-- **Tick to another thread (target 300):** the tick that ends the slice (the quiet test that
-  fails, `os_isr_enter`, `os_tick`: the time, the countdown, the slice's count and the stack
-  guard), then the general decision
-  (`os_decide`: the event queue, the system thread's work, the slice, the policy's
-  `insert`), the switch count and `port_switch`, then the other thread's way back out of its
-  own interrupt or call chain.
-- **Interrupt to a woken thread (target 350):** measured step by step with markers in a
-  scratch build (the CPU idle): the interrupt's entry and `Sys_Send_Event`'s checks (65), the
+- **Sys_Yield (246, target 200):** `port_switch` is 100 of it; the kernel's part (146) is
+  the call and its register saves (23), the checks the call promises (in a thread, not in
+  an interrupt or a critical section, else `SYS_E_CONTEXT`: 17), interrupts masked (2),
+  someone ready and no work for the system thread (16), the stack guard (22), the policy's
+  test (7: it is replaceable at run time), round robin's rotation with a fresh slice (31),
+  the two threads' states (6), the switch count (11, `Sys_Get_Stats`) and the running
+  thread's change (6). Without the optional features (no guard) it is 225; 200 would also
+  take the switch count and the context checks away: what the API reports, not speed.
+  FreeRTOS takes 251-258 here, ChibiOS 220.
+- **Tick to another thread (348, target 300):** 179 of it is fixed: the interrupt's entry
+  and exit with its 15 saved registers (79) and `port_switch` (100). The kernel's 169: the
+  quiet test that finds the slice's end and the out-of-line call (14), that call's register
+  saves and return (17), the checks that make the decision a plain rotation (35) and the
+  stack guard every slice's end checks (20), the tick's count (the time, the countdown,
+  the slice: 19), and the rotation as in `Sys_Yield` (68, the switch count's 11 in it).
+  Without the optional features it is 326. 300 leaves the kernel 121 cycles, less than the
+  count, the rotation and the checks that tell it is plain (127 without the guard and the
+  switch count): meeting it would take skipping those checks, which keep every slice's end
+  exact (an event queued, a thread ended, a critical section: the general decision).
+- **Interrupt to a woken thread (751, target 350):** measured step by step with markers in a
+  scratch build (the CPU idle, at 770 cycles: before round robin's constant-time queueing
+  took 19 off the step that makes the waiter ready): the interrupt's entry and `Sys_Send_Event`'s checks (65), the
   send holding the occurrence (55: no copy into the queue), the interrupt's end and the
   system thread's way to its dispatch (108), the dispatch's pop, its look at every thread slot
   for a waiter (6 slots here), the copy and the waiter made ready through the policy (280),
@@ -275,13 +290,15 @@ disassembly (`avr-objdump -d`):
 - **Interrupt to handler, send round trip (targets 250, 350):** the same dispatch on the
   system stack, without the switch; the round trip adds `Sys_Send_Event`'s checks and the
   decision a thread's send makes.
-- **Flash (target 2560 bytes for the app with 2 user threads):** not met; the quiet tick
-  added about 200 bytes (3696 before it, 3892 with it: two ways through the tick, the
-  interrupt's own test and count and `os_tick` with the look split out of line), which
-  `OS_CFG_QUIET_TICK 0` gives back at the tick's old 180 cycles. Without the optional
-  features (the quiet tick kept) the kernel is still 2850 bytes with one user thread (the Footprint section): the
-  target needs about a third less code, not fewer features. The Footprint section shows
-  where the code goes by source file.
+- **Flash (target 2560 bytes for the app with 2 user threads):** not met, and further from
+  it than before this page's last changes: the quiet tick's two ways through the tick, and
+  the slice's end with its rotation out of line, cost about 530 bytes together (the
+  Footprint section's row without them: `OS_CFG_QUIET_TICK 0`, at the tick's 180 cycles and
+  the general decision's 495). Round robin's constant-time queueing costs about 110 and 1
+  byte of RAM (its last thread's pointer, 2 bytes, less the one byte the system thread's
+  reap and stop flags now share). Without the optional features the kernel is still over
+  3 KB with one user thread: the target needs about a third less code, not fewer features.
+  The Footprint section shows where the code goes by source file.
 
 """
 
@@ -387,7 +404,8 @@ def main():
     build()
     rows = measure_cycles(FW)
     fp = {v: sizes(os.path.join(FW, f"footprint_{v}.elf"))
-          for v in ("base", "plus_thread", "plus_event", "minimal", "tickless", "threads2", "threads4")}
+          for v in ("base", "plus_thread", "plus_event", "minimal", "tickless", "threads2", "threads4",
+                    "threads2_loud")}
     # With link-time optimisation symbols merge across files, so the kernel's
     # share is measured as a difference from an image without it.
     bare = sizes(os.path.join(FW, "bare.elf"))
@@ -444,6 +462,9 @@ def main():
         was = f" (before, at {args.baseline}: {flash_before})" if n == 2 and flash_before else ""
         out.append(f"| the same, app with {n} user threads (`footprint_threads{n}.h`) | {code}{was} | "
                    f"{'<= 2560' if n == 2 else ''} |")
+    loud = (fp["threads2_loud"][0] + fp["threads2_loud"][1]) - (bare[0] + bare[1])
+    out.append(f"| the same, app with 2 user threads, without the quiet tick "
+               f"(`footprint_threads2_loud.h`: `OS_CFG_QUIET_TICK 0`) | {loud} | |")
     out.append(f"| the same without the optional features (`bench/avr/footprint_minimal.h`: "
                f"`OS_CFG_STACK_CHECK 0`, `OS_CFG_CLOCK_EVENT 0`, `OS_CFG_HANDLER_LIMIT_MS 0`, `OS_CFG_HANDLER_CONTEXT 0`), 1 user thread | {rom_minimal} | |")
     out.append(f"| kernel + port RAM with one thread slot (stack pool and frame excluded) | {ram} | <= 200 |")
