@@ -99,12 +99,13 @@ void os_isr_exit(void);
 void os_tick(void);
 /* The 1 ms tick, if it needs nothing but the time and the slice's count
  * (most do), or ends the slice of a thread that then only makes way for
- * the next ready one: it is counted (and that switch made, when no
- * interrupt is nested: so may this return in another thread's time, as
- * os_isr_exit does) and true is returned, and the interrupt needs neither
- * os_isr_enter nor os_isr_exit. Otherwise nothing is done and false
- * returned: call os_isr_enter, os_tick and os_isr_exit. Interrupts
- * masked. */
+ * the next ready one: it is counted (and that switch made, with
+ * port_switch, when no interrupt is nested: so may this return in another
+ * thread's time, as os_isr_exit does) and true is returned, and the
+ * interrupt needs neither os_isr_enter nor os_isr_exit. Otherwise nothing
+ * is done and false returned: call os_isr_enter, os_tick and os_isr_exit.
+ * Interrupts masked. A port that cannot switch where its tick runs (the
+ * Cortex-M4's, which switches in thread mode only) calls os_tick alone. */
 bool os_tick_quiet(void);
 /* ticks that passed while the tick was stopped by port_idle_for, credited
  * at once (interrupts masked, the system thread idle): the time advances
