@@ -138,20 +138,30 @@ static OS_COLD void wake(sys_tcb *t, sys_status status) {
     os_make_ready(t);
 }
 
+/* The occurrence satisfies t's wait w: its data into the wait's buffer
+ * (as much as fits), and t woken. */
+static OS_HOT void take(sys_tcb *t, os_wait *w, const sys_event_data *data) {
+    const uint8_t *src = (const uint8_t *)data->value;
+    uint8_t *dst = w->buffer;
+    for (uint8_t n = data->size < w->capacity ? data->size : w->capacity; n != 0; n--)
+        *dst++ = *src++; /* a few bytes: no memcpy call */
+    w->size = data->size;
+    wake(t, data->size > w->capacity ? SYS_E_TRUNCATED : SYS_OK);
+}
+
 /* Dispatch of one occurrence: wake every thread whose wait it satisfies.
- * A thread's wait is set exactly while it is blocked. */
+ * A thread's wait is set exactly while it is blocked. The scan ends at the
+ * last thread that waits for an event (os.event_waiters counts them), not
+ * at the last slot: none at all, the common case, costs one test. */
 void os_wake_waiters(const sys_event_data *data) {
-    if (os.event_waiters == 0) return; /* the common case costs one test */
+    uint8_t left = os.event_waiters;
+    if (left == 0) return;
     for (sys_tcb *t = &os.threads[1]; t != &os.threads[OS_CFG_MAX_THREADS]; t++) {
         os_wait *w = t->wait;
-        if (w == NULL || w->event != data->event) continue;
-        if (w->condition != NULL && !w->condition(data)) continue;
-        const uint8_t *src = (const uint8_t *)data->value;
-        uint8_t *dst = w->buffer;
-        for (uint8_t n = data->size < w->capacity ? data->size : w->capacity; n != 0; n--)
-            *dst++ = *src++; /* a few bytes: no memcpy call */
-        w->size = data->size;
-        wake(t, data->size > w->capacity ? SYS_E_TRUNCATED : SYS_OK);
+        if (w == NULL || w->event == OS_NO_EVENT) continue; /* running, or asleep */
+        bool last = --left == 0;
+        if (w->event == data->event && (w->condition == NULL || w->condition(data))) take(t, w, data);
+        if (last) return;
     }
 }
 

@@ -75,6 +75,41 @@ TEST_F(Wait, EveryWaiterOnOneEventIsWokenWithItsOwnCopy) {
     for (int i = 0; i < kWaiters; i++) EXPECT_EQ(100 + i, got[i].load()) << "waiter " << i;
 }
 
+// The dispatch's scan ends at the last thread that waits for an event:
+// sleepers and waiters for other events between them are passed over but
+// not taken for the last, and the waiter in the last slot is still woken.
+TEST_F(Wait, WaitersAmongSleepersAndOtherEventsAreAllFound) {
+    std::atomic<int> woken_a{0}, woken_b{0}, slept{0};
+    boot([&] {
+        Sys_Register_Event(EV_A);
+        Sys_Register_Event(EV_B);
+        for (int i = 0; i < OS_CFG_MAX_THREADS - 1; i++) {
+            switch (i % 3) {
+            case 0: /* slots 1, 4, 7: wait for EV_A */
+                spawn([&] { if (Sys_Wait_for_Event(EV_A, nullptr, 0, nullptr) == SYS_OK) woken_a++; });
+                break;
+            case 1: /* slots 2, 5, 8: asleep */
+                spawn([&] { if (Sys_Sleep(1000) == SYS_OK) slept++; });
+                break;
+            default: /* slots 3, 6, 9 (the last): wait for EV_B */
+                spawn([&] { if (Sys_Wait_for_Event(EV_B, nullptr, 0, nullptr) == SYS_OK) woken_b++; });
+            }
+        }
+    });
+    settle();
+    irq([] { Sys_Send_Event(EV_A, nullptr, 0); });
+    settle();
+    EXPECT_EQ(3, woken_a.load());
+    EXPECT_EQ(0, woken_b.load());
+    irq([] { Sys_Send_Event(EV_B, nullptr, 0); });
+    settle();
+    EXPECT_EQ(3, woken_b.load()) << "the last slot's waiter among them";
+    EXPECT_EQ(0, slept.load());
+    advance(1000);
+    settle();
+    EXPECT_EQ(3, slept.load());
+}
+
 TEST_F(Wait, TimesOutAfterExactlyTheTimeout) {
     std::atomic<int> result{1};
     sys_pid t = 0;
