@@ -262,16 +262,27 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
 }
 
 /* One handler call, if its condition accepts the occurrence; false to
- * unsubscribe. */
-static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding with, sys_pid pid,
-                               const sys_event_data *data) {
+ * unsubscribe. A condition, or a context (OS_CFG_HANDLER_CONTEXT), takes
+ * this way, out of line: the plain handler's call then keeps nothing in
+ * the dispatch loop's saved registers across it. */
+static OS_COLD bool run_handler_with(sys_event_handler handler, condition_or_binding with, sys_pid pid,
+                                     const sys_event_data *data) {
 #if OS_CFG_HANDLER_CONTEXT
     if (handler == bound) {
         const sys_event_binding *b = with.binding;
         return (b->condition != NULL && !b->condition(data)) || b->handler(b->context, pid, data);
     }
 #endif
-    return (with.condition != NULL && !with.condition(data)) || handler(pid, data->event, data);
+    return !with.condition(data) || handler(pid, data->event, data);
+}
+
+static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding with, sys_pid pid,
+                               const sys_event_data *data) {
+#if OS_CFG_HANDLER_CONTEXT
+    if (handler == bound) return run_handler_with(handler, with, pid, data);
+#endif
+    if (with.condition != NULL) return run_handler_with(handler, with, pid, data);
+    return handler(pid, data->event, data);
 }
 
 /* Runs in the system thread with interrupts masked; each handler runs with

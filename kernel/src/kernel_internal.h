@@ -116,8 +116,6 @@ extern os_kernel os;
  * (openswarm-sim --counters). */
 extern sys_stats os_stats;
 
-static OS_HOT bool os_in_thread(void) { return os.isr_depth == 0 && os.current != OS_SYSTEM; }
-
 /* The system thread's work besides the events (os.system_work). */
 #define OS_WORK_REAP 1u /* a thread ended: its slot and stack to free */
 #define OS_WORK_STOP 2u /* Sys_Stop_Kernel: the system thread returns */

@@ -134,8 +134,8 @@ void os_thread_fault(uint8_t fault) {
 }
 
 sys_status Sys_Yield(void) {
-    if (!os_in_thread()) return SYS_E_CONTEXT;
-    if (os.lock_depth != 0) return SYS_E_CONTEXT;
+    /* A thread's, outside any critical section: one test of both depths. */
+    if ((os.isr_depth | os.lock_depth) != 0 || os.current == OS_SYSTEM) return SYS_E_CONTEXT;
     port_irq_state_t s = port_irq_save();
     os_yield();
     port_irq_restore(s);

@@ -205,7 +205,7 @@ void os_yield(void) {
  * and someone is ready: the general decision would rotate. Reads only. */
 bool os_slice_end_is_plain(void) {
     sys_tcb *cur = os.current;
-    return os.isr_depth == 0 && cur != OS_SYSTEM && os.lock_depth == 0 && os.ready != NULL &&
+    return (os.isr_depth | os.lock_depth) == 0 && cur != OS_SYSTEM && os.ready != NULL &&
            !os_system_work_pending() && os_stack_guard_intact(cur);
 }
 
