@@ -230,7 +230,13 @@ third to 101 (102 now: the test for the slice's end); the last two took the tick
 switches from 495 to 348 (4 threads: 523 to 357) and `Sys_Yield` from 282 to 246 (4
 threads: 308 to 257), now the same however many threads are ready. They cost about 10
 cycles on each insert under another policy (the priority policy's woken thread: 894 before
-them, 914 now), 2 to 4 on the paths that start handlers, and flash (below). Going without
+them, 914 after), 2 to 4 on the paths that start handlers, and flash (below). Three smaller
+ones followed: the dispatch's scan for waiters ends at the last thread that waits for an
+event instead of the last slot (the woken thread 751 to 700, 914 to 863); a handler with
+neither condition nor context is called without the dispatch loop saving registers for it
+(interrupt to handler 310 to 301, round trip 439 to 421; kilolib's programs keep the one
+call, as the second costs 30 bytes their budget has not); and `Sys_Yield` and the slice's
+end test the interrupt and critical-section depths at once (4 cycles each). Going without
 the optional features meets no other target (their column: 0 to 53 cycles a path, the
 most on the send and its round trip); what the cycles are spent on, counted from the
 disassembly (`avr-objdump -d`):
@@ -251,28 +257,29 @@ disassembly (`avr-objdump -d`):
   handlers run or the clock event has a listener, and at least every 256 ticks) does what
   every tick did before, in `os_tick`, less the deadlines, the handler watch and the clock
   event when only the slice ended.
-- **Sys_Yield (246, target 200):** `port_switch` is 100 of it; the kernel's part (146) is
+- **Sys_Yield (242, target 200):** `port_switch` is 100 of it; the kernel's part (142) is
   the call and its register saves (23), the checks the call promises (in a thread, not in
-  an interrupt or a critical section, else `SYS_E_CONTEXT`: 17), interrupts masked (2),
+  an interrupt or a critical section, else `SYS_E_CONTEXT`: 13), interrupts masked (2),
   someone ready and no work for the system thread (16), the stack guard (22), the policy's
   test (7: it is replaceable at run time), round robin's rotation with a fresh slice (31),
   the two threads' states (6), the switch count (11, `Sys_Get_Stats`) and the running
-  thread's change (6). Without the optional features (no guard) it is 225; 200 would also
+  thread's change (6). Without the optional features (no guard) it is 221; 200 would also
   take the switch count and the context checks away: what the API reports, not speed.
   FreeRTOS takes 251-258 here, ChibiOS 220.
-- **Tick to another thread (348, target 300):** 179 of it is fixed: the interrupt's entry
-  and exit with its 15 saved registers (79) and `port_switch` (100). The kernel's 169: the
+- **Tick to another thread (346, target 300):** 179 of it is fixed: the interrupt's entry
+  and exit with its 15 saved registers (79) and `port_switch` (100). The kernel's 167: the
   quiet test that finds the slice's end and the out-of-line call (14), that call's register
-  saves and return (17), the checks that make the decision a plain rotation (35) and the
+  saves and return (17), the checks that make the decision a plain rotation (33) and the
   stack guard every slice's end checks (20), the tick's count (the time, the countdown,
   the slice: 19), and the rotation as in `Sys_Yield` (68, the switch count's 11 in it).
-  Without the optional features it is 326. 300 leaves the kernel 121 cycles, less than the
-  count, the rotation and the checks that tell it is plain (127 without the guard and the
+  Without the optional features it is 324. 300 leaves the kernel 121 cycles, less than the
+  count, the rotation and the checks that tell it is plain (125 without the guard and the
   switch count): meeting it would take skipping those checks, which keep every slice's end
   exact (an event queued, a thread ended, a critical section: the general decision).
-- **Interrupt to a woken thread (751, target 350):** measured step by step with markers in a
-  scratch build (the CPU idle, at 770 cycles: before round robin's constant-time queueing
-  took 19 off the step that makes the waiter ready): the interrupt's entry and `Sys_Send_Event`'s checks (65), the
+- **Interrupt to a woken thread (684, target 350):** measured step by step with markers in a
+  scratch build (the CPU idle, at 770 cycles: before round robin's constant-time queueing,
+  the shorter scan and the plain handler's call took 86 off, most of it from the step that
+  finds and wakes the waiter): the interrupt's entry and `Sys_Send_Event`'s checks (65), the
   send holding the occurrence (55: no copy into the queue), the interrupt's end and the
   system thread's way to its dispatch (108), the dispatch's pop, its look at every thread slot
   for a waiter (6 slots here), the copy and the waiter made ready through the policy (280),
@@ -287,32 +294,32 @@ disassembly (`avr-objdump -d`):
   of the handlers) while the wake itself stayed (branch `inplace-wake-experiment`). 350
   would need the waiters found without a scan: a list of them per event (2 bytes more per
   event slot, past the 4-byte target) and a count of the handlers per event.
-- **Interrupt to handler (310, target 250):** measured step by step with markers in a
-  scratch build (a thread spinning; 8 markers took it to 335, about 3 cycles each, in the
-  figures): the interrupt's entry with its saved registers and the benchmark's own
-  interrupt code (55), `Sys_Send_Event`'s checks (id, registration, size) and the
-  occurrence held in its event's kept data (45), back to the end of the interrupt (18), to
-  the decision (26), the decision's look (running, no critical section, something queued)
-  and the way onto the system thread's stack with the dispatch's register saves (74), the
-  pop (45), the waiters' test (5: none wait), the handler table's scan to the subscription
-  and its context's test, the handler watch set, interrupts enabled (44) and the call into
-  the handler (23). With the CPU idle the system thread's own loop dispatches instead of an
-  interrupted thread's decision (322). Without the optional features it is 292. 250 would
-  need handlers run in the interrupt, on the interrupted thread's stack: the design runs
-  every handler on the system thread, after the interrupt and in order with the waiters,
-  so that a handler may send, start threads and take as long as it needs with interrupts
-  enabled, on a stack of its own.
-- **Send round trip (439, target 350):** the same steps from a thread (13 markers: 508):
+- **Interrupt to handler (301, target 250):** measured step by step with markers in a
+  scratch build (a thread spinning; 10 markers took it to 354, about 5 cycles each, in the
+  figures): the interrupt's entry with its saved registers, the benchmark's own interrupt
+  code and the call to send (69), `Sys_Send_Event`'s checks (id, registration, size) and
+  the occurrence held in its event's kept data (45), back to the end of the interrupt
+  (30), to the decision (26), the decision's look (running, no critical section, something
+  queued) and the way onto the system thread's stack with the dispatch's register saves
+  (68), the pop (47), the waiters' test (5: none wait), the handler table's scan to the
+  subscription and its condition's and context's tests, the handler watch set, interrupts
+  enabled (43) and the call into the handler (21). With the CPU idle the system thread's
+  own loop dispatches instead of an interrupted thread's decision (313). Without the
+  optional features it is 289. 250 would need handlers run in the interrupt, on the
+  interrupted thread's stack: the design runs every handler on the system thread, after
+  the interrupt and in order with the waiters, so that a handler may send, start threads
+  and take as long as it needs with interrupts enabled, on a stack of its own.
+- **Send round trip (421, target 350):** the same steps from a thread (14 markers: 486):
   the call and its checks (25), the occurrence held with its 2 bytes (63), to the decision
-  through the stack guard's check (68), onto the system stack (76), the pop (47), the
-  waiters' test (5), the scan and the call (66), the handler itself (11), the dispatch's
-  end and the way back from the system stack with its register restores (69), the
-  decision after it (11: nothing to switch to) and the way back to the thread through the
-  calls (67). Without the optional features it is 386. FreeRTOS's nearest, a message to a
-  task and its answer, is two task switches: 1000 cycles in the issue's reference table.
+  through the stack guard's check (68), onto the system stack (68), the pop (47), the
+  waiters' test (5), the scan and the call (63), the handler itself (8), the dispatch's end
+  and the way back from the system stack with its register restores (61), the decision
+  after it (11: nothing to switch to) and the way back to the thread through the calls
+  (67). Without the optional features it is 378. FreeRTOS's nearest, a message to a task
+  and its answer, is two task switches: 1000 cycles in the issue's reference table.
 - **Flash (target 2560 bytes for the app with 2 user threads):** not met, and further from
   it than before the tick's and round robin's shortcuts: the quiet tick's two ways through
-  the tick and the slice's end with its rotation out of line cost about 530 bytes together
+  the tick and the slice's end with its rotation out of line cost about 520 bytes together
   (the Footprint section's row without them: `OS_CFG_QUIET_TICK 0`, at the tick's 180
   cycles and the general decision's 495), round robin's constant-time queueing about 110
   and 1 byte of RAM (its last thread's pointer, 2 bytes, less the one byte the system
@@ -320,7 +327,7 @@ disassembly (`avr-objdump -d`):
   features as well, the app with 2 user threads is still the Footprint section's smallest
   row, over 3 KB: threads with a stack pool and its guard, events with kept data, waits
   with conditions and timeouts, handlers on the system thread, a replaceable policy and
-  faults reported. Going under 2560 would take about a sixth of that core away, which no
+  faults reported. Going under 2560 would take nearly a fifth of that core away, which no
   setting does; the Footprint section shows where the code goes by source file.
 
 """

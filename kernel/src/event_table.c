@@ -261,28 +261,43 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
     os_fault(SYS_FAULT_CRITICAL_LEAK, pid);
 }
 
+/* A plain handler (no condition, no context) is called straight from the
+ * dispatch loop, so that the loop keeps nothing for the call in saved
+ * registers (9 cycles on the way to a handler, 18 on a round trip), and
+ * the others through run_handler_with, out of line. With the system
+ * thread alone (kilolib's programs) the one call stays: the second costs
+ * 30 bytes, which their flash budget has not (docs/benchmarks.md). */
+#if OS_CFG_MAX_THREADS > 1
+#define PLAIN_HANDLER_APART 1
+#define HANDLER_WITH_PLACE OS_COLD
+#else
+#define PLAIN_HANDLER_APART 0
+#define HANDLER_WITH_PLACE OS_HOT
+#endif
+
 /* One handler call, if its condition accepts the occurrence; false to
- * unsubscribe. A condition, or a context (OS_CFG_HANDLER_CONTEXT), takes
- * this way, out of line: the plain handler's call then keeps nothing in
- * the dispatch loop's saved registers across it. */
-static OS_COLD bool run_handler_with(sys_event_handler handler, condition_or_binding with, sys_pid pid,
-                                     const sys_event_data *data) {
+ * unsubscribe. */
+static HANDLER_WITH_PLACE bool run_handler_with(sys_event_handler handler, condition_or_binding with,
+                                                sys_pid pid, const sys_event_data *data) {
 #if OS_CFG_HANDLER_CONTEXT
     if (handler == bound) {
         const sys_event_binding *b = with.binding;
         return (b->condition != NULL && !b->condition(data)) || b->handler(b->context, pid, data);
     }
 #endif
-    return !with.condition(data) || handler(pid, data->event, data);
+    return (with.condition != NULL && !with.condition(data)) || handler(pid, data->event, data);
 }
 
 static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding with, sys_pid pid,
                                const sys_event_data *data) {
+#if PLAIN_HANDLER_APART
+    bool plain = with.condition == NULL;
 #if OS_CFG_HANDLER_CONTEXT
-    if (handler == bound) return run_handler_with(handler, with, pid, data);
+    plain = plain && handler != bound;
 #endif
-    if (with.condition != NULL) return run_handler_with(handler, with, pid, data);
-    return handler(pid, data->event, data);
+    if (plain) return handler(pid, data->event, data);
+#endif
+    return run_handler_with(handler, with, pid, data);
 }
 
 /* Runs in the system thread with interrupts masked; each handler runs with
