@@ -444,8 +444,11 @@ def main():
     with open(os.path.join(ROOT, "bench", "avr", "footprint_base.h")) as f:
         pool = int([l for l in f if "STACK_POOL_BYTES" in l][0].split()[2])
     frame = 64  # PORT_STACK_EXTRA, reserved in the pool for each user thread slot
-    rom = (fp["base"][0] + fp["base"][1]) - (bare[0] + bare[1])
-    rom_minimal = (fp["minimal"][0] + fp["minimal"][1]) - (bare[0] + bare[1])
+    def code(v):
+        """Kernel + port flash of footprint_<v>: its image minus the empty one."""
+        return (fp[v][0] + fp[v][1]) - (bare[0] + bare[1])
+
+    rom, rom_minimal = code("base"), code("minimal")
     tickless_rom = (fp["tickless"][0] + fp["tickless"][1]) - (fp["base"][0] + fp["base"][1])
     tickless_ram = (fp["tickless"][1] + fp["tickless"][2]) - (fp["base"][1] + fp["base"][2])
     ram = (fp["base"][1] + fp["base"][2]) - (bare[1] + bare[2]) - pool - frame
@@ -488,16 +491,13 @@ def main():
     out.append(f"| empty image (`bench/avr/bare.c`: C runtime and vectors) | {bare[0] + bare[1]} | |")
     out.append(f"| kernel + port code, app with 1 user thread (image minus the empty one; includes the app's few calls) | {rom} | |")
     for n in (2, 4):
-        code = (fp[f"threads{n}"][0] + fp[f"threads{n}"][1]) - (bare[0] + bare[1])
         was = f" (before, at {args.baseline}: {flash_before})" if n == 2 and flash_before else ""
-        out.append(f"| the same, app with {n} user threads (`footprint_threads{n}.h`) | {code}{was} | "
+        out.append(f"| the same, app with {n} user threads (`footprint_threads{n}.h`) | {code(f'threads{n}')}{was} | "
                    f"{'<= 2560' if n == 2 else ''} |")
-    loud = (fp["threads2_loud"][0] + fp["threads2_loud"][1]) - (bare[0] + bare[1])
     out.append(f"| the same, app with 2 user threads, without the quiet tick "
-               f"(`footprint_threads2_loud.h`: `OS_CFG_QUIET_TICK 0`) | {loud} | |")
-    least = (fp["threads2_minimal"][0] + fp["threads2_minimal"][1]) - (bare[0] + bare[1])
+               f"(`footprint_threads2_loud.h`: `OS_CFG_QUIET_TICK 0`) | {code('threads2_loud')} | |")
     out.append(f"| the same, app with 2 user threads, without the quiet tick and the optional features "
-               f"(`footprint_threads2_minimal.h`) | {least} | |")
+               f"(`footprint_threads2_minimal.h`) | {code('threads2_minimal')} | |")
     out.append(f"| the same without the optional features (`bench/avr/footprint_minimal.h`: "
                f"`OS_CFG_STACK_CHECK 0`, `OS_CFG_CLOCK_EVENT 0`, `OS_CFG_HANDLER_LIMIT_MS 0`, `OS_CFG_HANDLER_CONTEXT 0`), 1 user thread | {rom_minimal} | |")
     out.append(f"| kernel + port RAM with one thread slot (stack pool and frame excluded) | {ram} | <= 200 |")
