@@ -554,7 +554,7 @@ def main():
     out.append(f"| tickless idle's alarms and wake-ups ({', '.join(f'`{f}`' for f in alarm_functions)}) | {p_[2]:.1f}% | {t_[2]:.1f}% |")
     out.append(f"| everything else | {p_[3]:.1f}% | {t_[3]:.1f}% |\n")
     out.append("## Tickless idle\n")
-    out.append(f"With `OS_CFG_TICKLESS 1` (off by default for now: see architecture.md) `kilolib_blink` is asleep "
+    out.append(f"With `OS_CFG_TICKLESS 1` (off by default, for its flash: see architecture.md) `kilolib_blink` is asleep "
                f"{t_[0]:.1f}% of its first {seconds} s (target: >= 99%), against {p_[0]:.1f}% with the periodic tick "
                f"(the table above). It wakes for its own `delay()`s and for the alarms that chain a "
                f"sleep across Timer1's 8.192 ms wrap (one every 7 ms, about 130 cycles each), and for "

@@ -34,14 +34,15 @@ def run(cmd, **kw):
     return subprocess.run(cmd, check=True, text=True, capture_output=True, **kw)
 
 
-def app(name, source, kernel=None):
-    """Copy an app (a template or bench/world/NAME), with kernel settings
-    added to its openswarm.json, and build it with the tool."""
+def app(name, source, kernel=None, template=None):
+    """Copy an app (the template NAME, or TEMPLATE, or bench/world/NAME),
+    with kernel settings added to its openswarm.json, and build it with the
+    tool."""
     where = os.path.join(APPS, name)
     shutil.rmtree(where, ignore_errors=True)
     if source == "template":
         os.makedirs(APPS, exist_ok=True)
-        run([TOOL, "new", name, "-C", APPS, "--template", name, "--force"])
+        run([TOOL, "new", name, "-C", APPS, "--template", template or name, "--force"])
     else:
         shutil.copytree(source, where)
     if kernel:

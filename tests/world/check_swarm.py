@@ -3,10 +3,12 @@
 the run ends normally and the robots hear their neighbours closer than
 60 mm (the LED turns red). The channel is about 90% busy (100 senders, two
 4.4 ms frames a second each) and who gets through is chaotic: any change
-of timing changes it. Since the IR driver counts the ticks a frame masks
-exactly (a frame used to gain one in 3 of 5, so every robot's clock
-wandered with its traffic), robots whose periods nearly agree collide for
-longer: 76 to 83 of 100 in 5 s with seeds 1, 2, 3 and 9, so 70 must;
+of timing changes it. It has been 76 to 83 of 100 in 5 s (seeds 1, 2, 3
+and 9, when the IR driver began to count the ticks a frame masks exactly
+and robots whose periods nearly agree collided for longer); with kilolib
+on the system thread and its transmitter looking a random 0-15 ms into
+each kilo tick it is 100 with seeds 1 to 9, with the periodic tick and
+with tickless idle alike (bench/tickless_crowd.py). 70 must:
 with simavr's 64 timers a robot exhausted, edges were lost and frames
 garbled. check_swarm.py SIM ELF WORLD OUT"""
 import csv
