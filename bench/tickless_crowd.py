@@ -19,6 +19,7 @@ import sys
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchmarks_page  # noqa: E402
 import world_bench  # noqa: E402  (its build of the tool and the simulator, and app())
 
 ROOT = world_bench.ROOT
@@ -110,15 +111,7 @@ def main():
     print(f"running {len(SEEDS) * len(elves)} swarms of 100 for 5 simulated s", file=sys.stderr)
     results = measure(elves)
     text = section(results, list(elves))
-    page_path = os.path.join(ROOT, "docs", "benchmarks.md")
-    with open(page_path) as f:
-        page = f.read()
-    if BEGIN in page:
-        page = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda _: text, page, flags=re.S)
-    else:
-        page = page.rstrip("\n") + "\n\n" + text + "\n"
-    with open(page_path, "w") as f:
-        f.write(page)
+    benchmarks_page.write_section(BEGIN, END, text)
     print(text)
     print(f"tickless_crowd: {len(results)} runs, docs/benchmarks.md updated", file=sys.stderr)
 

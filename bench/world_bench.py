@@ -11,11 +11,13 @@ import glob
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
 import time
+
+sys.dont_write_bytecode = True  # no bench/__pycache__ in the source tree
+import benchmarks_page  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.path.join(ROOT, "build-bench")
@@ -135,16 +137,7 @@ def verdict(results):
 
 
 def write(lines):
-    path = os.path.join(ROOT, "docs", "benchmarks.md")
-    with open(path) as f:
-        page = f.read()
-    section = "\n".join([BEGIN] + lines + [END])
-    if BEGIN in page:
-        page = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda _: section, page, flags=re.S)
-    else:
-        page = page.rstrip("\n") + "\n\n" + section + "\n"
-    with open(path, "w") as f:
-        f.write(page)
+    benchmarks_page.write_section(BEGIN, END, "\n".join([BEGIN] + lines + [END]))
 
 
 def main():

@@ -18,7 +18,7 @@ grep -Eq "^  kernel and port +[0-9.]+% ~ *[1-9][0-9]* " build.log
 "$openswarm" build --json > build.json
 python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); assert j["flash_total"] == 1048576 and j["ram_total"] == 131072 and j["share"]["approximate"]' build.json
 "$openswarm" size | tee size.log
-grep -Eq "^Equation \(1\): RAM = C \+ 24 n \+ 8 m \+ sum d_i \+ sum stacks = 208 \+ 24\*[0-9]+ \+ 8\*[0-9]+ \+ [0-9]+ \+ [0-9]+ = [1-9][0-9]* bytes$" size.log
+grep -Eq "^Equation \(1\): RAM = C \+ 20 n \+ 8 m \+ sum d_i \+ sum stacks = 220 \+ 20\*[0-9]+ \+ 8\*[0-9]+ \+ [0-9]+ \+ [0-9]+ = [1-9][0-9]* bytes$" size.log
 "$openswarm" run --time 1.1 2>&1 | tee run.log
 grep -q "^Running app.elf in QEMU (netduinoplus2) for 1.1 s$" run.log
 grep -Eq "^\[ +0\.25[0-9]+ s\] led +red 0 green 0 blue 0$" run.log
