@@ -153,6 +153,18 @@ def after_tick(evs, spinners):
     return (switched, dropped), (stayed, 0)
 
 
+def slice_ends(ticks, slice_ms=10):
+    """A lone spinning thread's ticks (all of them returning to it), in
+    order: those inside its slice, and every slice_ms-th, at its end.
+    Which tick ends the first slice is found as the costliest of the
+    slice_ms after the first tick (which includes the thread's start, and
+    which summary() leaves out)."""
+    first = max(range(1, min(slice_ms + 1, len(ticks))), key=lambda i: ticks[i], default=0)
+    ends = set(range(first, len(ticks), slice_ms))
+    return ([t for i, t in enumerate(ticks) if i not in ends],
+            [t for i, t in enumerate(ticks) if i in ends])
+
+
 def summary(measured):
     """min, median, max, samples, left out. The first sample is left out
     too: it includes a thread's first start. The median is a sample (the
@@ -266,8 +278,9 @@ disassembly (`avr-objdump -d`):
   thread's change (6). Without the optional features (no guard) it is 221; 200 would also
   take the switch count and the context checks away: what the API reports, not speed.
   FreeRTOS takes 251-258 here, ChibiOS 220.
-- **Tick to another thread (346, target 300):** 179 of it is fixed: the interrupt's entry
-  and exit with its 15 saved registers (79) and `port_switch` (100). The kernel's 167: the
+- **Tick to another thread (340, target 300):** 179 of it is fixed: the interrupt's entry
+  and exit with its 15 saved registers (79) and `port_switch` (100). The kernel's 161 (167
+  when it was counted, less the 6 of a slice store the rotation makes anyway): the
   quiet test that finds the slice's end and the out-of-line call (14), that call's register
   saves and return (17), the checks that make the decision a plain rotation (33) and the
   stack guard every slice's end checks (20), the tick's count (the time, the countdown,
@@ -276,6 +289,16 @@ disassembly (`avr-objdump -d`):
   count, the rotation and the checks that tell it is plain (125 without the guard and the
   switch count): meeting it would take skipping those checks, which keep every slice's end
   exact (an event queued, a thread ended, a critical section: the general decision).
+- **Tick at the end of a lone thread's slice (187, target 150 for a tick with no switch):**
+  one tick in ten of a thread that spins while no other is ready. It took the general way
+  (331: the interrupt's entry and exit, `os_tick`, the decision that renews the slice)
+  until the slice's end took the quiet way for it too (`os_slice_over`: a fresh slice
+  instead of a rotation). Over the quiet tick's 102 it spends about what the tick to another
+  thread spends before its rotation: the out-of-line call with its saves (31), the checks
+  that make the decision plain (33) and the stack guard (20), which must
+  stay: a thread that overflows while it spins alone is stopped within its slice
+  (`Faults.AnOverflowingThreadThatSpinsAloneIsStoppedWithinASlice`, and the firmware
+  suite's `spin_fault`). Averaged over its ticks it is about 110.
 - **Interrupt to a woken thread (684, target 350):** measured step by step with markers in a
   scratch build (the CPU idle, at 770 cycles: before round robin's constant-time queueing,
   the shorter scan and the plain handler's call took 86 off, most of it from the step that
@@ -342,6 +365,7 @@ def cycle_rows(evs):
     yield2, yield4 = threads(range(20, 22)), threads(range(22, 26))
     spin2, spin4 = threads(range(30, 34), 2), threads(range(34, 42), 2)
     (tick2, tick2_stay), (tick4, tick4_stay) = after_tick(evs, spin2), after_tick(evs, spin4)
+    lone_quiet, lone_slice_end = slice_ends(after_tick(evs, {70: 0, 71: 0})[1][0])
     irq = "simavr raises the interrupt (its flag is set)"
     return [
         ("port_switch, thread to thread (assembly, no kernel)",
@@ -361,6 +385,10 @@ def cycle_rows(evs):
          "the interrupted thread's next `out GPIOR2`", summary(tick2_stay), "<= 150"),
         ("tick with no switch, 4 threads spinning", irq,
          "the interrupted thread's next `out GPIOR2`", summary(tick4_stay), "<= 150"),
+        ("tick with no switch, 1 thread spinning, inside its slice", irq,
+         "its next `out GPIOR2`", summary((lone_quiet, 0)), "<= 150"),
+        ("tick with no switch, 1 thread spinning, at its slice's end (a fresh one: nobody else is ready)",
+         irq, "its next `out GPIOR2`", summary((lone_slice_end, 0)), "<= 150"),
         ("interrupt to event handler, a thread spinning", irq,
          "the handler's first `out GPIOR2`", summary(after_irq(evs, 7, {44})), "<= 250"),
         ("interrupt to event handler, the CPU idle", irq,
@@ -568,8 +596,12 @@ def main():
     out.append("## Against the reference numbers (`../shared/design.md`)\n")
     out.append("| what | OpenSwarm (this page) | reference |")
     out.append("|---|---|---|")
-    out.append(f"| voluntary switch | port_switch {rows[0][3][1]}, Sys_Yield {rows[1][3][1]} cycles (2 threads) | FreeRTOS yield about 259; ChibiOS/RT about 180; RIOT about 355 |")
-    out.append(f"| interrupt to a thread | {rows[9][3][1]} cycles (to a handler: {rows[8][3][1]}) | FreeRTOS about 603 |")
+    median = {r[0]: r[3][1] for r in rows}  # by the row's name: rows come and go
+    out.append(f"| voluntary switch | port_switch {median['port_switch, thread to thread (assembly, no kernel)']}, "
+               f"Sys_Yield {median['Sys_Yield, thread to thread, 2 threads, 2 call sites']} cycles (2 threads) | "
+               "FreeRTOS yield about 259; ChibiOS/RT about 180; RIOT about 355 |")
+    out.append(f"| interrupt to a thread | {median['interrupt to woken thread, the CPU idle']} cycles (to a handler: "
+               f"{median['interrupt to event handler, the CPU idle']}) | FreeRTOS about 603 |")
     out.append(f"| kernel code | {rom} B (kernel + port, minimal app; {rom_minimal} B without the optional features) | FreeRTOS 2.3 KB (2 tasks); RIOT 2.2 KB; QP-nano about 2.4 KB |")
     out.append(f"| RAM per thread | {tcb} B + stack | FreeRTOS 34 B per TCB; ChibiOS 31 B per thread; paper 146 B (with a 128 B stack) |\n")
     out.append("## Simulator speed\n")

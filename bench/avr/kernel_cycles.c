@@ -18,7 +18,9 @@
  *   51         interrupt to a woken thread of higher priority than a
  *              thread spinning (52/53)
  *   60/61/62   a thread sends (60), its handler runs (61), the thread goes
- *              on (62) */
+ *              on (62)
+ *   70/71      1 spinning thread: every tick returns to it, every 10th at
+ *              the end of its slice (nobody else ready: a fresh one) */
 #include "openswarm/kernel.h"
 #include "openswarm/kilobot_sim.h"
 #include "openswarm/port.h"
@@ -211,6 +213,7 @@ int main(void) {
     yield_phase(4, 22);
     tick_phase(2, 30);
     tick_phase(4, 34);
+    tick_phase(1, 70);
     handler_phase(true, 44);
     handler_phase(false, 45);
     wake_phase(false, 50);

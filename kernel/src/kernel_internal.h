@@ -167,7 +167,7 @@ void os_make_ready(sys_tcb *t);
 void os_ready_remove(sys_tcb *t);
 void os_schedule(void);              /* switch if something else should run now */
 void os_yield(void);                 /* Sys_Yield's decision */
-bool os_slice_end_is_plain(void);    /* the slice's end needs only a rotation */
+bool os_slice_end_is_plain(void);    /* the slice's end needs only a rotation or a renewal */
 void os_slice_over(void);            /* ... which os_tick_quiet then takes */
 /* Switch to whoever should run now; false if the caller goes on (the
  * system thread: nobody else can run). */

@@ -203,23 +203,28 @@ void os_yield(void) {
 
 /* May the tick that ends the running thread's slice take the plain way
  * (os_slice_over)? A user thread runs outside any critical section, no
- * interrupt is nested, its guard is intact, the system thread has no work
- * and someone is ready: the general decision would rotate. Reads only.
- * The last three are os_yield's test, written out in each: a helper for
- * both made avr-gcc lay out both chains worse (3 to 14 cycles on the
- * yield and the tick, bench/avr_bench.py --cycles). */
+ * interrupt is nested, its guard is intact and the system thread has no
+ * work: the general decision would rotate, or renew the slice of a thread
+ * nobody waits behind. Reads only. The last two are os_yield's test,
+ * written out in each: a helper for both made avr-gcc lay out both chains
+ * worse (3 to 14 cycles on the yield and the tick, bench/avr_bench.py
+ * --cycles). */
 bool os_slice_end_is_plain(void) {
     sys_tcb *cur = os.current;
-    return (os.isr_depth | os.lock_depth) == 0 && cur != OS_SYSTEM && os.ready != NULL &&
-           !os_system_work_pending() && os_stack_guard_intact(cur);
+    return (os.isr_depth | os.lock_depth) == 0 && cur != OS_SYSTEM && !os_system_work_pending() &&
+           os_stack_guard_intact(cur);
 }
 
 /* The slice ended (counted by the tick) on the plain way: the decision
  * the end of the tick's interrupt would take, without the interrupt's
- * entry, the general tick and the general decision around it. */
+ * entry, the general tick and the general decision around it. A lone
+ * busy thread gets a fresh slice, as must_rotate would give it. */
 void os_slice_over(void) {
     os.reconsider = false; /* this decision sees every change */
-    rotate(os.current);
+    if (os.ready == NULL)
+        os.slice_left = os.slice_ms;
+    else
+        rotate(os.current);
 }
 
 /* With the tick stopped (tickless idle), the port first credits the time

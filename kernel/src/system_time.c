@@ -109,14 +109,14 @@ OS_TICK_COLD void os_tick(void) {
 
 #if OS_CFG_QUIET_TICK
 /* A quiet tick that ends the slice, when the decision it leads to is a
- * plain rotation: counted, then rotated. Out of line: the common quiet
- * tick's interrupt then saves no more registers. */
+ * plain rotation (or a lone thread's fresh slice): counted, then taken.
+ * Out of line: the common quiet tick's interrupt then saves no more
+ * registers. */
 static OS_COLD bool tick_ending_slice(void) {
     if (!os_slice_end_is_plain()) return false;
     os.quiet_ticks--;
-    os.slice_left = 0;
     advance_time();
-    os_slice_over();
+    os_slice_over(); /* the slice's count: a fresh one, whoever runs on */
     return true;
 }
 #endif
@@ -127,7 +127,8 @@ static OS_COLD bool tick_ending_slice(void) {
  * take either (a thread outside a critical section has none pending;
  * inside one, or on the system thread, the end of an interrupt takes
  * none), so it needs no os_isr_enter/os_isr_exit. The tick that ends a
- * slice takes this way too when the decision is a plain rotation
+ * slice takes this way too when the decision is a plain rotation, or a
+ * fresh slice for a thread nobody waits behind
  * (tick_ending_slice). */
 bool os_tick_quiet(void) {
 #if OS_CFG_QUIET_TICK

@@ -90,6 +90,22 @@ TEST_F(Faults, StackOverflowIsDetectedReportedAndTheThreadKilled) {
     EXPECT_TRUE(eventually([&] { return bystander > before; })) << "the others go on";
     power_off();
 }
+
+// With no other thread ready, the end of its slice only renews it (the
+// quiet tick's way): the guard is checked there too.
+TEST_F(Faults, AnOverflowingThreadThatSpinsAloneIsStoppedWithinASlice) {
+    testing::internal::CaptureStderr();
+    std::atomic<bool> overflowed{false};
+    std::atomic<long> spins{0};
+    sys_pid victim = 0;
+    boot([&] { victim = start_overflowing_thread(overflowed, spins); });
+    ASSERT_TRUE(eventually([&] { return overflowed.load(); }));
+    advance(OS_CFG_TIME_SLICE_MS);
+    EXPECT_TRUE(eventually([&] { return !alive(victim); }));
+    EXPECT_EQ(1u, stats().stack_overflows);
+    testing::internal::GetCapturedStderr();
+    power_off();
+}
 #else
 // OS_CFG_STACK_CHECK 0 (config.h): no guard and no check, so the same
 // overflow (into free pool memory) raises no fault and the thread runs on.

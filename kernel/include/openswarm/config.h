@@ -54,7 +54,7 @@
  * count, so a countdown of the coming ticks that need no more lets them
  * return at once (os_tick_quiet: 102 cycles a tick on the Kilobot instead
  * of 180), and the tick that ends a slice with a plain rotation rotates at
- * once (346 cycles to the next thread instead of 495); together about 520
+ * once (340 cycles to the next thread instead of 495); together about 520
  * bytes of flash and 1 of RAM. On wherever threads
  * run; with the system thread alone (kilolib's programs) off by default:
  * no slice to count, and kilolib's clock hook takes every tick the full
