@@ -155,14 +155,14 @@ def after_tick(evs, spinners):
 
 def slice_ends(ticks, slice_ms=10):
     """A lone spinning thread's ticks (all of them returning to it), in
-    order: those inside its slice, and every slice_ms-th, at its end.
-    Which tick ends the first slice is found as the costliest of the
-    slice_ms after the first tick (which includes the thread's start, and
-    which summary() leaves out)."""
-    first = max(range(1, min(slice_ms + 1, len(ticks))), key=lambda i: ticks[i], default=0)
+    order: those inside its slice, and every slice_ms-th, at its end. Both
+    lists begin with its first tick, which includes the thread's start and
+    which summary() leaves out. Which tick ends the first slice is found as
+    the costliest of the slice_ms after it."""
+    first = max(range(1, min(slice_ms + 1, len(ticks))), key=lambda i: ticks[i], default=1)
     ends = set(range(first, len(ticks), slice_ms))
     return ([t for i, t in enumerate(ticks) if i not in ends],
-            [t for i, t in enumerate(ticks) if i in ends])
+            ticks[:1] + [t for i, t in enumerate(ticks) if i in ends])
 
 
 def summary(measured):

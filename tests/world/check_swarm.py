@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A hundred robots in one IR range, all talking (the disperse template,
-with the pools openswarm build gives a kilolib program): the run ends normally and the robots hear their neighbours closer than
-60 mm (the LED turns red). The channel is about 90% busy (100 senders, two
+with the pools openswarm build gives a kilolib program): the run ends
+normally and the robots hear their neighbours closer than 60 mm (the LED
+turns red). The channel is about 90% busy (100 senders, two
 4.4 ms frames a second each) and who gets through is chaotic: any change
 of timing changes it. It has been 76 to 83 of 100 in 5 s (seeds 1, 2, 3
 and 9, when the IR driver began to count the ticks a frame masks exactly
