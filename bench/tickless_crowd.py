@@ -97,8 +97,9 @@ def section(results, modes):
     means = []
     for m in modes:
         rs = [results[(m, s)] for s in SEEDS]
+        medians = [r["median_s"] for r in rs if r["median_s"] is not None]  # a run nobody heard in has none
         means.append(f"{statistics.mean(r['red'] for r in rs):.1f}, "
-                     f"{statistics.mean(r['median_s'] or 0 for r in rs):.2f}, "
+                     f"{statistics.mean(medians) if medians else float('nan'):.2f}, "
                      f"{statistics.mean(r['received'] for r in rs):.0f}, "
                      f"{statistics.mean(r['lost'] for r in rs):.0f}")
     lines.append("| mean | " + " | ".join(means) + " |")
