@@ -299,24 +299,32 @@ disassembly (`avr-objdump -d`):
   stay: a thread that overflows while it spins alone is stopped within its slice
   (`Faults.AnOverflowingThreadThatSpinsAloneIsStoppedWithinASlice`, and the firmware
   suite's `spin_fault`). Averaged over its ticks it is about 110.
-- **Interrupt to a woken thread (684, target 350):** measured step by step with markers in a
-  scratch build (the CPU idle, at 770 cycles: before round robin's constant-time queueing,
-  the shorter scan and the plain handler's call took 86 off, most of it from the step that
-  finds and wakes the waiter): the interrupt's entry and `Sys_Send_Event`'s checks (65), the
-  send holding the occurrence (55: no copy into the queue), the interrupt's end and the
-  system thread's way to its dispatch (108), the dispatch's pop, its look at every thread slot
-  for a waiter (6 slots here), the copy and the waiter made ready through the policy (280),
-  the handler table's scan (21), the way back to the decision (65), the decision (66),
-  `port_switch` (123 with the switch count) and the waiter's return through its wait's calls
-  (12). The semantics cost most of it: waiters and handlers of one occurrence are served in
-  one dispatch, in order, on the system thread, never in the interrupt; any number of threads
-  may wait for one event, each woken with its own copy. Waking the waiters in the send
-  instead, when nothing needs the system thread (no handler, no waiter's condition, nothing
-  queued before it), was tried and measured **slower**: 870 cycles, as telling whether an
-  occurrence needs the system thread took 156 (a scan of the waiters for a condition, one
-  of the handlers) while the wake itself stayed (branch `inplace-wake-experiment`). 350
-  would need the waiters found without a scan: a list of them per event (2 bytes more per
-  event slot, past the 4-byte target) and a count of the handlers per event.
+- **Interrupt to a woken thread (684, target 350):** measured step by step with 8 markers
+  in a scratch build (the CPU idle: 717 with the markers, about 4 cycles each): the
+  interrupt's entry, `Sys_Send_Event`'s checks and the occurrence held (103), the
+  interrupt's end (13), back into the system thread's loop from its sleep (102), the
+  dispatch's entry, its pop and its scan to the waiter (97), the waiter's wake - its data
+  copied, its wait left, made ready through the policy - and the rest of the scan (127),
+  the handler table's look (23), the dispatch's end and the way to the decision (57), the
+  decision (71), and the switch with the waiter's return through its wait's calls (124).
+  With a lower-priority thread spinning (847) the interrupt's end decides on the
+  spinning thread's stack and dispatches on the system stack; the priority policy's
+  queueing (an indirect call and a walk of the ready list) takes the wake to 165 and the
+  decision after the dispatch to 263. The semantics cost most of it: waiters and handlers
+  of one occurrence are served in one dispatch, in order, on the system thread, never in
+  the interrupt; any number of threads may wait for one event, each woken with its own
+  copy; the policy is replaceable at run time. Waking the waiters in the send instead,
+  when nothing needs the system thread (no handler, no waiter's condition, nothing queued
+  before it), was tried twice and measured **slower** both times: with scans to tell
+  whether it may (870 cycles, when this row was 770),
+  and with tests in constant time - a bit per event for its handlers, a count of the
+  waiters with a condition - (731 with the CPU idle, 872 with a thread spinning, and 56
+  more on the paths to a handler, 126 bytes more flash). The
+  wake costs the same wherever it runs; with the CPU idle the system thread dispatches at
+  once anyway, and the test and the send's own call (no longer inlined into the
+  interrupt) come on top. Of 350, the interrupt's entry and exit and the switch take
+  about 195, which would leave the kernel 155 for the send, finding and waking the waiter
+  and the decision: they take about 490 now.
 - **Interrupt to handler (301, target 250):** measured step by step with markers in a
   scratch build (a thread spinning; 10 markers took it to 354, about 5 cycles each, in the
   figures): the interrupt's entry with its saved registers, the benchmark's own interrupt
