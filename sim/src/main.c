@@ -44,6 +44,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     r->avr = firmware_load(elf);
     if (r->avr == NULL) return -1;
     main_stack_paint(r, elf);
+    stack_watch_attach(r, elf);
     if (o->counters_period >= 0) firmware_counters_locate(r, elf);
     if (index == 0) {
         nominal_hz = r->avr->frequency;
@@ -82,6 +83,7 @@ static int report(int n, const options *o) {
         faults += r->console.faults;
         hung |= r->hung;
         overflowed |= main_stack_report(r, o->main_stack);
+        overflowed |= r->stack_watch.overflowed != STACKS_KEPT;
         double t = (double)r->avr->cycle / (double)r->avr->frequency;
         if (robot_at_bootloader(r)) {
             fprintf(stderr, "openswarm-sim: robot %d jumped to the bootloader (BOOT message) at "

@@ -101,8 +101,9 @@ static void usage(FILE *out) {
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
             "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
             "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
-            "left open: printed when it happens), unless --allow-faults, or its main\n"
-            "stack ran into the RAM below it, 7 a firmware hung with interrupts masked.\n");
+            "left open: printed when it happens) or its stack pointer went below the\n"
+            "stack it is on (a thread's past its guard, the main stack into the RAM\n"
+            "below it), unless --allow-faults, 7 a firmware hung with interrupts masked.\n");
 }
 
 /* A whole number in [lo, hi], or -1 after printing what was expected. */

@@ -178,6 +178,25 @@ typedef struct power_down {
     int n_events;
 } power_down;
 
+/* stack_watch.c: the stack pointer below the lowest address its stack
+ * allows - above a thread stack's guard, above the RAM the image reserves -
+ * is an overflow, caught at the instruction. The kernel's guard and the
+ * main stack's paint see only the bytes a frame writes: a frame that
+ * skips them overwrites what lies below unseen. */
+#define MAX_SWITCH_CODE 4
+typedef struct stack_watch {
+    uint16_t floor;      /* the lowest SP the stack it is on allows; 0: not watched */
+    uint16_t main_floor; /* _end - 1: main(), interrupts, the system thread */
+    uint16_t pool, pool_end, block; /* the kernel's os_stack_pool and its block size */
+    /* The code that moves SP from one stack to another (the port's switch.S):
+     * SP is not checked there, and the stack is found again after it. */
+    uint32_t switch_code[MAX_SWITCH_CODE][2];
+    int n_switch_code;
+    uint32_t switch_lo, switch_hi; /* around all of it */
+    int switching;                 /* the last instruction ran there */
+    enum { STACKS_KEPT, THREAD_STACK_OVERFLOWED, MAIN_STACK_OVERFLOWED } overflowed; /* reported */
+} stack_watch;
+
 typedef struct robot {
     int index;
     avr_t *avr;
@@ -196,6 +215,7 @@ typedef struct robot {
     uint16_t main_stack_floor; /* the RAM the image reserves ends here; 0: unmeasured */
     avr_cycle_count_t masked_since; /* interrupts off since this cycle; 0: they are on */
     int hung;                  /* reported: interrupts masked past the limit */
+    stack_watch stack_watch;
     /* Powered off (--faults brownout) until this cycle of the nominal
      * clock: not run, deaf to IR. 0: powered. */
     avr_cycle_count_t off_until;
@@ -218,6 +238,11 @@ avr_t *firmware_load(const char *path);
  * read (a .hex). */
 typedef void (*firmware_symbol_fn)(const char *name, uint32_t value, uint32_t size, int type, void *ctx);
 int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx);
+/* name is wanted, or wanted.lto_priv.N as link-time optimisation renames a
+ * static. */
+int symbol_named(const char *name, const char *wanted);
+/* Data-space addresses in the ELF are offset by this (avr-libc's scripts). */
+#define AVR_DATA_OFFSET 0x800000u
 
 /* main_stack.c: the main stack's worst use, from a pattern painted over
  * its room at load; report prints it (print) and says if it overflowed
@@ -232,6 +257,10 @@ typedef struct thread_stack {
     unsigned used, room;
 } thread_stack;
 int thread_stacks_read(const robot *r, uint32_t pool, uint32_t size, thread_stack *out, int room);
+/* Does a thread stack's guard (the kernel's OS_STACK_GUARD) start at ram[i],
+ * all of it before end? */
+#define STACK_GUARD_BYTES 4
+int stack_guard_at(const uint8_t *ram, uint32_t i, uint32_t end);
 /* firmware_counters.c: --counters, robot r's kernel and IR counters and
  * main stack, read from its RAM by symbol, as one line on stdout; the
  * symbols read as the firmware is loaded (firmware_counters_locate). */
@@ -250,6 +279,31 @@ static inline void interrupt_watch_step(robot *r) {
         r->masked_since = 0;
     else if (r->masked_since == 0)
         r->masked_since = r->avr->cycle ? r->avr->cycle : 1;
+}
+
+void stack_watch_attach(robot *r, const char *elf_path);
+/* After a reset: main()'s stack again. */
+void stack_watch_reset(robot *r);
+void stack_watch_found_stack(robot *r);
+void stack_watch_below(robot *r);
+static inline int stack_watch_in_switch_code(const stack_watch *w, uint32_t pc) {
+    if (pc < w->switch_lo || pc >= w->switch_hi) return 0;
+    for (int i = 0; i < w->n_switch_code; i++)
+        if (pc >= w->switch_code[i][0] && pc < w->switch_code[i][1]) return 1;
+    return 0;
+}
+/* Every instruction: an SP comparison, and a look for the stack SP is on
+ * when the code that moves it between stacks has run. */
+static inline void stack_watch_step(robot *r) {
+    stack_watch *w = &r->stack_watch;
+    if (w->floor == 0) return;
+    if (stack_watch_in_switch_code(w, r->avr->pc)) {
+        w->switching = 1;
+    } else if (w->switching) {
+        stack_watch_found_stack(r);
+    } else if ((uint16_t)(r->avr->data[R_SPL] | r->avr->data[R_SPH] << 8) < w->floor) {
+        stack_watch_below(r);
+    }
 }
 
 /* profile.c: --profile */

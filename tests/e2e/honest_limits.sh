@@ -43,7 +43,7 @@ expect_build_failure
 grep -Eq '^openswarm: RAM overflow by [0-9]+ bytes: .*the thread stack pool, [0-9]+ bytes \(openswarm.json.s "stack": blinker 96' build.log \
   || { cat build.log; echo "FAILED: no RAM overflow explanation"; exit 1; }
 
-big 1190
+big 1150
 "$openswarm" build > build.log 2>&1
 grep -Eq '^openswarm: warning: RAM leaves the main stack [0-9]+ bytes, less than the 128' build.log \
   || { cat build.log; echo "FAILED: no main stack warning"; exit 1; }

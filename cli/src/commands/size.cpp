@@ -104,7 +104,10 @@ void print_main_stack(const Paths &paths, const BuildResult &built, double secon
                 "%s s in the simulator%s\n",
                 used, room, time,
                 status == 0 ? "" : " (the run failed: `openswarm run` shows why)");
-    if (used >= room)
+    // The simulator also tells an overflow its paint does not show: a frame
+    // reserved below the room but not written.
+    if (used >= room || out.find("the main stack (main, interrupts, event handlers) overflowed") !=
+                            std::string::npos)
         std::printf("Warning: it ran into the RAM below it: lower the threads' \"stack\" in "
                     "openswarm.json\n");
 }

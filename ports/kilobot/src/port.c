@@ -15,7 +15,13 @@ void port_thread_start(void); /* switch.S */
 /* Idle sleep (timers keep running), enabled once for good: the only SLEEP
  * instructions are port_idle's and sim_exit's, so there is no stray one
  * for avr-libc's enable-just-before-sleeping guard to catch. */
-void port_init(void) { SMCR = SLEEP_MODE_IDLE | _BV(SE); }
+void port_init(void) {
+    SMCR = SLEEP_MODE_IDLE | _BV(SE);
+    /* The stack pool's block size as an absolute symbol, no byte of code:
+     * openswarm-sim's stack watch finds a thread's guard at a block's start
+     * with it. */
+    __asm__(".global os_stack_block_bytes\n\t.set os_stack_block_bytes, %0" ::"n"(OS_CFG_STACK_BLOCK_BYTES));
+}
 
 /* Push value below sp as CALL pushes a return address, low byte first.
  * (In C, GCC reaches each byte through X with an add and a subtract.) */

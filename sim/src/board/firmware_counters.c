@@ -14,8 +14,6 @@
 
 #include "sim.h"
 
-#define AVR_DATA_OFFSET 0x800000u
-
 static const char *const kernel_names[] = {
     "process_pool_full", "stack_pool_full", "event_data_full", "subscription_pool_full",
     "event_queue_full", "device_table_full", "events_discarded", "stack_overflows",
@@ -29,23 +27,17 @@ static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc",
 
 typedef struct counter_symbols counter_symbols;
 
-/* name, or name.lto_priv.N as link-time optimisation renames a static. */
-static int named(const char *name, const char *wanted) {
-    size_t n = strlen(wanted);
-    return strncmp(name, wanted, n) == 0 && (name[n] == '\0' || name[n] == '.');
-}
-
 static void note_symbol(const char *name, uint32_t value, uint32_t size, int type, void *ctx) {
     (void)type;
     counter_symbols *s = ctx;
     if (name == NULL || value < AVR_DATA_OFFSET) return;
-    if (named(name, "os_stats")) {
+    if (symbol_named(name, "os_stats")) {
         s->kernel = value - AVR_DATA_OFFSET;
         s->kernel_size = size;
-    } else if (named(name, "ir_stats")) {
+    } else if (symbol_named(name, "ir_stats")) {
         s->ir = value - AVR_DATA_OFFSET;
         s->ir_size = size;
-    } else if (named(name, "os_stack_pool")) {
+    } else if (symbol_named(name, "os_stack_pool")) {
         s->stack_pool = value - AVR_DATA_OFFSET;
         s->stack_pool_size = size;
     }

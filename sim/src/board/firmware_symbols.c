@@ -2,6 +2,7 @@
 /* A firmware ELF's symbol table, walked once for whoever needs names and
  * addresses (the profiler's functions, the main stack's floor). */
 #include <fcntl.h>
+#include <string.h>
 #include <gelf.h>
 #include <unistd.h>
 
@@ -34,4 +35,9 @@ int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx) {
     elf_end(elf);
     close(fd);
     return 0;
+}
+
+int symbol_named(const char *name, const char *wanted) {
+    size_t n = strlen(wanted);
+    return strncmp(name, wanted, n) == 0 && (name[n] == '\0' || name[n] == '.');
 }

@@ -12,8 +12,6 @@
 #include "sim.h"
 
 #define PAINT 0xA5
-/* Data-space addresses in the ELF are offset by this (avr-libc's scripts). */
-#define AVR_DATA_OFFSET 0x800000u
 
 /* What the paint needs of an image: where its RAM ends, and whether it
  * has a heap in the same room. */
@@ -71,6 +69,7 @@ int main_stack_report(const robot *r, int print) {
         fprintf(stderr, "openswarm-sim: %smain stack: worst use %u of %u bytes\n", r->console.prefix,
                 used, room);
     if (used < room) return 0;
+    if (r->stack_watch.overflowed == MAIN_STACK_OVERFLOWED) return 1; /* told when it happened */
     fprintf(stderr, "openswarm-sim: %sthe main stack (main, interrupts, event handlers) ran into "
                     "the RAM the image reserves (it had %u bytes) and overwrote what lies there; give it more by lowering the "
                     "threads' \"stack\" in openswarm.json\n",

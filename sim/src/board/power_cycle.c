@@ -44,6 +44,7 @@ static void start_again(robot *r) {
     r->doze_until = 0;
     r->wake_registered = 0;
     r->masked_since = 0;
+    stack_watch_reset(r);
     board_pins_again(r->avr);
     outputs_as_at_reset(r->avr);
     trace_reset(r);

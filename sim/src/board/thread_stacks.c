@@ -16,9 +16,9 @@
 #include "sim.h"
 
 #define PAINT 0xE7 /* kernel/src/kernel_internal.h's OS_STACK_PAINT */
-static const uint8_t guard[4] = {0xA5, 0x5A, 0xC3, 0x3C}; /* its OS_STACK_GUARD */
+static const uint8_t guard[STACK_GUARD_BYTES] = {0xA5, 0x5A, 0xC3, 0x3C}; /* its OS_STACK_GUARD */
 
-static int guard_at(const uint8_t *ram, uint32_t i, uint32_t end) {
+int stack_guard_at(const uint8_t *ram, uint32_t i, uint32_t end) {
     return i + sizeof guard <= end && memcmp(ram + i, guard, sizeof guard) == 0;
 }
 
@@ -28,14 +28,14 @@ int thread_stacks_read(const robot *r, uint32_t pool, uint32_t size, thread_stac
     uint32_t end = pool + size;
     int n = 0;
     for (uint32_t i = pool; i < end && n < room;) {
-        if (!guard_at(ram, i, end)) {
+        if (!stack_guard_at(ram, i, end)) {
             i++;
             continue;
         }
         uint32_t deepest = i + sizeof guard;
         while (deepest < end && ram[deepest] == PAINT) deepest++;
         uint32_t top = deepest, k = deepest;
-        for (; k < end && !guard_at(ram, k, end); k++)
+        for (; k < end && !stack_guard_at(ram, k, end); k++)
             if (ram[k] != PAINT) top = k + 1;
         out[n++] = (thread_stack){top - deepest, top - (i + (uint32_t)sizeof guard)};
         i = k;
