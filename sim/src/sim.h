@@ -186,7 +186,9 @@ typedef struct power_down {
 #define MAX_SWITCH_CODE 4
 typedef struct stack_watch {
     uint16_t floor;      /* the lowest SP the stack it is on allows; 0: not watched */
+    uint16_t mark;       /* SP below this is looked at: floor, or on the main stack its lowest yet */
     uint16_t main_floor; /* _end - 1: main(), interrupts, the system thread */
+    uint16_t main_lowest; /* the main stack's lowest SP yet: its worst use, frames never written included */
     uint16_t pool, pool_end, block; /* the kernel's os_stack_pool and its block size */
     /* The code that moves SP from one stack to another (the port's switch.S):
      * SP is not checked there, and the stack is found again after it. */
@@ -286,14 +288,17 @@ void stack_watch_attach(robot *r, const char *elf_path);
 void stack_watch_reset(robot *r);
 void stack_watch_found_stack(robot *r);
 void stack_watch_below(robot *r);
+/* The main stack's worst use by its lowest SP (0: unwatched). */
+unsigned stack_watch_main_used(const robot *r);
 static inline int stack_watch_in_switch_code(const stack_watch *w, uint32_t pc) {
     if (pc < w->switch_lo || pc >= w->switch_hi) return 0;
     for (int i = 0; i < w->n_switch_code; i++)
         if (pc >= w->switch_code[i][0] && pc < w->switch_code[i][1]) return 1;
     return 0;
 }
-/* Every instruction: an SP comparison, and a look for the stack SP is on
- * when the code that moves it between stacks has run. */
+/* Every instruction: an SP comparison (out of line only at a new depth of
+ * the main stack or below a thread stack's floor), and a look for the
+ * stack SP is on when the code that moves it between stacks has run. */
 static inline void stack_watch_step(robot *r) {
     stack_watch *w = &r->stack_watch;
     if (w->floor == 0) return;
@@ -301,7 +306,7 @@ static inline void stack_watch_step(robot *r) {
         w->switching = 1;
     } else if (w->switching) {
         stack_watch_found_stack(r);
-    } else if ((uint16_t)(r->avr->data[R_SPL] | r->avr->data[R_SPH] << 8) < w->floor) {
+    } else if ((uint16_t)(r->avr->data[R_SPL] | r->avr->data[R_SPH] << 8) < w->mark) {
         stack_watch_below(r);
     }
 }

@@ -5,8 +5,10 @@
  * The linker checks only that reservation, so an app whose thread stacks
  * leave the main stack no room builds and then crashes. Before the
  * firmware starts, the simulator paints the room between with a pattern;
- * at the end, the lowest byte that changed tells how deep the stack went
- * (a frame reserved deeper but never written would not show). */
+ * at the end, the lowest byte that changed tells how deep the stack went.
+ * A frame reserved deeper but never written does not show there, so the
+ * worst use is the deeper of that and the lowest stack pointer the stack
+ * watch saw (stack_watch.c). */
 #include <string.h>
 
 #include "sim.h"
@@ -59,7 +61,8 @@ unsigned main_stack_worst(const robot *r, unsigned *room) {
     if (!r->main_stack_floor) return 0;
     unsigned a = r->main_stack_floor;
     while (a <= r->avr->ramend && r->avr->data[a] == PAINT) a++;
-    return r->avr->ramend + 1u - a;
+    unsigned painted = r->avr->ramend + 1u - a, by_sp = stack_watch_main_used(r);
+    return by_sp > painted ? by_sp : painted; /* a frame reserved but not written: only SP shows it */
 }
 
 int main_stack_report(const robot *r, int print) {

@@ -67,6 +67,7 @@ void stack_watch_attach(robot *r, const char *elf_path) {
     /* Unwatched: a .hex (no symbols). */
     if (s.end <= AVR_DATA_OFFSET || s.end - AVR_DATA_OFFSET > r->avr->ramend) return;
     w->main_floor = (uint16_t)(s.end - AVR_DATA_OFFSET - 1u);
+    w->main_lowest = (uint16_t)r->avr->ramend;
     if (s.pool_size != 0 && s.pool + s.pool_size <= s.end - AVR_DATA_OFFSET) {
         w->pool = (uint16_t)s.pool;
         w->pool_end = (uint16_t)(s.pool + s.pool_size);
@@ -82,10 +83,21 @@ void stack_watch_attach(robot *r, const char *elf_path) {
     stack_watch_reset(r);
 }
 
+/* On main's stack from here: below its lowest SP yet is a new depth. */
+static void on_main_stack(stack_watch *w) {
+    w->floor = w->main_floor;
+    w->mark = w->main_lowest;
+}
+
 void stack_watch_reset(robot *r) {
     stack_watch *w = &r->stack_watch;
-    w->floor = w->main_floor;
+    on_main_stack(w);
     w->switching = 0;
+}
+
+unsigned stack_watch_main_used(const robot *r) {
+    const stack_watch *w = &r->stack_watch;
+    return w->main_floor != 0 ? r->avr->ramend - w->main_lowest : 0;
 }
 
 /* The lowest SP of the thread stack holding sp: just above the guard at
@@ -105,13 +117,12 @@ void stack_watch_found_stack(robot *r) {
     stack_watch *w = &r->stack_watch;
     uint16_t sp = stack_pointer(r->avr);
     w->switching = 0;
-    if (sp >= w->main_floor)
-        w->floor = w->main_floor;
-    else if (sp >= w->pool && sp < w->pool_end)
-        w->floor = thread_floor(w, r->avr->data, sp);
-    else
-        w->floor = w->main_floor; /* on no stack at all */
-    if (sp < w->floor) stack_watch_below(r);
+    if (sp >= w->pool && sp < w->pool_end) {
+        w->floor = w->mark = thread_floor(w, r->avr->data, sp);
+    } else {
+        on_main_stack(w); /* or on no stack at all, below it */
+    }
+    if (sp < w->mark) stack_watch_below(r);
 }
 
 static uint16_t opcode_at(const avr_t *avr, uint32_t pc) {
@@ -130,11 +141,15 @@ static int sp_half_written(const avr_t *avr) {
     return writes_io(op, SPL_IO) || (writes_io(op, SREG_IO) && writes_io(opcode_at(avr, avr->pc + 2u), SPL_IO));
 }
 
+/* SP is below the mark: a new depth of the main stack, or an overflow. */
 void stack_watch_below(robot *r) {
     stack_watch *w = &r->stack_watch;
-    if (w->overflowed || sp_half_written(r->avr)) return;
-    w->overflowed = w->floor == w->main_floor ? MAIN_STACK_OVERFLOWED : THREAD_STACK_OVERFLOWED;
+    if (sp_half_written(r->avr)) return;
     uint16_t sp = stack_pointer(r->avr);
+    int on_main = w->floor == w->main_floor;
+    if (on_main) w->main_lowest = w->mark = sp;
+    if (sp >= w->floor || w->overflowed) return;
+    w->overflowed = on_main ? MAIN_STACK_OVERFLOWED : THREAD_STACK_OVERFLOWED;
     unsigned deep = (unsigned)(w->floor - sp);
     double t = (double)r->avr->cycle / r->avr->frequency;
     if (w->overflowed == MAIN_STACK_OVERFLOWED)
