@@ -182,20 +182,26 @@ typedef struct power_down {
  * allows - above a thread stack's guard, above the RAM the image reserves -
  * is an overflow, caught at the instruction. The kernel's guard and the
  * main stack's paint see only the bytes a frame writes: a frame that
- * skips them overwrites what lies below unseen. */
+ * skips them overwrites what lies below unseen. Each stack's lowest SP is
+ * kept too: its worst use, frames reserved but never written included. */
 #define MAX_SWITCH_CODE 4
+#define MAX_WATCHED_STACKS 17 /* main's and 16 threads' */
+typedef struct watched_stack {
+    uint16_t floor;  /* the lowest SP it allows */
+    uint16_t lowest; /* its lowest SP yet */
+} watched_stack;
 typedef struct stack_watch {
-    uint16_t floor;      /* the lowest SP the stack it is on allows; 0: not watched */
-    uint16_t mark;       /* SP below this is looked at: floor, or on the main stack its lowest yet */
-    uint16_t main_floor; /* _end - 1: main(), interrupts, the system thread */
-    uint16_t main_lowest; /* the main stack's lowest SP yet: its worst use, frames never written included */
+    uint16_t mark; /* SP below this is looked at: the lowest yet of the stack it is on */
+    watched_stack stacks[MAX_WATCHED_STACKS]; /* [0]: main()'s, floor _end - 1; 0: unwatched */
+    int n_stacks, on;                         /* on: the one SP is on */
     uint16_t pool, pool_end, block; /* the kernel's os_stack_pool and its block size */
     /* The code that moves SP from one stack to another (the port's switch.S):
      * SP is not checked there, and the stack is found again after it. */
     uint32_t switch_code[MAX_SWITCH_CODE][2];
     int n_switch_code;
-    uint32_t switch_lo, switch_hi; /* around all of it */
-    int switching;                 /* the last instruction ran there */
+    uint32_t switch_lo, switch_hi;   /* around all of it */
+    uint32_t thread_start[2];        /* port_thread_start: a new thread's first instructions */
+    uint32_t switch_pc;              /* the last instruction ran there, at this address; 0: no */
     enum { STACKS_KEPT, THREAD_STACK_OVERFLOWED, MAIN_STACK_OVERFLOWED } overflowed; /* reported */
 } stack_watch;
 
@@ -290,6 +296,9 @@ void stack_watch_found_stack(robot *r);
 void stack_watch_below(robot *r);
 /* The main stack's worst use by its lowest SP (0: unwatched). */
 unsigned stack_watch_main_used(const robot *r);
+/* The lowest byte the thread stack whose guard starts at data address
+ * guard has used by its lowest SP; 0: not seen. */
+uint32_t stack_watch_thread_deepest(const robot *r, uint32_t guard);
 static inline int stack_watch_in_switch_code(const stack_watch *w, uint32_t pc) {
     if (pc < w->switch_lo || pc >= w->switch_hi) return 0;
     for (int i = 0; i < w->n_switch_code; i++)
@@ -301,10 +310,10 @@ static inline int stack_watch_in_switch_code(const stack_watch *w, uint32_t pc) 
  * stack SP is on when the code that moves it between stacks has run. */
 static inline void stack_watch_step(robot *r) {
     stack_watch *w = &r->stack_watch;
-    if (w->floor == 0) return;
+    if (w->n_stacks == 0) return;
     if (stack_watch_in_switch_code(w, r->avr->pc)) {
-        w->switching = 1;
-    } else if (w->switching) {
+        w->switch_pc = r->avr->pc;
+    } else if (w->switch_pc != 0) {
         stack_watch_found_stack(r);
     } else if ((uint16_t)(r->avr->data[R_SPL] | r->avr->data[R_SPH] << 8) < w->mark) {
         stack_watch_below(r);

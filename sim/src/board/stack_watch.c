@@ -20,6 +20,7 @@
 
 static const char *const switch_code_names[] = {"port_switch", "port_thread_start",
                                                 "port_call_on_system_stack"};
+enum { THREAD_START = 1 }; /* port_thread_start's place above */
 #define N_SWITCH_CODE (sizeof switch_code_names / sizeof switch_code_names[0])
 
 /* What the watch needs of an image, read once per firmware file. */
@@ -66,8 +67,8 @@ void stack_watch_attach(robot *r, const char *elf_path) {
     image_stacks s = stacks_of(elf_path);
     /* Unwatched: a .hex (no symbols). */
     if (s.end <= AVR_DATA_OFFSET || s.end - AVR_DATA_OFFSET > r->avr->ramend) return;
-    w->main_floor = (uint16_t)(s.end - AVR_DATA_OFFSET - 1u);
-    w->main_lowest = (uint16_t)r->avr->ramend;
+    w->stacks[0] = (watched_stack){(uint16_t)(s.end - AVR_DATA_OFFSET - 1u), (uint16_t)r->avr->ramend};
+    w->n_stacks = 1;
     if (s.pool_size != 0 && s.pool + s.pool_size <= s.end - AVR_DATA_OFFSET) {
         w->pool = (uint16_t)s.pool;
         w->pool_end = (uint16_t)(s.pool + s.pool_size);
@@ -80,24 +81,32 @@ void stack_watch_attach(robot *r, const char *elf_path) {
         if (s.code[i][0] < w->switch_lo) w->switch_lo = s.code[i][0];
         if (s.code[i][1] > w->switch_hi) w->switch_hi = s.code[i][1];
     }
+    memcpy(w->thread_start, s.code[THREAD_START], sizeof w->thread_start);
     stack_watch_reset(r);
 }
 
-/* On main's stack from here: below its lowest SP yet is a new depth. */
-static void on_main_stack(stack_watch *w) {
-    w->floor = w->main_floor;
-    w->mark = w->main_lowest;
+/* SP is on stack k from here: below its lowest yet is a new depth. */
+static void move_to(stack_watch *w, int k) {
+    w->on = k;
+    w->mark = w->stacks[k].lowest;
 }
 
 void stack_watch_reset(robot *r) {
     stack_watch *w = &r->stack_watch;
-    on_main_stack(w);
-    w->switching = 0;
+    move_to(w, 0);
+    w->switch_pc = 0;
 }
 
 unsigned stack_watch_main_used(const robot *r) {
     const stack_watch *w = &r->stack_watch;
-    return w->main_floor != 0 ? r->avr->ramend - w->main_lowest : 0;
+    return w->n_stacks != 0 ? r->avr->ramend - w->stacks[0].lowest : 0;
+}
+
+uint32_t stack_watch_thread_deepest(const robot *r, uint32_t guard) {
+    const stack_watch *w = &r->stack_watch;
+    for (int k = 1; k < w->n_stacks; k++)
+        if (w->stacks[k].floor == guard + STACK_GUARD_BYTES - 1u) return w->stacks[k].lowest + 1u;
+    return 0;
 }
 
 /* The lowest SP of the thread stack holding sp: just above the guard at
@@ -113,14 +122,27 @@ static uint16_t thread_floor(const stack_watch *w, const uint8_t *ram, uint16_t 
     return w->pool - 1u;
 }
 
+/* The thread stack with this floor, a new one if none has it (the least
+ * recent one's place when all are taken). */
+static int watched_thread_stack(stack_watch *w, uint16_t floor, uint16_t sp) {
+    for (int k = 1; k < w->n_stacks; k++)
+        if (w->stacks[k].floor == floor) return k;
+    int k = w->n_stacks < MAX_WATCHED_STACKS ? w->n_stacks++ : 1;
+    w->stacks[k] = (watched_stack){floor, sp};
+    return k;
+}
+
 void stack_watch_found_stack(robot *r) {
     stack_watch *w = &r->stack_watch;
     uint16_t sp = stack_pointer(r->avr);
-    w->switching = 0;
+    int starting = w->switch_pc >= w->thread_start[0] && w->switch_pc < w->thread_start[1];
+    w->switch_pc = 0;
     if (sp >= w->pool && sp < w->pool_end) {
-        w->floor = w->mark = thread_floor(w, r->avr->data, sp);
+        int k = watched_thread_stack(w, thread_floor(w, r->avr->data, sp), sp);
+        if (starting) w->stacks[k].lowest = sp; /* a new thread: the last one's depth is not its */
+        move_to(w, k);
     } else {
-        on_main_stack(w); /* or on no stack at all, below it */
+        move_to(w, 0); /* or on no stack at all, below main's */
     }
     if (sp < w->mark) stack_watch_below(r);
 }
@@ -141,27 +163,28 @@ static int sp_half_written(const avr_t *avr) {
     return writes_io(op, SPL_IO) || (writes_io(op, SREG_IO) && writes_io(opcode_at(avr, avr->pc + 2u), SPL_IO));
 }
 
-/* SP is below the mark: a new depth of the main stack, or an overflow. */
+/* SP is below the mark: a new depth of the stack it is on, and an
+ * overflow if it is below the floor too. */
 void stack_watch_below(robot *r) {
     stack_watch *w = &r->stack_watch;
     if (sp_half_written(r->avr)) return;
     uint16_t sp = stack_pointer(r->avr);
-    int on_main = w->floor == w->main_floor;
-    if (on_main) w->main_lowest = w->mark = sp;
-    if (sp >= w->floor || w->overflowed) return;
-    w->overflowed = on_main ? MAIN_STACK_OVERFLOWED : THREAD_STACK_OVERFLOWED;
-    unsigned deep = (unsigned)(w->floor - sp);
+    watched_stack *on = &w->stacks[w->on];
+    on->lowest = w->mark = sp;
+    if (sp >= on->floor || w->overflowed) return;
+    w->overflowed = w->on == 0 ? MAIN_STACK_OVERFLOWED : THREAD_STACK_OVERFLOWED;
+    unsigned deep = (unsigned)(on->floor - sp);
     double t = (double)r->avr->cycle / r->avr->frequency;
     if (w->overflowed == MAIN_STACK_OVERFLOWED)
         fprintf(stderr, "openswarm-sim: %sthe main stack (main, interrupts, event handlers) overflowed at "
                         "%.6f s (PC 0x%04x): its stack pointer went %u byte%s into the RAM the image "
                         "reserves (up to 0x%04x), whose variables its frames now overlay; give it more room "
                         "by lowering the threads' \"stack\" in openswarm.json\n",
-                r->console.prefix, t, (unsigned)r->avr->pc, deep, deep == 1 ? "" : "s", w->main_floor);
+                r->console.prefix, t, (unsigned)r->avr->pc, deep, deep == 1 ? "" : "s", on->floor);
     else
         fprintf(stderr, "openswarm-sim: %sa thread's stack overflowed at %.6f s (PC 0x%04x): its stack "
                         "pointer went %u byte%s below its stack's lowest byte (0x%04x, above its guard), "
                         "and its frames now overlay the guard and what lies below; give the thread a larger \"stack\" "
                         "in openswarm.json (openswarm-sim --counters shows each stack's worst use)\n",
-                r->console.prefix, t, (unsigned)r->avr->pc, deep, deep == 1 ? "" : "s", w->floor + 1u);
+                r->console.prefix, t, (unsigned)r->avr->pc, deep, deep == 1 ? "" : "s", on->floor + 1u);
 }

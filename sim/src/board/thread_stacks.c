@@ -6,9 +6,10 @@
  * live stack is its guard, the paint the thread never reached, and what it
  * used, up to its top: the last byte that is not paint before the next
  * guard or the pool's end (free blocks above it are paint). The worst use
- * is from the lowest byte no longer paint to that top; a frame reserved
- * deeper but never written would not show, and a top byte that happens to
- * equal the paint shortens the stack's room by that byte.
+ * is from the lowest byte no longer paint, or the lowest the stack
+ * watch saw its stack pointer reach if that is deeper (a frame reserved
+ * but never written), to that top; a top byte that happens to equal the
+ * paint shortens the stack's room by that byte.
  * Stacks are listed by address, which is the order threads started in
  * while none has ended. */
 #include <string.h>
@@ -37,6 +38,8 @@ int thread_stacks_read(const robot *r, uint32_t pool, uint32_t size, thread_stac
         uint32_t top = deepest, k = deepest;
         for (; k < end && !stack_guard_at(ram, k, end); k++)
             if (ram[k] != PAINT) top = k + 1;
+        uint32_t by_sp = stack_watch_thread_deepest(r, i); /* frames never written too */
+        if (by_sp != 0 && by_sp < deepest) deepest = by_sp;
         out[n++] = (thread_stack){top - deepest, top - (i + (uint32_t)sizeof guard)};
         i = k;
     }
