@@ -12,7 +12,8 @@
 #  - the .hex KiloGUI uploads: flash only (no .mmcu record at 0x910000),
 #    and it runs in the simulator as the ELF does; an ELF without the MCU
 #    record (a classic Makefile's) runs too, said once;
-#  - `openswarm size` measures the main stack's worst use in the simulator.
+#  - `openswarm size` measures the main stack's and the thread's worst use
+#    in the simulator.
 #   honest_limits.sh OPENSWARM SIMULATOR WORKDIR
 set -euo pipefail
 openswarm=$1 sim=$2 work=$3
@@ -76,4 +77,6 @@ diff <(grep '\] led' elf.log) <(grep '\] led' classic.log)
 "$openswarm" size > size.log 2>&1
 grep -Eq '^Main stack \(main, interrupts, event handlers\): worst use [1-9][0-9]* of its [0-9]+ bytes in 5 s in the simulator$' size.log \
   || { cat size.log; echo "FAILED: size does not measure the main stack"; exit 1; }
-echo "honest limits: 8 passed, 0 failed"
+grep -Eq '^  blinker +[1-9][0-9]* of +172$' size.log \
+  || { cat size.log; echo "FAILED: size does not measure the thread's stack"; exit 1; }
+echo "honest limits: 9 passed, 0 failed"

@@ -2,6 +2,7 @@
 // and port, the thread stacks, the events' data, the event queue, the app,
 // the C runtime), each thread's stack and each event's data, and the
 // OpenSwarm paper's equation (1) evaluated for this app.
+#include <cstring>
 #include <map>
 
 #include "../app_config.hpp"
@@ -82,17 +83,67 @@ void print_equation(const Footprint &f) {
     for (const auto &w : f.warnings) std::printf("Warning: %s\n", w.c_str());
 }
 
-// The main stack's worst use, measured by running the image in the
-// simulator (openswarm-sim --main-stack) for seconds of simulated time.
-void print_main_stack(const Paths &paths, const BuildResult &built, double seconds) {
+// "U/R,U/R,..." after "thread_stacks=" in the simulator's counters line:
+// the live thread stacks' worst use and room, by address.
+std::vector<std::pair<unsigned, unsigned>> thread_stacks_counted(const std::string &out) {
+    std::vector<std::pair<unsigned, unsigned>> stacks;
+    auto at = out.rfind("thread_stacks=");
+    if (at == std::string::npos) return stacks;
+    const char *p = out.c_str() + at + std::strlen("thread_stacks=");
+    unsigned used, room;
+    int n;
+    while (std::sscanf(p, "%u/%u%n", &used, &room, &n) == 2) {
+        stacks.emplace_back(used, room);
+        p += n;
+        if (*p++ != ',') break;
+    }
+    return stacks;
+}
+
+// Names for the stacks the simulator lists by address: openswarm.json's
+// threads, when as many stacks live and each has the room its thread's
+// carving gives (less the guard), in that order; else none.
+std::vector<std::string> stack_names(const Footprint &f,
+                                     const std::vector<std::pair<unsigned, unsigned>> &stacks) {
+    if (stacks.size() != f.threads.size()) return {};
+    std::vector<std::string> names;
+    for (size_t i = 0; i < stacks.size(); i++) {
+        if (stacks[i].second != f.threads[i].carved - f.stack_guard) return {};
+        names.push_back(f.threads[i].name);
+    }
+    return names;
+}
+
+void print_thread_stacks(const Footprint &f, const std::string &out, const char *time) {
+    auto stacks = thread_stacks_counted(out);
+    if (stacks.empty()) return;
+    auto names = stack_names(f, stacks);
+    std::printf("Thread stacks: worst use in %s s in the simulator, of the room each has above its "
+                "guard%s\n",
+                time, names.empty() ? " (by address: the order the threads started in)" : "");
+    for (size_t i = 0; i < stacks.size(); i++) {
+        std::string name = names.empty() ? "stack " + std::to_string(i + 1) : names[i];
+        std::printf("  %-38s %6u of %4u\n", name.c_str(), stacks[i].first, stacks[i].second);
+    }
+    for (size_t i = 0; i < stacks.size(); i++)
+        if (stacks[i].first > stacks[i].second)
+            std::printf("Warning: %s overflowed its stack in the simulator: give it a larger "
+                        "\"stack\" in openswarm.json\n",
+                        names.empty() ? ("stack " + std::to_string(i + 1)).c_str() : names[i].c_str());
+}
+
+// The main stack's and the threads' worst use, measured by running the
+// image in the simulator (openswarm-sim --main-stack --counters) for
+// seconds of simulated time: the deepest their stack pointers went.
+void print_stack_use(const Paths &paths, const BuildResult &built, const Footprint &f, double seconds) {
     const PortInfo &info = port_info(built.port);
     if (info.runner != Runner::simavr || paths.simulator.empty()) return;
     std::string out;
     char time[32];
     std::snprintf(time, sizeof time, "%g", seconds);
-    int status = capture_program_and_errors(
-        {paths.simulator.string(), "--quiet", "--main-stack", "--time", time, built.image.string()},
-        out);
+    int status = capture_program_and_errors({paths.simulator.string(), "--quiet", "--main-stack",
+                                             "--counters", "0", "--time", time, built.image.string()},
+                                            out);
     unsigned used = 0, room = 0;
     auto at = out.find("main stack: worst use ");
     if (at == std::string::npos ||
@@ -104,12 +155,10 @@ void print_main_stack(const Paths &paths, const BuildResult &built, double secon
                 "%s s in the simulator%s\n",
                 used, room, time,
                 status == 0 ? "" : " (the run failed: `openswarm run` shows why)");
-    // The simulator also tells an overflow its paint does not show: a frame
-    // reserved below the room but not written.
-    if (used >= room || out.find("the main stack (main, interrupts, event handlers) overflowed") !=
-                            std::string::npos)
+    if (used >= room)
         std::printf("Warning: it ran into the RAM below it: lower the threads' \"stack\" in "
                     "openswarm.json\n");
+    print_thread_stacks(f, out, time);
 }
 
 int run_size(const std::string &dir, const Paths &paths, double seconds) {
@@ -130,7 +179,7 @@ int run_size(const std::string &dir, const Paths &paths, double seconds) {
     print_stacks(f);
     print_events(f);
     print_equation(f);
-    print_main_stack(paths, *built, seconds);
+    print_stack_use(paths, *built, f, seconds);
     return EXIT_OK;
 }
 
@@ -142,7 +191,7 @@ void add_size_command(CLI::App &app, const Paths &paths) {
     CLI::App *cmd = app.add_subcommand("size", "Show where the app's flash and RAM go");
     cmd->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
     cmd->add_option("-t,--time", *seconds,
-                    "simulated seconds to run the app for to measure the main stack (Kilobot)")
+                    "simulated seconds to run the app for to measure its stacks' worst use (Kilobot)")
         ->capture_default_str()
         ->check(CLI::Range(0.001, 3600.0));
     cmd->callback([dir, seconds, &paths] { exit_code = run_size(*dir, paths, *seconds); });
