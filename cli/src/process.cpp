@@ -63,9 +63,9 @@ std::string simulator_failure(int status) {
     case 3: return "the firmware crashed (above): `openswarm run --gdb 1234` shows where";
     case 4: return "the firmware did not stop by itself in the time given";
     case 5: return "a robot jumped to the bootloader (a BOOT message)";
-    case 6: return "the firmware reported a kernel fault, or a stack overflowed (above: which, "
-                   "when): the run fails; a thread's stack overflow wants a bigger \"stack\" in "
-                   "openswarm.json";
+    case 6: return "the firmware reported a kernel fault, a stack overflowed or a pointer wrote "
+                   "into the CPU's registers (above: which, when): the run fails; a thread's stack "
+                   "overflow wants a bigger \"stack\" in openswarm.json";
     case 7: return "the firmware hung with interrupts masked (above: since when, where)";
     default: return "the firmware stopped with status " + std::to_string(status);
     }

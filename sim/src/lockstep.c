@@ -105,6 +105,7 @@ static int run_robot(robot *r) {
     }
     while (!robot_finished(r) && r->avr->cycle < end) {
         power_down_before_step(r);
+        register_store_check(r);
         if (profiling)
             step_profiled(r);
         else

@@ -45,6 +45,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     if (r->avr == NULL) return -1;
     main_stack_paint(r, elf);
     stack_watch_attach(r, elf);
+    register_store_watch_attach(r, elf);
     if (o->counters_period >= 0) firmware_counters_locate(r, elf);
     if (index == 0) {
         nominal_hz = r->avr->frequency;
@@ -76,14 +77,15 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
 }
 
 static int report(int n, const options *o) {
-    int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, overflowed = 0;
+    int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, memory_broken = 0;
     unsigned faults = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         faults += r->console.faults;
         hung |= r->hung;
-        overflowed |= main_stack_report(r, o->main_stack);
-        overflowed |= r->stack_watch.overflowed != STACKS_KEPT;
+        /* a stack past its room, a store into the registers: told when it happened */
+        memory_broken |= main_stack_report(r, o->main_stack);
+        memory_broken |= r->stack_watch.overflowed != STACKS_KEPT || r->stored_to_register;
         double t = (double)r->avr->cycle / (double)r->avr->frequency;
         if (robot_at_bootloader(r)) {
             fprintf(stderr, "openswarm-sim: robot %d jumped to the bootloader (BOOT message) at "
@@ -111,7 +113,7 @@ static int report(int n, const options *o) {
     if (crashed) return EXIT_CRASH;
     if (booted) return EXIT_BOOTLOADER;
     if (hung) return EXIT_HANG;
-    if (overflowed && !o->allow_faults) return EXIT_FAULT;
+    if (memory_broken && !o->allow_faults) return EXIT_FAULT;
     if (faults != 0 && !o->allow_faults) {
         fprintf(stderr, "openswarm-sim: %u kernel fault%s (above): the run fails (--allow-faults if "
                         "the firmware provokes them on purpose)\n",

@@ -103,7 +103,8 @@ static void usage(FILE *out) {
             "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
             "left open: printed when it happens) or its stack pointer went below the\n"
             "stack it is on (a thread's past its guard, the main stack into the RAM\n"
-            "below it), unless --allow-faults, 7 a firmware hung with interrupts masked.\n");
+            "below it) or it stored through a pointer into the CPU's registers (a NULL\n"
+            "pointer), unless --allow-faults, 7 a firmware hung with interrupts masked.\n");
 }
 
 /* A whole number in [lo, hi], or -1 after printing what was expected. */

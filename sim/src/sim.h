@@ -205,6 +205,7 @@ typedef struct stack_watch {
     enum { STACKS_KEPT, THREAD_STACK_OVERFLOWED, MAIN_STACK_OVERFLOWED } overflowed; /* reported */
 } stack_watch;
 
+#define MAX_REGISTER_STORE_CODE 8
 typedef struct robot {
     int index;
     avr_t *avr;
@@ -224,6 +225,12 @@ typedef struct robot {
     avr_cycle_count_t masked_since; /* interrupts off since this cycle; 0: they are on */
     int hung;                  /* reported: interrupts masked past the limit */
     stack_watch stack_watch;
+    /* register_store_watch.c: reported, a store through a pointer into
+     * r0-r31; and the code that does so on purpose (avr-libc's EEPROM
+     * reads, which load their result into r22-r25 that way). */
+    int register_store_watched, stored_to_register;
+    uint32_t register_store_code[MAX_REGISTER_STORE_CODE][2];
+    int n_register_store_code;
     /* Powered off (--faults brownout) until this cycle of the nominal
      * clock: not run, deaf to IR. 0: powered. */
     avr_cycle_count_t off_until;
@@ -318,6 +325,40 @@ static inline void stack_watch_step(robot *r) {
     } else if ((uint16_t)(r->avr->data[R_SPL] | r->avr->data[R_SPH] << 8) < w->mark) {
         stack_watch_below(r);
     }
+}
+
+/* register_store_watch.c: a store through a pointer (X, Y or Z: 0, 1, 2)
+ * to a data address below 0x20, the CPU's registers. */
+void register_store_watch_attach(robot *r, const char *elf_path);
+void register_store_report(robot *r, unsigned pointer, unsigned address);
+/* The pointer register (X r27:r26, Y r29:r28, Z r31:r30) of a store
+ * instruction, its address as the store uses it. */
+static inline unsigned pointer_at(const avr_t *avr, unsigned pointer) {
+    return avr->data[26u + 2u * pointer] | avr->data[27u + 2u * pointer] << 8;
+}
+/* Before each instruction: is it ST or STD, and below 0x20 where it
+ * stores? ST/STD Y+q, Z+q: 10q0 qq1r rrrr bqqq (b: Y); ST with X, or with
+ * Y or Z moving: 1001 001r rrrr xxxx (1, 2: Z+, -Z; 9, A: Y+, -Y; C, D, E:
+ * X, X+, -X; 0 is STS, F is PUSH). */
+static inline void register_store_check(robot *r) {
+    const avr_t *avr = r->avr;
+    uint16_t op = (uint16_t)(avr->flash[avr->pc] | avr->flash[avr->pc + 1] << 8);
+    unsigned pointer, offset = 0, before = 0;
+    if ((op & 0xD200u) == 0x8200u) {
+        pointer = op & 0x8u ? 1u : 2u;
+        offset = (op & 0x7u) | ((op >> 7) & 0x18u) | ((op >> 8) & 0x20u);
+    } else if ((op & 0xFE00u) == 0x9200u) {
+        static const int8_t kind[16] = {-1, 2, 2, -1, -1, -1, -1, -1, -1, 1, 1, -1, 0, 0, 0, -1};
+        static const uint8_t decrements[16] = {[2] = 1, [10] = 1, [14] = 1};
+        int k = kind[op & 0xFu];
+        if (k < 0) return;
+        pointer = (unsigned)k;
+        before = decrements[op & 0xFu];
+    } else {
+        return;
+    }
+    unsigned address = (pointer_at(avr, pointer) - before + offset) & 0xFFFFu;
+    if (address < 0x20u) register_store_report(r, pointer, address);
 }
 
 /* profile.c: --profile */

@@ -16,7 +16,7 @@ status=0
 cat run.log
 test "$status" -eq 1 || { echo "FAILED: run exited $status, not 1"; exit 1; }
 grep -Eq "^openswarm-sim: kernel fault: stack overflow in thread [0-9]+ \(blinker\) at 0\.[0-9]+ s$" run.log
-grep -q "^openswarm: the firmware reported a kernel fault, or a stack overflowed (above: which, when): the run fails" run.log
+grep -q "^openswarm: the firmware reported a kernel fault, a stack overflowed or a pointer wrote into the CPU's registers (above: which, when): the run fails" run.log
 status=0
 "$openswarm" test > test.log 2>&1 || status=$?
 cat test.log

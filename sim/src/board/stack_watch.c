@@ -9,8 +9,11 @@
  * is now on is found again - the main stack, or the guard at the nearest
  * block start below SP. Anywhere else, SP below that floor is an overflow,
  * reported once, at the instruction that made it, and the run fails as on
- * a kernel fault. The compiler moves SP in two halves (SPH, SREG, SPL):
- * the half-written value is not judged. */
+ * a kernel fault. Each stack's lowest SP is kept too: its worst use
+ * (--main-stack, --counters, openswarm size), frames reserved but never
+ * written included, which the paint the kernel and the simulator lay
+ * cannot show. The compiler moves SP in two halves (SPH, SREG, SPL): the
+ * half-written value is not judged. */
 #include <string.h>
 
 #include "sim.h"
