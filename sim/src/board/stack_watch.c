@@ -144,8 +144,13 @@ void stack_watch_found_stack(robot *r) {
         int k = watched_thread_stack(w, thread_floor(w, r->avr->data, sp), sp);
         if (starting) w->stacks[k].lowest = sp; /* a new thread: the last one's depth is not its */
         move_to(w, k);
+    } else if (sp >= w->stacks[0].floor) {
+        move_to(w, 0);
     } else {
-        move_to(w, 0); /* or on no stack at all, below main's */
+        /* A stack of the firmware's own, in its variables (a context it
+         * switches to with port_switch itself): its bounds are unknown, so
+         * it is not judged until SP is back on a stack the kernel carved. */
+        w->mark = 0;
     }
     if (sp < w->mark) stack_watch_below(r);
 }
