@@ -253,6 +253,10 @@ avr_t *firmware_load(const char *path);
  * read (a .hex). */
 typedef void (*firmware_symbol_fn)(const char *name, uint32_t value, uint32_t size, int type, void *ctx);
 int firmware_symbols(const char *path, firmware_symbol_fn each, void *ctx);
+/* The same into answer (size bytes, cleared first), unless *read_path is
+ * path already: robots that share a firmware file share the answer. */
+void firmware_symbols_once(const char *path, const char **read_path, firmware_symbol_fn each,
+                           void *answer, size_t size);
 /* name is wanted, or wanted.lto_priv.N as link-time optimisation renames a
  * static. */
 int symbol_named(const char *name, const char *wanted);

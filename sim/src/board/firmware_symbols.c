@@ -41,3 +41,11 @@ int symbol_named(const char *name, const char *wanted) {
     size_t n = strlen(wanted);
     return strncmp(name, wanted, n) == 0 && (name[n] == '\0' || name[n] == '.');
 }
+
+void firmware_symbols_once(const char *path, const char **read_path, firmware_symbol_fn each,
+                           void *answer, size_t size) {
+    if (path == *read_path) return;
+    memset(answer, 0, size);
+    firmware_symbols(path, each, answer);
+    *read_path = path;
+}

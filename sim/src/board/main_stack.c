@@ -31,15 +31,10 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
     if (strcmp(name, "malloc") == 0 && value != 0) ram->has_malloc = 1;
 }
 
-/* Read once per firmware file: robots that share one share the answer. */
 static image_ram ram_of(const char *elf_path) {
     static const char *read_path;
     static image_ram ram;
-    if (elf_path != read_path) {
-        ram = (image_ram){0, 0};
-        firmware_symbols(elf_path, note_symbol, &ram);
-        read_path = elf_path;
-    }
+    firmware_symbols_once(elf_path, &read_path, note_symbol, &ram, sizeof ram);
     return ram;
 }
 

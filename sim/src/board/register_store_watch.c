@@ -35,11 +35,7 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
 void register_store_watch_attach(robot *r, const char *elf_path) {
     static const char *read_path;
     static image_code code;
-    if (elf_path != read_path) {
-        memset(&code, 0, sizeof code);
-        firmware_symbols(elf_path, note_symbol, &code);
-        read_path = elf_path;
-    }
+    firmware_symbols_once(elf_path, &read_path, note_symbol, &code, sizeof code);
     r->stored_to_register = 0;
     r->register_store_watched = code.symbols != 0;
     memcpy(r->register_store_code, code.code, sizeof code.code);

@@ -54,11 +54,7 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
 static image_stacks stacks_of(const char *elf_path) {
     static const char *read_path;
     static image_stacks stacks;
-    if (elf_path != read_path) {
-        memset(&stacks, 0, sizeof stacks);
-        firmware_symbols(elf_path, note_symbol, &stacks);
-        read_path = elf_path;
-    }
+    firmware_symbols_once(elf_path, &read_path, note_symbol, &stacks, sizeof stacks);
     return stacks;
 }
 
