@@ -118,18 +118,18 @@ void print_thread_stacks(const Footprint &f, const std::string &out, const char 
     auto stacks = thread_stacks_counted(out);
     if (stacks.empty()) return;
     auto names = stack_names(f, stacks);
+    bool by_address = names.empty();
+    for (size_t i = 0; by_address && i < stacks.size(); i++) names.push_back("stack " + std::to_string(i + 1));
     std::printf("Thread stacks: worst use in %s s in the simulator, of the room each has above its "
                 "guard%s\n",
-                time, names.empty() ? " (by address: the order the threads started in)" : "");
-    for (size_t i = 0; i < stacks.size(); i++) {
-        std::string name = names.empty() ? "stack " + std::to_string(i + 1) : names[i];
-        std::printf("  %-38s %6u of %4u\n", name.c_str(), stacks[i].first, stacks[i].second);
-    }
+                time, by_address ? " (by address: the order the threads started in)" : "");
+    for (size_t i = 0; i < stacks.size(); i++)
+        std::printf("  %-38s %6u of %4u\n", names[i].c_str(), stacks[i].first, stacks[i].second);
     for (size_t i = 0; i < stacks.size(); i++)
         if (stacks[i].first > stacks[i].second)
             std::printf("Warning: %s overflowed its stack in the simulator: give it a larger "
                         "\"stack\" in openswarm.json\n",
-                        names.empty() ? ("stack " + std::to_string(i + 1)).c_str() : names[i].c_str());
+                        names[i].c_str());
 }
 
 // The main stack's and the threads' worst use, measured by running the
