@@ -19,6 +19,7 @@ set(OPENSWARM_PORT_host_SOURCES
 
 set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/port.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/clock_hooks.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/switch.S
     ${OPENSWARM_ROOT}/ports/kilobot/src/tickless_idle.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/mcu_tag.c
@@ -31,6 +32,7 @@ set(OPENSWARM_PORT_kilobot_SOURCES
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/motor_processors.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/debug_uart.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir.c
+    ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir_device.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/ir_distance.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/adc.c
     ${OPENSWARM_ROOT}/ports/kilobot/src/devices/sensors.c
@@ -254,3 +256,4 @@ function(openswarm_add_kernel target)
     target_link_options(${target} PUBLIC ${OPENSWARM_SANITIZERS})
   endif()
 endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/OpenSwarmNative.cmake)

@@ -22,8 +22,16 @@
 
 typedef char block_is_aligned[(OS_CFG_STACK_BLOCK_BYTES % PORT_STACK_ALIGN) == 0 ? 1 : -1];
 
+#ifdef PORT_STACK_POOL
+/* The port keeps the pool (PORT_STACK_POOL: an address of BLOCKS * BLOCK
+ * bytes, aligned): a native-mode robot's stacks are its own memory, apart
+ * from the RAM image the simulator swaps (ports/native). */
+#define os_stack_pool ((uint8_t *)PORT_STACK_POOL)
+const size_t os_stack_pool_bytes = BLOCKS * BLOCK;
+#else
 /* Named for the simulator, which finds it by its symbol. */
 static uint8_t os_stack_pool[BLOCKS * BLOCK] __attribute__((aligned(PORT_STACK_ALIGN)));
+#endif
 
 /* Block numbers and counts fit in os_block_count: one byte on robots,
  * where 16-bit arithmetic doubles the code. */
@@ -66,7 +74,7 @@ size_t os_stack_alloc(sys_tcb *t, uint16_t bytes) {
 }
 
 #if OS_CFG_STACK_CHECK
-void os_stack_pool_reset(void) { memset(os_stack_pool, OS_STACK_PAINT, sizeof os_stack_pool); }
+void os_stack_pool_reset(void) { memset(os_stack_pool, OS_STACK_PAINT, BLOCKS * BLOCK); }
 
 void os_stack_free(sys_tcb *t) {
     memset(t->stack, OS_STACK_PAINT, (size_t)t->stack_blocks * BLOCK);

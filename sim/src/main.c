@@ -10,7 +10,10 @@
 #include "sim.h"
 #include "faults/faults.h"
 #include "lockstep.h"
+#include "native/native_load.h"
+#include "native/native_run.h"
 #include "progress.h"
+#include "world/world_avr.h"
 #include "world/world_run.h"
 
 /* Robots advance together in windows this many cycles long; what one
@@ -26,7 +29,7 @@ static uint32_t nominal_hz;
 /* Robot index's clock error as a fraction of --clock-spread: evenly from -1
  * to +1 over the n robots, in an order scrambled by a fixed hash so that
  * robots next to each other by index do not run alike. */
-static double clock_error(int index, int n) {
+double robot_clock_error(int index, int n) {
     if (n < 2) return 0.0;
     uint32_t mine = (uint32_t)index * 2654435761u;
     int rank = 0;
@@ -57,13 +60,13 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     }
     if (o->clock_spread_pct != 0)
         r->avr->frequency = (uint32_t)lround(
-            nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * clock_error(index, o->robots)));
+            nominal_hz * (1.0 + o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots)));
     r->avr->frequency = faults_clock_rate(index, r->avr->frequency);
     int uid = o->uid >= 0 ? o->uid + index : -1, calibration[4];
     memcpy(calibration, o->calibration, sizeof calibration);
     if (o->world != NULL) {
         world_robot_identity(index, &uid, calibration);
-        world_robot_noise(r, index);
+        world_avr_robot_noise(r, index);
     }
     board_configure(r->avr, o, uid, calibration);
     if (faults_blank_calibration(index)) board_erase_calibration(r->avr);
@@ -149,7 +152,7 @@ static int load_robots(const options *o, FILE *csv) {
         if (setup_robot(&robots[i], i, o, csv) != 0) return -1;
     ir_channel_attach(robots, o->robots, o->ir_range_mm, o->ir_loss_pct);
     if (o->world == NULL) ir_channel_place(placement_distance_of, (void *)&o->place);
-    else if (world_run_start(robots, o->robots, o, nominal_hz) != 0) return -1;
+    else if (world_avr_start(robots, o->robots, o, nominal_hz) != 0) return -1;
     return 0;
 }
 
@@ -198,6 +201,7 @@ int main(int argc, char **argv) {
         }
         return world_run_epucks(&o);
     }
+    if (firmware_of(&o, 0) != NULL && native_is_robot(firmware_of(&o, 0))) return native_run(&o);
     for (int i = 0; i < o.robots; i++)
         if ((i == 0 || firmware_of(&o, i) != firmware_of(&o, i - 1)) &&
             firmware_check(firmware_of(&o, i)) != 0)

@@ -105,6 +105,9 @@ int parse_options(int argc, char **argv, options *o);
 int options_check_robots(options *o);
 const char *firmware_of(const options *o, int index);
 
+/* A robot's clock error as a fraction of --clock-spread (main.c), -1..1. */
+double robot_clock_error(int index, int n);
+
 /* placement.c: --distance, --line SPACING, --positions FILE (robots is
  * set to the file's count; it must match when robots_given) */
 void placement_all_at(placement *p, int distance_mm);
@@ -372,6 +375,8 @@ void profile_print(int robots);
 
 /* console.c */
 void console_attach(robot *r, int quiet, int timestamps, const char *prefix);
+/* A kernel fault's name (a sys_fault), as the consoles print it. */
+const char *kernel_fault_name(uint8_t fault);
 /* After a reset: a kernel fault record or thread name under way is dropped. */
 void console_reset(robot *r);
 
@@ -389,6 +394,11 @@ void trace_led(const robot *r, uint8_t rgb[3]);
 /* kilobot_board.c: what the robot's EEPROM and sensors hold: uid -1
  * leaves the EEPROM's uid erased, a calibration duty -1 its byte. */
 void board_configure(avr_t *avr, const options *o, int uid, const int calibration[4]);
+/* What a robot's EEPROM holds before it runs, as write(ctx, address,
+ * bytes, n) calls: its calibration duties (-1: left as they are), the
+ * distance tables, its uid (-1: left as it is). */
+typedef void (*eeprom_write_fn)(void *ctx, uint16_t address, const uint8_t *bytes, uint32_t n);
+void kilobot_eeprom_fill(eeprom_write_fn write, void *ctx, int uid, const int calibration[4]);
 /* After a reset (simavr clears the I/O registers): the pins the board
  * drives read as they did. */
 void board_pins_again(avr_t *avr);

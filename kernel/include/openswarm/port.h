@@ -112,6 +112,11 @@ bool os_tick_quiet(void);
  * by ticks and waits whose deadline came meanwhile end. A port that sleeps
  * longer than 65535 ticks wakes and credits them in parts. */
 void os_ticks_slept(uint16_t ticks);
+#ifdef PORT_STACK_POOL
+/* The bytes the port's stack pool (PORT_STACK_POOL) must hold, aligned to
+ * PORT_STACK_ALIGN: the configuration's stacks and the port's extra. */
+extern const size_t os_stack_pool_bytes;
+#endif
 /* End the running thread (its entry function returned). Never returns. */
 void os_thread_exit(void);
 /* End the running thread because the CPU trapped in it (the port's fault

@@ -79,39 +79,13 @@ void port_tick_start(void) {
 #endif
 }
 
-void (*kilobot_tick_hook)(void);
-void (*kilobot_elapsed_hook)(uint16_t ms);
-void (*kilobot_sensors_tick_hook)(void);
-void (*kilobot_motors_tick_hook)(void);
-
-#if OS_CFG_QUIET_TICK
-/* Does a hook want this tick? (One that is never set costs nothing: with
- * link-time optimisation its test goes.) */
-static bool tick_hooked(void) {
-    return kilobot_motors_tick_hook != NULL || kilobot_sensors_tick_hook != NULL ||
-           kilobot_tick_hook != NULL || kilobot_elapsed_hook != NULL;
-}
-#endif
-
-void kilobot_tick(void) {
-    os_tick();
-    void (*motors)(void) = kilobot_motors_tick_hook;
-    if (motors != NULL) motors();
-    void (*sensors)(void) = kilobot_sensors_tick_hook;
-    if (sensors != NULL) sensors();
-    void (*hook)(void) = kilobot_tick_hook;
-    if (hook != NULL) hook();
-    void (*elapsed)(uint16_t) = kilobot_elapsed_hook;
-    if (elapsed != NULL) elapsed(1);
-}
-
 /* Most ticks need nothing but the time and the slice's count
  * (os_tick_quiet) and no hook wants them: they return at once, without
  * os_isr_enter and os_isr_exit. (avr-gcc still saves the call-clobbered
  * registers for every tick: the others call functions.) */
 ISR(TIMER0_COMPA_vect) {
 #if OS_CFG_QUIET_TICK
-    if (!tick_hooked() && os_tick_quiet()) return;
+    if (!kilobot_tick_hooked() && os_tick_quiet()) return;
 #endif
     os_isr_enter();
     kilobot_tick();

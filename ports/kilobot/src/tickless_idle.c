@@ -56,13 +56,6 @@ static uint16_t last_ticks, last_tick;
 static uint16_t alarm_ticks; /* where the pending alarm (OCR1A) is */
 static uint16_t final_ticks; /* the deadline */
 
-/* Anything that needs every millisecond keeps the tick: the tick hook, the
- * motors' full-power limit, periodic sensor readings. */
-static bool tick_needed(void) {
-    return kilobot_tick_hook != NULL || kilobot_motors_tick_hook != NULL ||
-           kilobot_sensors_tick_hook != NULL;
-}
-
 /* The alarm after the one at last_ticks (or the start): the last, if the
  * deadline is at most 7 ticks on, else one in the middle of the 7th. */
 static void set_alarm(void) {
@@ -154,7 +147,7 @@ void port_tickless_wake(void) {
 }
 
 void port_idle_for(uint32_t ticks) {
-    if (ticks < 2u || tick_needed() || !stop_tick(ticks)) {
+    if (ticks < 2u || kilobot_tick_needed() || !stop_tick(ticks)) {
         port_idle();
         return;
     }

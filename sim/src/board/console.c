@@ -11,7 +11,7 @@
 #define FAULT_RECORD 0x01  /* kilobot_sim.h: SIM_FAULT_RECORD */
 #define THREAD_RECORD 0x02 /* kilobot_sim.h: SIM_THREAD_RECORD */
 
-static const char *fault_name(uint8_t fault) {
+const char *kernel_fault_name(uint8_t fault) {
     switch (fault) {
     case 1: return "stack overflow"; /* SYS_FAULT_STACK_OVERFLOW */
     case 2: return "critical section left open"; /* SYS_FAULT_CRITICAL_LEAK */
@@ -74,7 +74,7 @@ static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param
             char label[40];
             c->faults++;
             fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u%s at %.6f s\n", c->prefix,
-                    fault_name(c->record[0]), c->record[1],
+                    kernel_fault_name(c->record[0]), c->record[1],
                     thread_label(c, c->record[1], label, sizeof label),
                     (double)avr->cycle / (double)avr->frequency);
         }

@@ -34,7 +34,7 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
     if (symbol_named(name, "os_stats")) {
         s->kernel = value - AVR_DATA_OFFSET;
         s->kernel_size = size;
-    } else if (symbol_named(name, "ir_stats")) {
+    } else if (symbol_named(name, "kilobot_ir_counters")) {
         s->ir = value - AVR_DATA_OFFSET;
         s->ir_size = size;
     } else if (symbol_named(name, "os_stack_pool")) {

@@ -23,6 +23,10 @@ static void write_eeprom(avr_t *avr, uint16_t address, const uint8_t *bytes, uin
     avr_ioctl(avr, AVR_IOCTL_EEPROM_SET, &d);
 }
 
+static void write_eeprom_of(void *avr, uint16_t address, const uint8_t *bytes, uint32_t n) {
+    write_eeprom(avr, address, bytes, n);
+}
+
 static void set_analog(avr_t *avr, int channel, int millivolts) {
     if (millivolts >= 0)
         avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, channel), (uint32_t)millivolts);
@@ -41,10 +45,14 @@ void board_configure(avr_t *avr, const options *o, int uid, const int calibratio
     set_analog(avr, ADC_IRQ_TEMP, o->temperature_mv);
     /* The charger's status output holds PD0 high, low while it charges. */
     avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN0), !o->charging);
+    kilobot_eeprom_fill(write_eeprom_of, avr, uid, calibration);
+}
+
+void kilobot_eeprom_fill(eeprom_write_fn write, void *ctx, int uid, const int calibration[4]) {
     for (int i = 0; i < 4; i++) {
         if (calibration[i] < 0) continue;
         uint8_t v = (uint8_t)calibration[i];
-        write_eeprom(avr, calibration_address[i], &v, 1);
+        write(ctx, calibration_address[i], &v, 1);
     }
     uint8_t low[2 * TABLE_ENTRIES], high[2 * TABLE_ENTRIES];
     for (int i = 0; i < TABLE_ENTRIES; i++) {
@@ -54,11 +62,11 @@ void board_configure(avr_t *avr, const options *o, int uid, const int calibratio
         high[2 * i] = (uint8_t)(h >> 8);
         high[2 * i + 1] = (uint8_t)h;
     }
-    write_eeprom(avr, LOW_GAIN_TABLE, low, sizeof low);
-    write_eeprom(avr, HIGH_GAIN_TABLE, high, sizeof high);
+    write(ctx, LOW_GAIN_TABLE, low, sizeof low);
+    write(ctx, HIGH_GAIN_TABLE, high, sizeof high);
     if (uid >= 0) {
         uint8_t bytes[2] = {(uint8_t)(uid & 0xFF), (uint8_t)(uid >> 8)}; /* little-endian */
-        write_eeprom(avr, UID_ADDRESS, bytes, 2);
+        write(ctx, UID_ADDRESS, bytes, 2);
     }
 }
 

@@ -6,17 +6,14 @@
  * the light sensors the new light. */
 #include "world/world_run.h"
 
-#include <avr_adc.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sim_io.h>
 
 #include "output/output.h"
 #include "world/epuck_run.h"
 #include "world/world.h"
 
-#define ANALOG_NOISE_COUNTS 1.0 /* sd of a reading, ADC counts */
 #define ROOM_TEMPERATURE_MV 314   /* the ATmega328P's sensor at 25 C (datasheet) */
 #define LIGHT_REFERENCE_MM 100.0 /* a source adds its intensity at this distance */
 #define LIGHT_NEAREST_MM 10.0     /* closer, the sensor sees the source's own size */
@@ -24,7 +21,7 @@
 
 static world_spec spec;
 static world *physics;
-static robot *robots;
+static const world_robots *robots; /* how to reach them */
 static int n_robots;
 static avr_cycle_count_t step_cycles, next_step;
 static double next_sample_s;
@@ -115,10 +112,10 @@ int world_options_check(options *o) {
     return 0;
 }
 
-void world_robot_noise(robot *r, int index) {
+uint64_t world_robot_noise_seed(int index) {
     uint64_t seed = (uint64_t)spec.seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)index << 32 | 0xA5A5u);
     world_random_next(&seed);
-    analog_noise_attach(r, seed, ANALOG_NOISE_COUNTS);
+    return seed;
 }
 
 void world_robot_identity(int index, int *uid, int calibration[4]) {
@@ -129,9 +126,7 @@ void world_robot_identity(int index, int *uid, int calibration[4]) {
     for (int i = 0; i < 4; i++) calibration[i] = r->calibration[i] == -2 ? own[i] : r->calibration[i];
 }
 
-static void motors_changed(void *ctx, int index, uint8_t left, uint8_t right, avr_cycle_count_t cycle) {
-    (void)ctx;
-    double t = (double)cycle / robots[index].avr->frequency;
+void world_run_motors(int index, uint8_t left, uint8_t right, double t) {
     world_motor_duty(physics, index, 0, left, t);
     world_motor_duty(physics, index, 1, right, t);
 }
@@ -170,7 +165,7 @@ static void sense_light(int i) {
     if (mv > KILOBOT_AVCC_MV) mv = KILOBOT_AVCC_MV; /* the input clips at the supply */
     if (mv == light_mv[i]) return;
     light_mv[i] = mv;
-    avr_raise_irq(avr_io_getirq(robots[i].avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC7), (uint32_t)mv);
+    robots->light(i, mv);
 }
 
 /* Where everything is now, for the channel, the sensors and the outputs. */
@@ -180,7 +175,7 @@ static void observe(void) {
         world_robot_pose(physics, i, &p->x_mm, &p->y_mm, &p->heading_deg);
         if (spec.n_lights > 0 || spec.ambient_light_mv > 0) sense_light(i);
     }
-    ir_channel_place(distance_between, NULL);
+    robots->place(distance_between, NULL);
 }
 
 static int *reached_by; /* scratch: the receivers one sender reaches */
@@ -189,7 +184,7 @@ static int *reached_by; /* scratch: the receivers one sender reaches */
 static int collect_links(void) {
     int n_links = 0;
     for (int i = 0; i < n_robots; i++) {
-        int reached = ir_channel_links(i, reached_by, n_robots);
+        int reached = robots->links(i, reached_by, n_robots);
         if (n_links + reached > links_room) {
             links_room = (n_links + reached) * 2;
             links = realloc(links, (size_t)links_room * sizeof *links);
@@ -203,7 +198,7 @@ static int collect_links(void) {
 static int sample(double t) {
     for (int i = 0; i < n_robots; i++) {
         uint8_t rgb[3];
-        trace_led(&robots[i], rgb);
+        robots->led(i, rgb);
         poses[i].led_r = rgb[0];
         poses[i].led_g = rgb[1];
         poses[i].led_b = rgb[2];
@@ -215,7 +210,7 @@ static int sample(double t) {
     return output_sample_add(&s);
 }
 
-int world_run_start(robot *all, int n, const options *o, uint32_t nominal_hz) {
+int world_run_start(int n, const options *o, const world_robots *all, uint32_t nominal_hz) {
     robots = all;
     n_robots = n;
     ir_range_mm = o->ir_range_mm;
@@ -223,10 +218,7 @@ int world_run_start(robot *all, int n, const options *o, uint32_t nominal_hz) {
     object_centres = allocate((size_t)spec.n_objects, sizeof *object_centres);
     light_mv = allocate((size_t)n, sizeof *light_mv);
     reached_by = allocate((size_t)n, sizeof *reached_by);
-    for (int i = 0; i < n; i++) {
-        light_mv[i] = -1;
-        all[i].trace.on_motors = motors_changed;
-    }
+    for (int i = 0; i < n; i++) light_mv[i] = -1;
     /* Of the nominal clock, as world_run_after_window counts (robot 0's own
      * may run fast or slow). */
     step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * nominal_hz);

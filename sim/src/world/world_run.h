@@ -11,13 +11,25 @@
  * the channel from it (the command line's --time, --ir-range, --ir-loss and
  * --clock-spread win); -1 after a message. */
 int world_options_check(options *o);
-/* Robot index's analog inputs carry its own noise (before they are set). */
-void world_robot_noise(robot *r, int index);
+/* The sd of an analog reading's noise, ADC counts, and robot index's own
+ * sequence's seed. */
+#define WORLD_ANALOG_NOISE_COUNTS 1.0
+uint64_t world_robot_noise_seed(int index);
 /* Robot index's uid and EEPROM calibration (-1: erased). */
 void world_robot_identity(int index, int *uid, int calibration[4]);
-/* The robots are loaded: follow their motors, place them on the IR
- * channel, open the outputs; -1 after a message. */
-int world_run_start(robot *robots, int n, const options *o, uint32_t nominal_hz);
+/* What the world needs of the robots, whichever simulator runs them (the
+ * exact mode's world_avr.c, the native mode's native/native_world.c). */
+typedef struct world_robots {
+    void (*led)(int index, uint8_t rgb[3]);    /* what its LED shows now, 0..3 each */
+    void (*light)(int index, int millivolts);  /* its light sensor's input changed */
+    void (*place)(ir_distance_fn distance, void *ctx); /* they moved: the IR channel follows */
+    int (*links)(int sender, int *receivers, int room); /* whom sender reaches now */
+} world_robots;
+/* The robots are loaded: place them on the IR channel, open the outputs;
+ * -1 after a message. */
+int world_run_start(int n, const options *o, const world_robots *robots, uint32_t nominal_hz);
+/* Robot index set its motors' duties at time t (s). */
+void world_run_motors(int index, uint8_t left, uint8_t right, double t);
 /* After the lockstep window ending at cycle end of the nominal clock:
  * step the physics when a step is due. */
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz);

@@ -31,7 +31,9 @@ typedef struct kilobot_motors {
 /* data: 10 bytes (9 data + type) to transmit; the Tx processor adds the CRC */
 #define KILOBOT_EVENT_IR_TX ((sys_event_id)(SYS_EVENT_PORT_FIRST + 3))
 
-typedef struct kilobot_ir_rx {
+/* Packed: 17 bytes on the host too (the native mode), as the kernel's
+ * pools are sized for the robot's (the AVR aligns nothing anyway). */
+typedef struct __attribute__((packed)) kilobot_ir_rx {
     uint8_t frame[KILOBOT_IR_FRAME_BYTES];
     int16_t low_gain;    /* ADC1 at the header's stop pulse */
     int16_t high_gain;   /* ADC0 at the start pulse */

@@ -23,6 +23,28 @@ void kilolib_identity_load(void);
  * transmitter's next look wakes it in time (tickless idle). */
 void kilolib_wait(uint32_t ms);
 
+/* The stack pointer now, and fn (which never returns) run afresh with the
+ * stack pointer at sp and interrupts enabled: the frames above are
+ * dropped (overhead_controller.c). The robot's SP register; the native
+ * mode's own (ports/native). */
+#ifdef __AVR__
+#include <avr/interrupt.h>
+#include <avr/io.h>
+typedef uint16_t kilolib_sp;
+static inline kilolib_sp kilolib_stack_pointer(void) { return SP; }
+static inline void kilolib_run_afresh(kilolib_sp sp, void (*fn)(void)) {
+    cli();
+    SP = sp;
+    sei();
+    fn();
+}
+#else
+#include "openswarm/native_stack.h"
+typedef uintptr_t kilolib_sp;
+#define kilolib_stack_pointer native_stack_pointer
+#define kilolib_run_afresh native_run_afresh
+#endif
+
 /* overhead_controller.c. The robot does one thing at a time, named by the
  * system message that asked for it: RUN (the program), CALIB (a calibration
  * motion), VOLTAGE, CHARGE or WAKEUP (a status on the LED), SLEEP (nothing).

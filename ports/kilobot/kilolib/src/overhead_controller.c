@@ -3,8 +3,6 @@
  * activity, which replaces the one before. Activities run on the system
  * thread, on main()'s stack, as the classic library's main loop runs them:
  * no thread, no stack of their own. */
-#include <avr/interrupt.h>
-#include <avr/io.h>
 #include <util/atomic.h>
 
 #include "kilolib_internal.h"
@@ -19,7 +17,7 @@ static uint8_t started, running;
  * activity's code goes back there, its frames dropped as a killed thread's
  * stack would be. (setjmp would keep 23 bytes of registers for it; the
  * loop needs none, it starts afresh.) */
-static uint16_t activities_sp;
+static kilolib_sp activities_sp;
 
 uint8_t kilolib_activity(void) { return activity; }
 
@@ -40,10 +38,7 @@ static void __attribute__((noreturn)) run_activities(void);
 
 void kilolib_stop_point(void) {
     if (started == running || !Sys_In_SystemProgram()) return;
-    cli();
-    SP = activities_sp;
-    sei();
-    run_activities();
+    kilolib_run_afresh(activities_sp, run_activities);
 }
 
 /* The system thread's program: the current activity's code, once per
@@ -67,7 +62,7 @@ static void run_activities(void) {
 }
 
 void kilolib_run_activities(void) {
-    activities_sp = SP;
+    activities_sp = kilolib_stack_pointer();
     run_activities();
 }
 

@@ -1,4 +1,5 @@
-/* Infrared messages: the Kilobot's only way to talk to its neighbours.
+/* Infrared messages on the wire: the Kilobot's only way to talk to its
+ * neighbours (the HAL device above it is ir_device.c).
  *
  * Frames go out as flashes of the IR LED on PB0, in the wire format of
  * ir_wire.h; the receivers see them through the analog comparator (AIN0
@@ -7,8 +8,8 @@
  * at the header: ADC0 (high gain) from the start pulse, ADC1 (low gain)
  * from the stop pulse.
  *
- * The lower layer here moves frames; the Rx processor checks the CRC and
- * the Tx processor adds it (kernel HAL comm device). */
+ * This lower layer moves frames; the Rx processor checks the CRC and the
+ * Tx processor adds it (ir_device.c). */
 #include "openswarm/kilobot.h"
 #include "openswarm/port.h"
 
@@ -25,25 +26,7 @@
 _Static_assert(IR_WIRE_FRAME_BYTES == KILOBOT_IR_FRAME_BYTES, "the wire's frame is the API's");
 
 static volatile uint8_t receiving; /* carrier sense for the transmitter */
-/* Its own name: the simulator reads it from the firmware's RAM by name
- * (openswarm-sim --counters). */
-static kilobot_ir_stats ir_stats;
 
-/* A count that stops at its top: a wrapped one could read 0 after 65536 losses. */
-static void count(uint16_t *counter) {
-    if (*counter != UINT16_MAX) (*counter)++;
-}
-
-uint16_t kilobot_crc(const uint8_t *bytes, uint8_t n) {
-    return ir_wire_crc(bytes, n);
-}
-
-void kilobot_ir_get_stats(kilobot_ir_stats *out) {
-    uint8_t sreg = SREG;
-    cli();
-    *out = ir_stats;
-    SREG = sreg;
-}
 
 void kilobot_ir_start(void) {
     DDRB |= TX_PIN;
@@ -103,7 +86,7 @@ static int32_t next_edge(uint16_t last) {
  * or each would start another reception and count again (a pulse lost
  * from a header made a dozen collisions of one frame). */
 static bool discard(uint16_t *counter, uint16_t last_edge) {
-    count(counter);
+    kilobot_ir_count(counter);
     for (int32_t edge = last_edge; edge >= 0; edge = next_edge((uint16_t)edge)) {
     }
     return false;
@@ -122,7 +105,7 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
     for (;;) {
         int32_t edge = next_edge(d.last_pulse);
         if (edge < 0) { /* the frame stopped short */
-            count(&ir_stats.broken);
+            kilobot_ir_count(&kilobot_ir_counters.broken);
             return false;
         }
         switch (ir_wire_decode_pulse(&d, (uint16_t)edge)) {
@@ -132,8 +115,8 @@ static bool receive_frame(uint16_t start, kilobot_ir_rx *rx) {
             kilobot_adc_start(KILOBOT_ADC_IR_LOW_GAIN);
             break;
         case IR_WIRE_WHOLE: rx->low_gain = kilobot_adc_take(); return true;
-        case IR_WIRE_COLLISION: return discard(&ir_stats.collisions, (uint16_t)edge);
-        case IR_WIRE_BROKEN: return discard(&ir_stats.broken, (uint16_t)edge);
+        case IR_WIRE_COLLISION: return discard(&kilobot_ir_counters.collisions, (uint16_t)edge);
+        case IR_WIRE_BROKEN: return discard(&kilobot_ir_counters.broken, (uint16_t)edge);
         }
     }
 }
@@ -150,16 +133,7 @@ ISR(TIMER1_CAPT_vect) {
     bool whole = receive_frame(start, &rx);
     receiving = 0;
     catch_up_ticks();
-    if (!whole) return;
-    os_isr_enter();
-    /* The Rx processor checks the CRC; a good frame may still find the
-     * kernel full. */
-    sys_status st = Sys_Device_Read(&kilobot_ir, &rx, sizeof rx, NULL, 0, NULL);
-    if (st == SYS_OK)
-        count(&ir_stats.received);
-    else if (st != SYS_E_NOT_FOUND)
-        count(&ir_stats.refused);
-    os_isr_exit();
+    if (whole) kilobot_ir_deliver(&rx);
 }
 
 /* A flash of about 1.5 us, longer than any instruction a receiver may be
@@ -191,7 +165,7 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
     uint8_t sreg = SREG;
     cli();
     if (receiving || (TIFR1 & _BV(ICF1))) { /* carrier sense: someone is talking */
-        count(&ir_stats.busy);
+        kilobot_ir_count(&kilobot_ir_counters.busy);
         SREG = sreg;
         return SYS_E_QUEUE_FULL;
     }
@@ -201,45 +175,8 @@ sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
      * frame's start, they would hold us deaf in a bogus reception for a
      * whole frame time, just as the robot that waited for us answers. */
     TIFR1 = _BV(ICF1);
-    count(&ir_stats.sent);
+    kilobot_ir_count(&kilobot_ir_counters.sent);
     catch_up_ticks();
     SREG = sreg;
     return SYS_OK;
 }
-
-/* ---- the HAL comm device ---- */
-
-/* Rx: a frame whose CRC checks becomes a KILOBOT_EVENT_IR_RX, unless it
- * is a system message the overhead control takes. */
-uint8_t kilobot_ir_check_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
-    (void)dev;
-    const kilobot_ir_rx *r = in;
-    if (size != sizeof *r || cap < sizeof *r) return 0;
-    if (!ir_wire_frame_intact(r->frame)) {
-        count(&ir_stats.bad_crc);
-        return 0;
-    }
-    if (kilobot_overhead_control_take(r->frame)) return 0; /* the robot's, not the app's */
-    memcpy(out, r, sizeof *r);
-    return sizeof *r;
-}
-
-/* Tx: 10 bytes (data + type) get their CRC. */
-static uint8_t add_crc(sys_device *dev, const void *in, uint8_t size, void *out, uint8_t cap) {
-    (void)dev;
-    if (size != 10u || cap < KILOBOT_IR_FRAME_BYTES) return 0;
-    uint8_t *f = out;
-    memcpy(f, in, 10);
-    uint16_t crc = kilobot_crc(f, 10);
-    f[10] = (uint8_t)crc;
-    f[11] = (uint8_t)(crc >> 8);
-    return KILOBOT_IR_FRAME_BYTES;
-}
-
-static void ir_write(sys_device *dev, const void *raw, uint8_t size) {
-    (void)dev;
-    if (size == KILOBOT_IR_FRAME_BYTES) kilobot_ir_transmit(raw);
-}
-
-sys_device kilobot_ir = {"ir", SYS_DEVICE_COMM, KILOBOT_EVENT_IR_RX, KILOBOT_EVENT_IR_TX,
-                         kilobot_ir_check_crc, add_crc, ir_write, NULL, 0};

@@ -22,7 +22,7 @@
 #define LOW_GAIN_PAST_TABLE_MM 90u
 
 static uint16_t table_entry(uint8_t table, uint8_t i) {
-    const uint8_t *at = (const uint8_t *)(uint16_t)(table + 2u * i);
+    const uint8_t *at = (const uint8_t *)(uintptr_t)(table + 2u * i); /* an EEPROM address */
     return (uint16_t)(eeprom_read_byte(at) << 8 | eeprom_read_byte(at + 1));
 }
 

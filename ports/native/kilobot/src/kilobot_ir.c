@@ -1,0 +1,68 @@
+/* The Kilobot's IR at message level: a frame goes out whole (the
+ * simulator hands it to the robots in range), and arrives whole, with the
+ * two gain readings its header gave. The timing is the wire's: a
+ * transmission keeps interrupts masked for the frame's 4.4 ms, a reception
+ * from its first pulse to its last; the receiver's interrupt comes at the
+ * first pulse, and a frame whose first pulse found interrupts masked for
+ * longer than a slot is lost, as the input capture loses it. What the
+ * frame does next is the HAL device's (ports/kilobot/src/devices/ir_device.c). */
+#include "native_internal.h"
+
+#include <string.h>
+
+#include "devices/devices_internal.h"
+#include "devices/ir_wire.h"
+#include "openswarm/kilobot.h"
+
+#define FRAME_CYCLES ((uint64_t)IR_WIRE_SLOTS * IR_WIRE_BIT)
+
+void kilobot_ir_start(void) {}
+
+/* Carrier sense: a frame has begun to arrive and is not over. */
+static int channel_busy(void) {
+    const native_io *io = native_io_of_robot;
+    return io->inbox_count != 0 && io->inbox[io->inbox_head].start <= native_now;
+}
+
+sys_status kilobot_ir_transmit(const uint8_t frame[KILOBOT_IR_FRAME_BYTES]) {
+    port_irq_state_t s = port_irq_save();
+    if (channel_busy()) {
+        kilobot_ir_count(&kilobot_ir_counters.busy);
+        port_irq_restore(s);
+        return SYS_E_QUEUE_FULL;
+    }
+    native_io *io = native_io_of_robot;
+    native_make_room(&io->n_sent, NATIVE_SENT_ROOM);
+    native_sent *out = &io->sent[io->n_sent++];
+    out->at = native_now;
+    memcpy(out->bytes, frame, NATIVE_FRAME_BYTES);
+    native_spend(FRAME_CYCLES);
+    kilobot_ir_count(&kilobot_ir_counters.sent);
+    port_irq_restore(s); /* the ticks the frame held back come now */
+    return SYS_OK;
+}
+
+/* The receiver's interrupt, at the inbox's first frame's first pulse (or
+ * later, if interrupts were masked then). */
+void native_ir_interrupt(void) {
+    native_io *io = native_io_of_robot;
+    int late = native_now - io->inbox[io->inbox_head].start > IR_WIRE_BIT;
+    uint64_t end = io->inbox[io->inbox_head].end;
+    if (end > native_now) native_spend(end - native_now); /* its slots, interrupts masked */
+    /* The simulator may have found it collided meanwhile: read it now. */
+    const native_frame *f = &io->inbox[io->inbox_head];
+    kilobot_ir_rx rx;
+    memset(&rx, 0, sizeof rx);
+    memcpy(rx.frame, f->bytes, sizeof rx.frame);
+    rx.low_gain = f->low_gain;
+    rx.high_gain = f->high_gain;
+    int broken = f->broken;
+    io->inbox_head = (io->inbox_head + 1u) % NATIVE_INBOX_ROOM;
+    io->inbox_count--;
+    if (broken)
+        kilobot_ir_count(&kilobot_ir_counters.collisions);
+    else if (late)
+        kilobot_ir_count(&kilobot_ir_counters.broken);
+    else
+        kilobot_ir_deliver(&rx);
+}

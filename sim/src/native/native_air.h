@@ -1,0 +1,30 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* IR between native robots, at message level: a frame a robot sent in a
+ * window reaches every robot in range one window later (the latency), in
+ * each receiver's own clock, with the two gain readings its distance gives
+ * (the exact mode's model: air/ir_channel.c), lost with the same chance
+ * (--ir-loss), and broken where two frames overlap at a receiver. */
+#ifndef OPENSWARM_NATIVE_AIR_H
+#define OPENSWARM_NATIVE_AIR_H
+
+#include <stdint.h>
+
+#include "sim.h"
+#include "native/native_swarm.h"
+
+/* latency: nominal cycles from a frame's start to its first pulse at the
+ * receivers (at least a window: it must reach them in their future). */
+void native_air_start(int n, int range_mm, double loss_pct, uint64_t seed, uint32_t nominal_hz,
+                      uint64_t latency);
+/* Where the robots are now (ir_channel_place's contract). */
+void native_air_place(ir_distance_fn distance, void *ctx);
+/* The receivers sender reaches (up to room of them), and their count. */
+int native_air_links(int sender, int *receivers, int room);
+/* After a window, in robot order: what sender sent in it. */
+void native_air_send(int sender, const native_sent *frames, unsigned n);
+/* Then: every frame sent into the receivers' inboxes. */
+void native_air_hand_over(void);
+/* Frames lost because a receiver's inbox had no room (0 in any sane swarm). */
+uint64_t native_air_overflowed(void);
+
+#endif

@@ -1,0 +1,261 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* A run in the native mode (native_run.h): the robots of a shared object
+ * built with `openswarm build --native`, window by window, in a world or
+ * placed as the command line says; after each window, in robot order,
+ * what they printed, the faults they reported, their motors and their
+ * frames. Everything a robot is told, it is told between windows: the
+ * same seed gives the same run, on any number of threads. */
+#include "native/native_run.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "native/native_air.h"
+#include "native/native_swarm.h"
+#include "progress.h"
+#include "world/world_run.h"
+
+/* A window: 1 ms of the nominal clock. A frame reaches its receivers one
+ * window after it left (native_air.h), and a busy robot is switched in
+ * and out once per window. */
+#define WINDOW_MS 1.0
+
+static int n_robots;
+static uint32_t nominal_hz;
+static const options *opts;
+/* Each robot's console line so far (printed when it ends). */
+typedef struct console_line {
+    char text[256];
+    size_t len;
+} console_line;
+static console_line *lines;
+static unsigned faults_reported;
+
+/* What the exact mode supports and this one does not (yet): refused by
+ * name rather than ignored. */
+static int refuse_exact_only(const options *o) {
+    static const char *fix = "run it in the exact mode (the firmware's .elf, `openswarm run` without --native)";
+    const char *what = o->marks ? "--marks" : o->n_watched ? "--watch-irq" : o->profile ? "--profile"
+                     : o->trace ? "--trace" : o->trace_csv ? "--trace-csv" : o->gdb_port ? "--gdb"
+                     : o->vcd ? "--vcd" : o->n_ohc ? "--ohc" : o->ir_log ? "--ir-log"
+                     : o->faults ? "--faults" : o->counters_period >= 0 ? "--counters"
+                     : o->main_stack ? "--main-stack" : NULL;
+    if (what == NULL) return 0;
+    fprintf(stderr, "openswarm-sim: %s measures the simulated MCU, which the native mode does not "
+                    "simulate: %s\n", what, fix);
+    return -1;
+}
+
+/* ---- the robots as the world sees them ---- */
+
+static void led(int index, uint8_t rgb[3]) {
+    uint8_t c = native_swarm_robot(index)->io->led;
+    rgb[0] = c & 3u;
+    rgb[1] = (c >> 2) & 3u;
+    rgb[2] = (c >> 4) & 3u;
+}
+
+static void light(int index, int millivolts) {
+    native_swarm_robot(index)->io->adc_mv[NATIVE_ADC_LIGHT] = (uint16_t)millivolts;
+}
+
+static const world_robots native_robots = {led, light, native_air_place, native_air_links};
+
+/* ---- what each robot is told before it starts ---- */
+
+static void write_eeprom(void *ctx, uint16_t address, const uint8_t *bytes, uint32_t n) {
+    native_io *io = ctx;
+    for (uint32_t i = 0; i < n; i++) io->eeprom[(address + i) % NATIVE_EEPROM_BYTES] = bytes[i];
+}
+
+static int analog_mv(int given, int fallback) { return given >= 0 ? given : fallback; }
+
+static void configure(int index, const options *o) {
+    native_robot *r = native_swarm_robot(index);
+    native_io *io = r->io;
+    int uid = o->uid >= 0 ? o->uid + index : -1, calibration[4];
+    memcpy(calibration, o->calibration, sizeof calibration);
+    uint64_t seed = 0x5DEECE66Dull * (uint64_t)(index + 1);
+    if (o->world != NULL) {
+        world_robot_identity(index, &uid, calibration);
+        seed = world_robot_noise_seed(index);
+    }
+    memset(io->eeprom, 0xFF, sizeof io->eeprom);
+    kilobot_eeprom_fill(write_eeprom, io, uid, calibration);
+    io->adc_mv[NATIVE_ADC_LIGHT] = (uint16_t)analog_mv(o->light_mv, 0);
+    io->adc_mv[NATIVE_ADC_VOLTAGE] = (uint16_t)analog_mv(o->voltage_mv, 0);
+    io->adc_mv[NATIVE_ADC_TEMPERATURE] = (uint16_t)analog_mv(o->temperature_mv, 0);
+    io->charging = (uint8_t)o->charging;
+    io->noise = seed | 1u;
+    io->noise_counts = WORLD_ANALOG_NOISE_COUNTS;
+    double spread = o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
+    r->hz = (uint32_t)lround(nominal_hz * (1.0 + spread));
+}
+
+/* ---- after each window, in robot order ---- */
+
+static double seconds_of(const native_robot *r, uint64_t cycle) { return (double)cycle / r->hz; }
+
+static void print_line(int index, const char *text, double t) {
+    char prefix[32] = "";
+    if (n_robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
+    if (opts->timestamps)
+        printf("%s[%.6f] %s\n", prefix, t, text);
+    else
+        printf("%s%s\n", prefix, text);
+}
+
+static void print_console(int index, const native_robot *r) {
+    console_line *l = &lines[index];
+    for (size_t k = 0; k < r->log.console_len; k++) {
+        char c = r->log.console[k];
+        if (c == '\r') continue;
+        if (c != '\n' && l->len < sizeof l->text - 1) {
+            l->text[l->len++] = c;
+            continue;
+        }
+        if (c != '\n') continue; /* a line past its room: the rest of it is dropped */
+        l->text[l->len] = '\0';
+        if (!opts->quiet) print_line(index, l->text, seconds_of(r, r->io->now));
+        l->len = 0;
+    }
+}
+
+static void print_faults(int index, const native_robot *r) {
+    for (unsigned k = 0; k < r->log.n_faults; k++) {
+        const native_fault *f = &r->log.faults[k];
+        const char *name = r->io->thread_name[f->pid % NATIVE_THREAD_NAMES];
+        char prefix[32] = "";
+        if (n_robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
+        fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u%s%s%s at %.6f s\n", prefix,
+                kernel_fault_name(f->fault), f->pid, name[0] ? " (" : "", name, name[0] ? ")" : "",
+                seconds_of(r, f->at));
+        faults_reported++;
+    }
+}
+
+static void after_window(void) {
+    for (int i = 0; i < n_robots; i++) {
+        native_robot *r = native_swarm_robot(i);
+        print_console(i, r);
+        print_faults(i, r);
+        if (opts->world != NULL)
+            for (unsigned k = 0; k < r->log.n_motors; k++)
+                world_run_motors(i, r->log.motors[k].left, r->log.motors[k].right,
+                                 seconds_of(r, r->log.motors[k].at));
+        native_air_send(i, r->log.sent, r->log.n_sent);
+        native_log_clear(&r->log);
+    }
+    native_air_hand_over();
+}
+
+/* ---- the run ---- */
+
+static int start(const options *o, const char *path) {
+    int threads = native_swarm_threads_for(o->threads, o->robots);
+    native_copy *copies = calloc((size_t)threads, sizeof *copies);
+    if (copies == NULL || native_load(path, threads, copies) != 0) return -1;
+    nominal_hz = copies[0].entry.cpu_hz;
+    if (native_swarm_create(copies, threads, o->robots) != 0) return -1;
+    lines = calloc((size_t)o->robots, sizeof *lines);
+    if (lines == NULL) return -1;
+    uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
+    native_air_start(o->robots, o->ir_range_mm, o->ir_loss_pct, 0x2545F4914F6CDD1Dull, nominal_hz, window);
+    for (int i = 0; i < o->robots; i++) configure(i, o);
+    if (o->world != NULL) {
+        if (world_run_start(o->robots, o, &native_robots, nominal_hz) != 0) return -1;
+    } else {
+        native_air_place(placement_distance_of, (void *)&o->place);
+    }
+    native_swarm_boot();
+    return 0;
+}
+
+static void run(const options *o) {
+    uint64_t limit = (uint64_t)(o->seconds * (double)nominal_hz);
+    uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
+    progress_start(o->progress, o->robots, nominal_hz);
+    for (uint64_t end = 0;;) {
+        end += window;
+        if (end > limit) end = limit;
+        int all_stopped = native_swarm_window(end, nominal_hz);
+        after_window();
+        if (o->world != NULL) world_run_after_window(end, nominal_hz);
+        progress_update(end);
+        if (all_stopped || end == limit) break;
+    }
+    progress_end();
+    native_swarm_end();
+}
+
+/* How the robots ended, as the exact mode reports it (main.c). */
+static int report(const options *o) {
+    int status = 0, running = 0, booted = 0, broken = 0;
+    for (int i = 0; i < n_robots; i++) {
+        native_robot *r = native_swarm_robot(i);
+        double t = seconds_of(r, r->io->now);
+        char prefix[32] = "";
+        if (n_robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", i);
+        if (r->image_changed) {
+            fprintf(stderr, "openswarm-sim: %sits RAM changed while it was not running: a stray "
+                            "write from another robot's code; run the robots apart to find whose\n", prefix);
+            broken = 1;
+        }
+        if (r->io->state == NATIVE_BOOTLOADER) {
+            fprintf(stderr, "openswarm-sim: %sjumped to the bootloader (BOOT message) at %.6f s\n", prefix, t);
+            booted = 1;
+        } else if (r->io->state == NATIVE_STOPPED) {
+            if (!o->quiet) fprintf(stderr, "openswarm-sim: %sstopped at %.6f s, status %d\n", prefix, t, r->io->status);
+            if (status == 0) status = r->io->status;
+        } else {
+            running++;
+            if (o->expect_stop)
+                fprintf(stderr, "openswarm-sim: %sthe program did not stop within %.3f s of simulated "
+                                "time; give it longer with --time\n", prefix, o->seconds);
+        }
+    }
+    if (native_air_overflowed() != 0)
+        fprintf(stderr, "openswarm-sim: %llu frames found a robot's inbox full (%d frames): they "
+                        "were lost\n", (unsigned long long)native_air_overflowed(), NATIVE_INBOX_ROOM);
+    if (broken) return EXIT_CRASH;
+    if (booted) return EXIT_BOOTLOADER;
+    if (faults_reported != 0 && !o->allow_faults) {
+        fprintf(stderr, "openswarm-sim: %u kernel fault%s (above): the run fails (--allow-faults if "
+                        "the program provokes them on purpose)\n", faults_reported, faults_reported == 1 ? "" : "s");
+        return EXIT_FAULT;
+    }
+    if (running && o->expect_stop) return EXIT_TIMEOUT;
+    if (running && !o->quiet) progress_summary(o->seconds, n_robots);
+    return status;
+}
+
+int native_run(const options *o) {
+    opts = o;
+    n_robots = o->robots;
+    if (refuse_exact_only(o) != 0) return EXIT_USAGE;
+    if (o->world != NULL && world_run_is_epuck()) {
+        fprintf(stderr, "openswarm-sim: %s holds e-pucks: the native mode runs Kilobots so far; run "
+                        "it in the exact mode\n", o->world);
+        return EXIT_USAGE;
+    }
+    const char *path = firmware_of(o, 0);
+    for (int i = 1; i < o->robots; i++) {
+        if (strcmp(firmware_of(o, i), path) != 0) {
+            fprintf(stderr, "openswarm-sim: robot %d runs %s, robot 0 %s: the native mode runs one "
+                            "app on every robot so far\n", i, firmware_of(o, i), path);
+            return EXIT_USAGE;
+        }
+    }
+    if (start(o, path) != 0) return EXIT_USAGE;
+    run(o);
+    for (int i = 0; i < n_robots; i++) {
+        if (lines[i].len == 0) continue;
+        lines[i].text[lines[i].len] = '\0'; /* a last line without its end */
+        if (!o->quiet) print_line(i, lines[i].text, seconds_of(native_swarm_robot(i), native_swarm_robot(i)->io->now));
+    }
+    fflush(stdout);
+    int written = o->world != NULL ? world_run_finish() : 0;
+    int status = report(o);
+    return status == 0 && written != 0 ? EXIT_USAGE : status;
+}

@@ -1,0 +1,207 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The native mode's robots, window by window (native_swarm.h).
+ *
+ * A copy of the shared object has one RAM image at one address: running a
+ * robot means copying its image in (unless it is the one loaded), and
+ * copying the one that was loaded out first. A saved image is summed, and
+ * the sum checked when it comes back: whatever wrote into a robot's RAM
+ * while it was not running - another robot's stray pointer - is found and
+ * reported, never silently run. Stacks sit apart from images, with guard
+ * pages between robots. A robot asleep past the window's end, with no
+ * frame arriving before it, is not run at all: a sleeping swarm costs a
+ * comparison per robot per window. */
+#include "native/native_swarm.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include "window_workers.h"
+
+#define ROBOTS_PER_THREAD 32
+
+static native_copy *copies;
+static int n_threads;
+static native_robot *robots;
+static int n_robots;
+static int *loaded;           /* per copy: whose image it holds (-1: the pristine one) */
+static uint64_t window_end;   /* nominal cycles */
+static uint32_t nominal;
+
+native_robot *native_swarm_robot(int index) { return &robots[index]; }
+
+/* Word by word: it runs twice per switch of robots. */
+static uint64_t image_sum(const uint8_t *bytes, size_t n) {
+    uint64_t h = 0x9E3779B97F4A7C15ull, w;
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        memcpy(&w, bytes + i, 8);
+        h = (h ^ w) * 0x100000001B3ull;
+    }
+    for (; i < n; i++) h = (h ^ bytes[i]) * 0x100000001B3ull;
+    return h ^ (h >> 29);
+}
+
+static void save(native_robot *r, const native_copy *c) {
+    memcpy(r->image, c->image, c->image_bytes);
+    r->image_sum = image_sum(r->image, c->image_bytes);
+}
+
+static void restore(native_robot *r, native_copy *c) {
+    if (image_sum(r->image, c->image_bytes) != r->image_sum) r->image_changed = 1;
+    memcpy(c->image, r->image, c->image_bytes);
+}
+
+/* Robot i's image into its copy, the one there saved first. */
+static native_copy *load(int i) {
+    int t = i % n_threads;
+    native_copy *c = &copies[t];
+    if (loaded[t] == i) return c;
+    if (loaded[t] >= 0) save(&robots[loaded[t]], c);
+    restore(&robots[i], c);
+    loaded[t] = i;
+    return c;
+}
+
+static void *grow(void *p, unsigned *room, unsigned need, size_t size) {
+    if (need <= *room) return p;
+    unsigned r = *room ? *room : 16;
+    while (r < need) r *= 2;
+    void *q = realloc(p, (size_t)r * size);
+    if (q == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for a robot's log\n");
+        exit(EXIT_FAILURE);
+    }
+    *room = r;
+    return q;
+}
+
+#define APPEND(log, list, n, room, from, count)                                        \
+    do {                                                                                \
+        (log)->list = grow((log)->list, &(log)->room, (log)->n + (count), sizeof *(from)); \
+        memcpy((log)->list + (log)->n, (from), (size_t)(count) * sizeof *(from));       \
+        (log)->n += (count);                                                            \
+    } while (0)
+
+/* The robot's outbound lists into its log, emptied. */
+static void take_outbound(native_robot *r) {
+    native_io *io = r->io;
+    native_log *log = &r->log;
+    APPEND(log, sent, n_sent, sent_room, io->sent, io->n_sent);
+    APPEND(log, motors, n_motors, motors_room, io->motors, io->n_motors);
+    APPEND(log, faults, n_faults, faults_room, io->faults, io->n_faults);
+    if (io->console_len != 0) {
+        unsigned room = (unsigned)log->console_room;
+        log->console = grow(log->console, &room, (unsigned)(log->console_len + io->console_len), 1);
+        log->console_room = room;
+        memcpy(log->console + log->console_len, io->console, io->console_len);
+        log->console_len += io->console_len;
+    }
+    io->n_sent = io->n_motors = io->n_faults = 0;
+    io->console_len = 0;
+}
+
+void native_log_clear(native_log *log) {
+    log->n_sent = log->n_motors = log->n_faults = 0;
+    log->console_len = 0;
+}
+
+static void boot(native_robot *r, native_copy *c, uint64_t now) {
+    memcpy(c->image, c->pristine, c->image_bytes);
+    c->entry.boot(r->io, r->main_stack, c->entry.main_stack_bytes, r->pool, now);
+}
+
+/* Asleep past the window with no frame coming before its end. */
+static int dozing(const native_robot *r, uint64_t own_end) {
+    const native_io *io = r->io;
+    if (io->asleep_until == 0 || io->asleep_until <= own_end) return 0;
+    return io->inbox_count == 0 || io->inbox[io->inbox_head].start > own_end;
+}
+
+static void run_robot(int i, uint64_t own_end) {
+    native_robot *r = &robots[i];
+    native_copy *c = load(i);
+    for (;;) {
+        c->entry.run(own_end);
+        take_outbound(r);
+        if (r->io->state == NATIVE_RESTART) {
+            boot(r, c, r->io->now);
+            continue;
+        }
+        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0) return;
+    }
+}
+
+static int run_share(int t) {
+    int all_stopped = 1;
+    for (int i = t; i < n_robots; i += n_threads) {
+        native_robot *r = &robots[i];
+        if (r->io->state != NATIVE_RUNNING) continue;
+        all_stopped = 0;
+        uint64_t own_end = r->hz == nominal ? window_end : window_end * r->hz / nominal;
+        if (!dozing(r, own_end)) run_robot(i, own_end);
+    }
+    return all_stopped;
+}
+
+static size_t page_round(size_t n) {
+    size_t page = (size_t)sysconf(_SC_PAGESIZE);
+    return (n + page - 1) / page * page;
+}
+
+/* [guard][pool][guard][main stack]: an overflow of either faults. */
+static int allocate_stacks(native_robot *r, const native_entry *e) {
+    size_t page = (size_t)sysconf(_SC_PAGESIZE), pool = page_round(e->stack_pool_bytes);
+    size_t main_stack = page_round(e->main_stack_bytes);
+    r->memory_bytes = page + pool + page + main_stack;
+    r->memory = mmap(NULL, r->memory_bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+    if (r->memory == MAP_FAILED) return -1;
+    r->pool = r->memory + page;
+    r->main_stack = r->pool + pool + page;
+    if (mprotect(r->memory, page, PROT_NONE) != 0 || mprotect(r->pool + pool, page, PROT_NONE) != 0) return -1;
+    return 0;
+}
+
+int native_swarm_create(native_copy *all_copies, int n_copies, int n) {
+    copies = all_copies;
+    n_threads = n_copies;
+    n_robots = n;
+    robots = calloc((size_t)n, sizeof *robots);
+    loaded = malloc((size_t)n_copies * sizeof *loaded);
+    if (robots == NULL || loaded == NULL) return -1;
+    for (int t = 0; t < n_copies; t++) loaded[t] = -1;
+    for (int i = 0; i < n; i++) {
+        native_robot *r = &robots[i];
+        const native_copy *c = &copies[i % n_copies];
+        r->io = calloc(1, sizeof *r->io);
+        r->image = malloc(c->image_bytes);
+        if (r->io == NULL || r->image == NULL || allocate_stacks(r, &c->entry) != 0) {
+            fprintf(stderr, "openswarm-sim: out of memory for native robot %d of %d\n", i, n);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+void native_swarm_boot(void) {
+    for (int i = 0; i < n_robots; i++) {
+        native_copy *c = &copies[i % n_threads];
+        boot(&robots[i], c, 0);
+        save(&robots[i], c);
+    }
+    window_workers_begin(n_threads, run_share);
+}
+
+int native_swarm_window(uint64_t end, uint32_t nominal_hz) {
+    window_end = end;
+    nominal = nominal_hz;
+    return window_workers_run();
+}
+
+void native_swarm_end(void) { window_workers_end(); }
+
+int native_swarm_threads_for(int requested, int n) {
+    return window_workers_count(requested, n, ROBOTS_PER_THREAD);
+}

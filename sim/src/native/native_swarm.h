@@ -1,0 +1,60 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The native mode's robots (ports/native): each its own RAM image, stacks
+ * and native_io, run window by window on one thread or several. Thread t
+ * runs robots t, t + T, ... in its own copy of the shared object (a copy's
+ * image address is fixed, so a robot stays with its copy). Within a window
+ * robots see nothing of each other: what one sends is handed over after
+ * it (native_air.c), so the run is the same on any number of threads. */
+#ifndef OPENSWARM_NATIVE_SWARM_H
+#define OPENSWARM_NATIVE_SWARM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "native/native_load.h"
+
+/* What a robot did in the window, for the main thread to act on in robot
+ * order (the robot's own lists in native_io are small: they are moved
+ * here whenever it yields). */
+typedef struct native_log {
+    native_sent *sent;
+    unsigned n_sent, sent_room;
+    native_motor_change *motors;
+    unsigned n_motors, motors_room;
+    native_fault *faults;
+    unsigned n_faults, faults_room;
+    char *console;
+    size_t console_len, console_room;
+} native_log;
+
+typedef struct native_robot {
+    native_io *io;
+    uint32_t hz;          /* its own clock (--clock-spread) */
+    uint8_t *image;       /* its RAM while another robot's is loaded */
+    uint64_t image_sum;   /* what image summed to when it was saved */
+    int image_changed;    /* it changed meanwhile: a stray write (reported) */
+    uint8_t *memory;      /* its stacks: pool and main's, guard pages around */
+    size_t memory_bytes;
+    uint8_t *pool, *main_stack;
+    native_log log;
+} native_robot;
+
+/* The threads for n robots (requested: --threads, 0 picks by the machine):
+ * load that many copies. */
+int native_swarm_threads_for(int requested, int n);
+/* Robots n of the loaded copies (one per thread), each with a fresh
+ * native_io (zeroed; the caller fills it before they boot). -1 after a
+ * message. */
+int native_swarm_create(native_copy *copies, int n_copies, int n);
+native_robot *native_swarm_robot(int index);
+/* Power every robot up (after their native_io is filled), and start the
+ * threads. */
+void native_swarm_boot(void);
+/* Every robot up to cycle end of the nominal clock (hz): 1 when every
+ * robot has stopped. */
+int native_swarm_window(uint64_t end, uint32_t nominal_hz);
+void native_swarm_end(void);
+/* The log emptied (its room kept). */
+void native_log_clear(native_log *log);
+
+#endif

@@ -1,0 +1,51 @@
+/* A classic kilolib program, as the labs write them: plain globals, a
+ * loop() that spins on kilo_ticks, printf on the debug port. Each robot
+ * says its uid; once a second it prints how many messages it heard, from
+ * how many robots, and how often loop() ran. Run natively, every robot's
+ * globals are its own. */
+#include <kilolib.h>
+#include <debug.h>
+#include "openswarm/kilobot.h"
+#include <stdio.h>
+
+message_t message;
+uint32_t last_report;
+uint32_t loops;
+uint16_t heard;
+uint8_t senders[8];
+uint8_t n_senders;
+
+void setup(void) {
+    message.type = NORMAL;
+    message.data[0] = (uint8_t)kilo_uid;
+    message.crc = message_crc(&message);
+    last_report = kilo_ticks;
+}
+
+void loop(void) {
+    loops++;
+    if (kilo_ticks < last_report + 31) return; /* busy: no delay() */
+    last_report = kilo_ticks;
+    kilobot_ir_stats s; kilobot_ir_get_stats(&s); printf("sent %u busy %u recv %u col %u broken %u bad %u ref %u\n", s.sent, s.busy, s.received, s.collisions, s.broken, s.bad_crc, s.refused);
+    printf("uid %u: %u messages from %u robots, %lu loops\n", kilo_uid, heard, n_senders,
+           (unsigned long)loops);
+}
+
+message_t *message_tx(void) { return &message; }
+
+void message_rx(message_t *m, distance_measurement_t *d) {
+    (void)d;
+    heard++;
+    for (uint8_t i = 0; i < n_senders; i++)
+        if (senders[i] == m->data[0]) return;
+    if (n_senders < sizeof senders) senders[n_senders++] = m->data[0];
+}
+
+int main(void) {
+    kilo_init();
+    debug_init();
+    kilo_message_rx = message_rx;
+    kilo_message_tx = message_tx;
+    kilo_start(setup, loop);
+    return 0;
+}
