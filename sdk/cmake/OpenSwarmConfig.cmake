@@ -45,6 +45,10 @@ function(openswarm_add_firmware name)
   if(NOT F_SOURCES)
     message(FATAL_ERROR "openswarm_add_firmware(${name}): SOURCES is required")
   endif()
+  if(OPENSWARM_NATIVE)
+    openswarm_add_native_app(${name} "${F_PORT}" "${F_SOURCES}" "${F_CONFIG}")
+    return()
+  endif()
   if(F_PORT STREQUAL "kilobot" AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "avr")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT kilobot needs the AVR toolchain: "
       "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/kilobot/cmake/avr-gcc.cmake "
@@ -107,6 +111,34 @@ function(openswarm_add_firmware name)
       openswarm_add_robot_image(${name} "${F_SOURCES}" "${generated_sources}" "${config_args}")
     endif()
   endif()
+endfunction()
+
+# OPENSWARM_NATIVE (openswarm build --native): the app for the host as a
+# robot of the simulator's native mode, <name>.so (cmake/OpenSwarmNative.cmake),
+# with the configuration and start-up code `openswarm build` generated.
+option(OPENSWARM_NATIVE "build the app for the host, as a native-mode robot (<name>.so)" OFF)
+function(openswarm_add_native_app name port sources config)
+  if(NOT port STREQUAL "kilobot")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): the native mode (OPENSWARM_NATIVE) runs "
+      "Kilobot apps so far, not PORT ${port}: build it without OPENSWARM_NATIVE")
+  endif()
+  set(generated)
+  set(includes)
+  if(OPENSWARM_GENERATED_DIR AND EXISTS ${OPENSWARM_GENERATED_DIR}/openswarm_app.c)
+    if(NOT config)
+      set(config ${OPENSWARM_GENERATED_DIR}/openswarm_config.h)
+    endif()
+    set(generated ${OPENSWARM_GENERATED_DIR}/openswarm_app.c)
+    set(includes ${OPENSWARM_GENERATED_DIR})
+  endif()
+  set(config_args)
+  if(config)
+    get_filename_component(config "${config}" ABSOLUTE)
+    set(config_args CONFIG ${config})
+  endif()
+  openswarm_add_native_robot(${name} BOARD ${port} SOURCES ${sources} ${generated} ${config_args}
+    INCLUDES ${includes})
+  openswarm_app_warnings(${name})
 endfunction()
 
 # The e-puck2's robot image beside the QEMU one: the same app on the

@@ -202,6 +202,13 @@ int main(int argc, char **argv) {
         return world_run_epucks(&o);
     }
     if (firmware_of(&o, 0) != NULL && native_is_robot(firmware_of(&o, 0))) return native_run(&o);
+    if (o.world != NULL && world_run_is_native()) {
+        fprintf(stderr, "openswarm-sim: %s asks for \"fidelity\": \"native\", and %s is firmware for "
+                        "the exact mode: give the app built for the host (`openswarm build --native`: "
+                        "build/kilobot-native/<app>.so), or drop \"fidelity\" from the world\n",
+                o.world, firmware_of(&o, 0));
+        return EXIT_USAGE;
+    }
     for (int i = 0; i < o.robots; i++)
         if ((i == 0 || firmware_of(&o, i) != firmware_of(&o, i - 1)) &&
             firmware_check(firmware_of(&o, i)) != 0)

@@ -82,6 +82,7 @@ struct BuildOptions {
     bool json = false;
     bool debug = false;
     bool werror = false;
+    bool native = false;
 };
 
 // The kernel's and the app's shares of the image, from a second build
@@ -109,6 +110,11 @@ double one_decimal(double x) { return std::round(x * 10.0) / 10.0; }
 
 void print_summary(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
     const PortInfo &info = port_info(r.port);
+    if (r.native) {
+        std::printf("Built %s for %s, native: for the host, a robot of openswarm-sim's native mode "
+                    "(`openswarm run --native`, docs/world.md)\n", r.image.string().c_str(), r.port.c_str());
+        return;
+    }
     if (info.flash_bytes == 0) { // a host program: no memory of a robot's to fill
         std::printf("Built %s for %s: run it in a world, `openswarm run --world FILE` (docs/world.md)\n",
                     r.image.string().c_str(), r.port.c_str());
@@ -143,7 +149,7 @@ void print_summary(const BuildResult &r, const std::vector<Share> &shares, const
 void print_json(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
     const PortInfo &info = port_info(r.port);
     nlohmann::ordered_json j = {
-        {"image", r.image.string()},       {"port", r.port}, {"flash", r.flash},
+        {"image", r.image.string()},       {"port", r.port}, {"native", r.native}, {"flash", r.flash},
         {"flash_total", r.flash_total},    {"ram", r.ram},   {"ram_total", info.ram_bytes}};
     if (shares.empty()) {
         j["share"] = nullptr;
@@ -172,7 +178,7 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
 }  // namespace
 
 std::vector<std::string> configure_command(const Paths &paths, const fs::path &dir,
-                                           const fs::path &build_dir, const std::string &port) {
+                                           const fs::path &build_dir, const std::string &port, bool native) {
     std::vector<std::string> configure = {"cmake",
                                           "-S",
                                           dir.string(),
@@ -185,7 +191,10 @@ std::vector<std::string> configure_command(const Paths &paths, const fs::path &d
                                               fs::absolute(generated_dir(dir, port)).string()};
     if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
     const std::string &toolchain = port_info(port).toolchain;
-    if (!toolchain.empty()) configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + (paths.root / toolchain).string());
+    if (native)
+        configure.push_back("-DOPENSWARM_NATIVE=ON");
+    else if (!toolchain.empty())
+        configure.push_back("-DCMAKE_TOOLCHAIN_FILE=" + (paths.root / toolchain).string());
     return configure;
 }
 
@@ -226,14 +235,22 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }
+    const bool debug = variant == Variant::debug, native = variant == Variant::native;
+    if (native && port != "kilobot") {
+        report("--native: the native mode runs Kilobot apps so far, and this one is for " + port +
+               "; run it without --native (the exact mode)");
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
+    }
     bool have_cmake = find_program("cmake").has_value();
     if (!have_cmake) report("cmake was not found: sudo apt-get install cmake");
-    if (!have_cmake || !toolchain_present(port_info(port))) {
+    bool have_compiler = native ? find_program("cc").has_value() : toolchain_present(port_info(port));
+    if (native && !have_compiler) report("cc was not found, and --native builds with it: sudo apt-get install gcc");
+    if (!have_cmake || !have_compiler) {
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    const bool debug = variant == Variant::debug;
-    fs::path build_dir = dir / "build" / (debug ? port + "-debug" : port);
+    fs::path build_dir = dir / "build" / (debug ? port + "-debug" : native ? port + "-native" : port);
     fs::path generated = generated_dir(dir, port);
     config.port = port;
     const PortInfo &info = port_info(port);
@@ -248,14 +265,15 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
+    std::vector<std::string> configure = configure_command(paths, dir, build_dir, port, native);
     configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
     configure.push_back(std::string("-DOPENSWARM_WERROR=") + (werror ? "ON" : "OFF"));
     // Where the e-puck2's robot image is linked (cmake/OpenSwarmKernel.cmake).
     if (port == "epuck2")
         configure.push_back("-DOPENSWARM_EPUCK2_BOOTLOADER=" + robot_placement(config).bootloader);
     say("Configuring " + config.name + " for " + port +
-        (debug ? " (debug: -Og, no link-time optimisation)" : ""));
+        (debug ? " (debug: -Og, no link-time optimisation)"
+               : native ? " (native: for the host, the simulator's native mode)" : ""));
     if (run(configure) != 0) {
         failed_log();
         report("configuring failed (CMake's messages are above); check " +
@@ -283,6 +301,12 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     BuildResult result;
     result.port = port;
+    if (native) {
+        result.native = true;
+        result.image = build_dir / (config.name + ".so");
+        if (brief) std::printf("Built %s (native)\n", result.image.string().c_str());
+        return result;
+    }
     result.image = build_dir / (config.name + info.image_suffix);
     result.flash_total = flash_budget(config);
     if (!image_size(info, result.image, result.flash, result.ram)) {
@@ -329,19 +353,28 @@ void add_build_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
     cmd->add_flag("--json", o->json, "print the result as JSON (progress goes to standard error)");
     cmd->add_flag("--werror", o->werror, "the app's compiler warnings are errors (they are on: -Wall -Wextra)");
+    cmd->add_flag("--native", o->native,
+                  "the app for the host, in build/<port>-native/<app>.so: a robot of the "
+                  "simulator's native mode, which runs thousands (docs/world.md, \"Native mode\")");
     cmd->add_flag("--debug", o->debug,
                   "a debug image in build/<port>-debug: -Og -g, no link-time optimisation, so "
                   "the debugger (openswarm run --debug --gdb PORT) knows every line and variable");
     cmd->callback([o, &paths] {
         Progress progress = o->json ? Progress::on_stderr : Progress::on_stdout;
-        auto r = build_app(paths, o->dir, o->port, progress,
-                           o->debug ? Variant::debug : Variant::release, o->werror);
+        if (o->debug && o->native) {
+            report("--debug and --native: give one (a debug image runs in the exact mode)");
+            exit_code = EXIT_USAGE;
+            return;
+        }
+        Variant variant = o->debug ? Variant::debug : o->native ? Variant::native : Variant::release;
+        auto r = build_app(paths, o->dir, o->port, progress, variant, o->werror);
         if (!r) return;
         std::string why = "not measured for a debug image (it has no link-time optimisation "
                           "to see through)";
         const bool host = port_info(r->port).flash_bytes == 0;
         if (host) why = "a host program has no robot's memory to share";
-        auto shares = o->debug || host ? std::vector<Share>{}
+        if (r->native) why = "the native mode's build has no robot's memory to share";
+        auto shares = o->debug || host || r->native ? std::vector<Share>{}
                                        : measure_shares(paths, o->dir, *r, progress, why);
         if (o->json)
             print_json(*r, shares, why);

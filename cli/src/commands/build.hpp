@@ -32,15 +32,17 @@ struct BuildResult {
     // The port's image for the real robot, when it is not the one `run`
     // runs (the e-puck2's: <app>-robot.elf, and .bin beside it).
     std::optional<RobotImage> robot;
+    bool native = false; // the app built for the host (Variant::native): no robot's memory
 };
 
 // Where `build` writes the files generated from openswarm.json.
 std::filesystem::path generated_dir(const std::filesystem::path &dir, const std::string &port);
 
 // The CMake configure command line for the app in dir, built in build_dir.
+// With native, for the native mode: the host's compiler, no toolchain.
 std::vector<std::string> configure_command(const Paths &paths, const std::filesystem::path &dir,
                                            const std::filesystem::path &build_dir,
-                                           const std::string &port);
+                                           const std::string &port, bool native = false);
 
 // Where a command's progress (and CMake's) goes: standard error when
 // standard output carries a result (--json); brief: one line when it
@@ -48,10 +50,12 @@ std::vector<std::string> configure_command(const Paths &paths, const std::filesy
 // run and test, whose own output follows.
 enum class Progress { on_stdout, on_stderr, brief };
 
-// A release image (-Os, link-time optimisation: what goes to the robot)
-// or a debug one (-Og, no LTO: every line and variable for the debugger),
-// built in build/<port> or build/<port>-debug.
-enum class Variant { release, debug };
+// A release image (-Os, link-time optimisation: what goes to the robot),
+// a debug one (-Og, no LTO: every line and variable for the debugger), or
+// the app built for the host as a native-mode robot (ports/native: a
+// shared object openswarm-sim runs by the thousand), built in
+// build/<port>, build/<port>-debug or build/<port>-native.
+enum class Variant { release, debug, native };
 
 // Configure and build the app in dir for port ("" = the app's own);
 // prints progress, and errors ending with what to do. nullopt on failure,

@@ -49,6 +49,7 @@ struct RunOptions {
     std::string out;   // --out DIR; empty: <app dir>/out/<world file's stem>
     bool video = false;
     bool trace = false; // with --world; without it the trace is always on
+    bool native = false; // --native, or the world's "fidelity": "native"
     std::vector<std::string> simavr_only; // such options given, for a port QEMU runs
 };
 
@@ -171,6 +172,37 @@ std::string world_duration(const std::string &path) {
     return "for its duration_s";
 }
 
+// The world's "fidelity": "native" asks for the native mode (the
+// simulator checks the file; an unreadable one says exact here).
+bool world_wants_native(const std::string &path) {
+    try {
+        std::ifstream in(path);
+        auto world = nlohmann::json::parse(in);
+        auto f = world.find("fidelity");
+        return f != world.end() && f->is_string() && f->get<std::string>() == "native";
+    } catch (const std::exception &) {
+        return false;
+    }
+}
+
+// The options that look inside the simulated MCU, which the native mode
+// does not simulate. False after reporting.
+bool native_options_usable(const RunOptions &o) {
+    std::vector<std::string> refused;
+    if (o.gdb != 0) refused.push_back("--gdb");
+    if (o.debug) refused.push_back("--debug");
+    if (!o.vcd.empty()) refused.push_back("--vcd");
+    if (!o.ohc.empty()) refused.push_back("--ohc");
+    if (o.profile) refused.push_back("--profile");
+    if (o.ir_log) refused.push_back("--ir-log");
+    if (!o.first.empty()) refused.push_back("--first");
+    if (o.trace) refused.push_back("--trace");
+    if (refused.empty()) return true;
+    report(join(refused) + ": the native mode runs the app on the host, with no simulated MCU to look "
+           "into; run it in the exact mode (without --native, or \"fidelity\": \"exact\")");
+    return false;
+}
+
 // A --world that names no file: say which file, where it was looked for,
 // and what to give instead. False after reporting.
 bool world_file_usable(const RunOptions &o) {
@@ -203,9 +235,11 @@ int run_app(RunOptions o, const Paths &paths) {
         if (!world_file_usable(o)) return EXIT_USAGE;
         if (o.out.empty())
             o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
+        o.native = o.native || world_wants_native(o.world);
     }
+    if (o.native && !native_options_usable(o)) return EXIT_USAGE;
     auto built = build_app(paths, o.dir, o.port, Progress::brief,
-                           o.debug ? Variant::debug : Variant::release);
+                           o.debug ? Variant::debug : o.native ? Variant::native : Variant::release);
     if (!built) return exit_code;
     if (paths.simulator.empty()) {
         report("openswarm-sim was not found next to this tool; build it with "
@@ -222,7 +256,7 @@ int run_app(RunOptions o, const Paths &paths) {
     std::vector<std::string> argv = {paths.simulator.string()};
     // Without --world one robot's LED and motors are the whole show; in a
     // world, ten robots' changes would bury the status line and summary.
-    if (!world || o.trace) argv.push_back("--trace");
+    if (!o.native && (!world || o.trace)) argv.push_back("--trace");
     // In a world, its duration_s applies unless --time was given.
     if (!world || o.time_given) argv.insert(argv.end(), {"--time", seconds});
     if (world) {
@@ -321,6 +355,10 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "the overhead controller sends MSG at SECONDS (run, sleep, reset, boot, "
                     "calib-left:70, ...; repeatable)")
         ->type_name("MSG@SECONDS");
+    cmd->add_flag("--native", o->native,
+                  "build the app for the host and run it in the native mode: thousands of robots, "
+                  "timing charged per basic block rather than cycle-exact (docs/world.md, \"Native "
+                  "mode\"; a world's \"fidelity\": \"native\" asks for it too)");
     cmd->add_flag("--profile", o->profile, "print where the CPU cycles went, by function");
     cmd->add_flag("--timestamps", o->timestamps,
                   "begin every console line with its simulated time, as the trace's lines");

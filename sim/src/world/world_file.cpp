@@ -532,6 +532,7 @@ class Reader {
     std::map<int, int> uids_;                             /* uid -> robot */
 
     void robot_kind(const Node &n);
+    int fidelity(const Node &n);
     void arena(const Node &n);
     void obstacle(const Node &n);
     void object_(const Node &n);
@@ -573,6 +574,19 @@ void Reader::robot_kind(const Node &n) {
         fail(n, "unknown robot \"" + k + "\"; known: kilobot, epuck" +
                     openswarm::did_you_mean(k, {"kilobot", "epuck"}, '"'));
     }
+}
+
+/* "exact": the firmware's ELF in simavr; "native": the app built for the
+ * host (openswarm build --native), by the thousand. */
+int Reader::fidelity(const Node &n) {
+    const std::string ex = "\"fidelity\": \"native\"";
+    if (!n->is_string()) fail(n, "expected \"exact\" or \"native\", found " + found(*n) + "; e.g. " + ex);
+    std::string f = n->get<std::string>();
+    if (f == "native") return WORLD_FIDELITY_NATIVE;
+    if (f != "exact")
+        fail(n, "unknown fidelity \"" + f + "\"; known: exact (the firmware in simavr), native (the app "
+                "built for the host)" + openswarm::did_you_mean(f, {"exact", "native"}, '"'));
+    return WORLD_FIDELITY_EXACT;
 }
 
 void Reader::arena(const Node &n) {
@@ -968,8 +982,8 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
 world_spec Reader::load(const json &doc) {
     Node root{&doc, "", ""};
     const std::string example = "{\"arena\": {\"width_mm\": 600, \"height_mm\": 400}, \"robots\": [{\"count\": 10}]}";
-    object(root, {"description", "robot", "arena", "seed", "duration_s", "sample_period_s", "ir", "clock_spread_pct", "light",
-                  "obstacles", "objects", "robots"},
+    object(root, {"description", "robot", "fidelity", "arena", "seed", "duration_s", "sample_period_s", "ir",
+                  "clock_spread_pct", "light", "obstacles", "objects", "robots"},
            example);
     world_spec w{};
     w.ir_range_mm = -1;
@@ -981,6 +995,7 @@ world_spec Reader::load(const json &doc) {
     if (auto d = get(root, "description"))
         if (!d.value()->is_string()) fail(*d, "expected a text, found " + found(**d) + "; e.g. \"description\": \"ten robots packed\"");
     if (auto k = get(root, "robot")) robot_kind(*k);
+    if (auto f = get(root, "fidelity")) w.fidelity = fidelity(*f);
     if (!doc.contains("arena")) fail(root, "\"arena\" is missing; every world has one, e.g. " + example);
     arena(child(root, "arena"));
     if (auto s = get(root, "seed")) w.seed = (uint32_t)whole(*s, 0, 4294967295L, "the random seed", "\"seed\": 7");

@@ -247,6 +247,8 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
 
 int world_run_is_epuck(void) { return spec.robot_kind == WORLD_ROBOT_EPUCK; }
 
+int world_run_is_native(void) { return spec.fidelity == WORLD_FIDELITY_NATIVE; }
+
 int world_run_epucks(const options *o) {
     int status = epuck_world_run(o, &spec, physics);
     world_destroy(physics);

@@ -36,6 +36,8 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz);
 /* The world holds e-pucks, whose controllers are host processes
  * (world/epuck_run.h), not AVR firmware. */
 int world_run_is_epuck(void);
+/* The world asks for the native mode ("fidelity": "native"). */
+int world_run_is_native(void);
 /* Run those; the exit status. */
 int world_run_epucks(const options *o);
 /* The last sample, the outputs closed; -1 if writing them failed. */

@@ -17,6 +17,9 @@
 
 /* Which robots a world holds: one kind for all of them. */
 enum { WORLD_ROBOT_KILOBOT = 0, WORLD_ROBOT_EPUCK = 1 };
+/* How they run: their firmware in simavr (exact), or their app built for
+ * the host (native: docs/world.md, "Native mode"). */
+enum { WORLD_FIDELITY_EXACT = 0, WORLD_FIDELITY_NATIVE = 1 };
 
 typedef struct world_point {
     double x, y;
@@ -74,6 +77,7 @@ typedef struct world_spec {
     double duration_s;       /* -1: not given (--time or its default) */
     double sample_period_s;  /* trajectories.csv's period; default 0.1 */
     int robot_kind;          /* WORLD_ROBOT_*: "robot" in the file, kilobot by default */
+    int fidelity;            /* WORLD_FIDELITY_*: "fidelity" in the file, exact by default */
     double robot_radius_mm;  /* its body's */
 } world_spec;
 
