@@ -44,6 +44,8 @@ void native_context_returned(void);
 extern native_io *native_io_of_robot;
 /* Back to the simulator; returns when it runs the robot again. */
 void native_yield(void);
+/* The robot's own random sequence (the board's noise and jitter). */
+uint64_t native_random(void);
 /* Until index < room: a full outbound list waits for the simulator to empty it. */
 void native_make_room(const unsigned *count, unsigned room);
 /* The robot is over for good (main returned, sim_exit). */

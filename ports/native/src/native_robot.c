@@ -55,6 +55,16 @@ void native_stop(uint8_t status) {
     native_leave(NATIVE_STOPPED);
 }
 
+/* xorshift64*, from the robot's own seed (native_io.noise). */
+uint64_t native_random(void) {
+    uint64_t x = native_io_of_robot->noise;
+    x ^= x >> 12;
+    x ^= x << 25;
+    x ^= x >> 27;
+    native_io_of_robot->noise = x;
+    return x * 0x2545F4914F6CDD1Dull;
+}
+
 /* What the simulator needs to know of this robot (it calls this once, as
  * it loads the shared object): nothing of the image changes. */
 __attribute__((visibility("default"))) void openswarm_native_describe(native_entry *out) {

@@ -24,6 +24,7 @@ static uint64_t latency;
 static ir_distance_fn distance_of;
 static void *distance_ctx;
 static uint64_t *receiver_rng; /* each receiver's loss and noise draws */
+static uint64_t *last_start;   /* each sender's last frame's start, nominal cycles; 0: none */
 static delivery *pending;
 static size_t n_pending, pending_room;
 static uint64_t overflowed;
@@ -35,6 +36,7 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
     nominal = nominal_hz;
     latency = lat;
     receiver_rng = malloc((size_t)n * sizeof *receiver_rng);
+    last_start = calloc((size_t)n, sizeof *last_start);
     for (int i = 0; receiver_rng != NULL && i < n; i++) {
         receiver_rng[i] = seed ^ (0xD1B54A32D192ED03ull * (uint64_t)(i + 1));
         world_random_next(&receiver_rng[i]);
@@ -44,6 +46,21 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
 void native_air_place(ir_distance_fn distance, void *ctx) {
     distance_of = distance;
     distance_ctx = ctx;
+}
+
+/* A receiver's comparator sees a frame's first pulse within a few
+ * microseconds: two robots that start closer together both send. */
+#define SENSE_CYCLES IR_LATENCY_CYCLES
+
+int native_air_clear(int sender, uint64_t at) {
+    uint64_t now = at * nominal / native_swarm_robot(sender)->hz;
+    for (int j = 0; j < n_robots; j++) {
+        uint64_t s = last_start[j];
+        if (j == sender || s == 0 || s + SENSE_CYCLES > now || now >= s + FRAME_CYCLES) continue;
+        if (distance_of(sender, j, distance_ctx) <= range_mm) return 0;
+    }
+    last_start[sender] = now;
+    return 1;
 }
 
 int native_air_links(int sender, int *receivers, int room) {

@@ -18,6 +18,10 @@ void native_air_start(int n, int range_mm, double loss_pct, uint64_t seed, uint3
                       uint64_t latency);
 /* Where the robots are now (ir_channel_place's contract). */
 void native_air_place(ir_distance_fn distance, void *ctx);
+/* Carrier sense (native_carrier_fn): clear unless a robot in range began
+ * a frame before at (sender's own cycles) that is not over; a clear
+ * channel's frame is on the air from then. */
+int native_air_clear(int sender, uint64_t at);
 /* The receivers sender reaches (up to room of them), and their count. */
 int native_air_links(int sender, int *receivers, int room);
 /* After a window, in robot order: what sender sent in it. */

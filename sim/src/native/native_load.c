@@ -45,18 +45,19 @@ static uint8_t *read_file(const char *path, size_t *size) {
     return bytes;
 }
 
-static void *open_copy(const uint8_t *bytes, size_t size, int k, char *why, size_t why_room) {
-    int fd = memfd_create("openswarm-native-robot", MFD_CLOEXEC);
-    if (fd < 0 || write(fd, bytes, size) != (ssize_t)size) {
+/* The copy's memory file stays open (*fd) until every copy is loaded: the
+ * dynamic linker also knows an object by its path, and a later copy given
+ * the same descriptor number would be taken for this one. */
+static void *open_copy(const uint8_t *bytes, size_t size, int k, int *fd, char *why, size_t why_room) {
+    *fd = memfd_create("openswarm-native-robot", MFD_CLOEXEC);
+    if (*fd < 0 || write(*fd, bytes, size) != (ssize_t)size) {
         snprintf(why, why_room, "cannot copy it into memory (%s)", strerror(errno));
-        if (fd >= 0) close(fd);
         return NULL;
     }
     char proc[64];
-    snprintf(proc, sizeof proc, "/proc/self/fd/%d", fd);
+    snprintf(proc, sizeof proc, "/proc/self/fd/%d", *fd);
     void *handle = dlopen(proc, RTLD_NOW | RTLD_LOCAL);
     if (handle == NULL) snprintf(why, why_room, "copy %d: %s", k, dlerror());
-    close(fd);
     return handle;
 }
 
@@ -122,10 +123,11 @@ int native_load(const char *path, int copies, native_copy *out) {
         fprintf(stderr, "openswarm-sim: %s: cannot read it (%s)\n", path, strerror(errno));
         return -1;
     }
-    int status = 0;
-    for (int k = 0; k < copies && status == 0; k++) {
+    int status = 0, *fds = malloc((size_t)copies * sizeof *fds);
+    int opened = 0;
+    for (int k = 0; fds != NULL && k < copies && status == 0; k++, opened++) {
         char why[512];
-        out[k].handle = open_copy(bytes, size, k, why, sizeof why);
+        out[k].handle = open_copy(bytes, size, k, &fds[k], why, sizeof why);
         if (out[k].handle == NULL) {
             fprintf(stderr, "openswarm-sim: %s: cannot load it as a native robot: %s\n", path, why);
             status = -1;
@@ -133,6 +135,10 @@ int native_load(const char *path, int copies, native_copy *out) {
             status = describe(path, &out[k]);
         }
     }
+    if (fds == NULL) status = -1;
+    for (int k = 0; k < opened; k++)
+        if (fds[k] >= 0) close(fds[k]);
+    free(fds);
     free(bytes);
     return status;
 }

@@ -179,7 +179,7 @@ static void run(const options *o) {
     for (uint64_t end = 0;;) {
         end += window;
         if (end > limit) end = limit;
-        int all_stopped = native_swarm_window(end, nominal_hz);
+        int all_stopped = native_swarm_window(end, nominal_hz, native_air_clear);
         after_window();
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         progress_update(end);

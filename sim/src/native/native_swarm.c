@@ -130,8 +130,14 @@ static void run_robot(int i, uint64_t own_end) {
             boot(r, c, r->io->now);
             continue;
         }
-        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0) return;
+        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0 ||
+            r->io->transmit == NATIVE_TRANSMIT_ASKED)
+            return;
     }
+}
+
+static uint64_t own_end_of(const native_robot *r) {
+    return r->hz == nominal ? window_end : window_end * r->hz / nominal;
 }
 
 static int run_share(int t) {
@@ -140,7 +146,7 @@ static int run_share(int t) {
         native_robot *r = &robots[i];
         if (r->io->state != NATIVE_RUNNING) continue;
         all_stopped = 0;
-        uint64_t own_end = r->hz == nominal ? window_end : window_end * r->hz / nominal;
+        uint64_t own_end = own_end_of(r);
         if (!dozing(r, own_end)) run_robot(i, own_end);
     }
     return all_stopped;
@@ -194,10 +200,43 @@ void native_swarm_boot(void) {
     window_workers_begin(n_threads, run_share);
 }
 
-int native_swarm_window(uint64_t end, uint32_t nominal_hz) {
+/* The robot waiting for carrier sense that asked first (by the nominal
+ * clock, then by index); -1: none. */
+static int first_asking(void) {
+    int first = -1;
+    uint64_t first_at = 0;
+    for (int i = 0; i < n_robots; i++) {
+        const native_io *io = robots[i].io;
+        if (io->transmit != NATIVE_TRANSMIT_ASKED) continue;
+        uint64_t at = io->now * nominal / robots[i].hz;
+        if (first < 0 || at < first_at) {
+            first = i;
+            first_at = at;
+        }
+    }
+    return first;
+}
+
+/* Every robot runs to the window's end on its thread, or until it asks
+ * to transmit. The askers are then answered in the order they asked, each
+ * run on (alone) until the end or its next question: whoever began a
+ * frame before a robot looks is heard, whatever thread ran it. */
+int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn clear) {
     window_end = end;
     nominal = nominal_hz;
-    return window_workers_run();
+    int all_stopped = window_workers_run();
+    for (int i; (i = first_asking()) >= 0;) {
+        native_robot *r = &robots[i];
+        const native_sent *frame = &r->log.sent[r->log.n_sent - 1];
+        if (clear(i, frame->at)) {
+            r->io->transmit = NATIVE_TRANSMIT_CLEAR;
+        } else {
+            r->io->transmit = NATIVE_TRANSMIT_BUSY;
+            r->log.n_sent--; /* it never went out */
+        }
+        run_robot(i, own_end_of(r));
+    }
+    return all_stopped;
 }
 
 void native_swarm_end(void) { window_workers_end(); }

@@ -50,9 +50,13 @@ native_robot *native_swarm_robot(int index);
 /* Power every robot up (after their native_io is filled), and start the
  * threads. */
 void native_swarm_boot(void);
-/* Every robot up to cycle end of the nominal clock (hz): 1 when every
- * robot has stopped. */
-int native_swarm_window(uint64_t end, uint32_t nominal_hz);
+/* Carrier sense for robot index at its own cycle at: 1 when the channel
+ * is clear (the frame is then on the air from at). */
+typedef int (*native_carrier_fn)(int index, uint64_t at);
+/* Every robot up to cycle end of the nominal clock (hz), transmissions
+ * cleared or refused by clear in the order asked: 1 when every robot has
+ * stopped. */
+int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn clear);
 void native_swarm_end(void);
 /* The log emptied (its room kept). */
 void native_log_clear(native_log *log);

@@ -1,12 +1,14 @@
 /* A classic kilolib program, as the labs write them: plain globals, a
- * loop() that spins on kilo_ticks, printf on the debug port. Each robot
- * says its uid; once a second it prints how many messages it heard, from
- * how many robots, and how often loop() ran. Run natively, every robot's
- * globals are its own. */
-#include <kilolib.h>
+ * loop() that spins on kilo_ticks (no delay()), printf on the debug port.
+ * Each robot sends its uid; once a second it prints what it heard - how
+ * many messages, from how many robots - how often loop() ran, and the IR
+ * counters. Natively every robot's globals are its own, and the spin lets
+ * time pass (tests/native/check_census.py). */
 #include <debug.h>
-#include "openswarm/kilobot.h"
+#include <kilolib.h>
 #include <stdio.h>
+
+#include "openswarm/kilobot.h"
 
 message_t message;
 uint32_t last_report;
@@ -24,11 +26,12 @@ void setup(void) {
 
 void loop(void) {
     loops++;
-    if (kilo_ticks < last_report + 31) return; /* busy: no delay() */
+    if (kilo_ticks < last_report + TICKS_PER_SEC) return;
     last_report = kilo_ticks;
-    kilobot_ir_stats s; kilobot_ir_get_stats(&s); printf("sent %u busy %u recv %u col %u broken %u bad %u ref %u\n", s.sent, s.busy, s.received, s.collisions, s.broken, s.bad_crc, s.refused);
-    printf("uid %u: %u messages from %u robots, %lu loops\n", kilo_uid, heard, n_senders,
-           (unsigned long)loops);
+    kilobot_ir_stats s;
+    kilobot_ir_get_stats(&s);
+    printf("uid %u tick %lu: %u messages from %u robots, %lu loops, sent %u\n", kilo_uid,
+           (unsigned long)kilo_ticks, heard, n_senders, (unsigned long)loops, s.sent);
 }
 
 message_t *message_tx(void) { return &message; }

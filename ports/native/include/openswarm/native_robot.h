@@ -30,7 +30,7 @@ extern "C" {
 
 /* Changes whenever native_io changes shape: the simulator refuses a robot
  * built against another. */
-#define NATIVE_ROBOT_ABI 1
+#define NATIVE_ROBOT_ABI 2
 
 #define NATIVE_FRAME_BYTES 12
 #define NATIVE_EEPROM_BYTES 1024
@@ -69,6 +69,13 @@ typedef struct native_fault {
     uint8_t fault, pid;
 } native_fault;
 
+enum native_transmit {
+    NATIVE_TRANSMIT_NONE = 0,
+    NATIVE_TRANSMIT_ASKED,   /* by the robot, at its clock's now */
+    NATIVE_TRANSMIT_CLEAR,   /* by the simulator: the frame goes out */
+    NATIVE_TRANSMIT_BUSY     /* by the simulator: another robot in range is sending */
+};
+
 /* How a robot stands after a window. */
 enum native_state {
     NATIVE_RUNNING = 0,
@@ -100,6 +107,10 @@ typedef struct native_io {
     unsigned n_faults;
     char console[NATIVE_CONSOLE_ROOM];
     size_t console_len;
+    /* A transmission asked for (the frame is the last of sent): the robot
+     * yields, and the simulator, which knows what every robot in range has
+     * sent up to that moment, says whether the channel is clear. */
+    uint8_t transmit;                   /* enum native_transmit */
     /* ---- set by the robot, read by the simulator ---- */
     uint8_t led;                        /* the colour shown now, KILOBOT_RGB */
     uint8_t state;                      /* enum native_state */

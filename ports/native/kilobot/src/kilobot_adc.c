@@ -13,18 +13,10 @@
 #define AVCC_MV 3300.0
 #define INTERNAL_REFERENCE_MV 1100.0 /* the temperature sensor's */
 
-/* xorshift64*: the robot's own sequence, seeded by the simulator. */
-static double uniform(native_io *io) {
-    uint64_t x = io->noise;
-    x ^= x >> 12;
-    x ^= x << 25;
-    x ^= x >> 27;
-    io->noise = x;
-    return (double)((x * 0x2545F4914F6CDD1Dull) >> 11) / 9007199254740992.0;
-}
+static double uniform(void) { return (double)(native_random() >> 11) / 9007199254740992.0; }
 
-static double gaussian(native_io *io) {
-    double u = uniform(io), v = uniform(io);
+static double gaussian(void) {
+    double u = uniform(), v = uniform();
     return sqrt(-2.0 * log(u > 0 ? u : 1e-300)) * cos(2.0 * M_PI * v);
 }
 
@@ -33,7 +25,7 @@ int16_t kilobot_adc_read(uint8_t input) {
     native_io *io = native_io_of_robot;
     if (input >= NATIVE_ADC_INPUTS) return 0;
     double reference = input == KILOBOT_ADC_TEMPERATURE ? INTERNAL_REFERENCE_MV : AVCC_MV;
-    double counts = io->adc_mv[input] * 1024.0 / reference + io->noise_counts * gaussian(io);
+    double counts = io->adc_mv[input] * 1024.0 / reference + io->noise_counts * gaussian();
     long c = lround(counts);
     return (int16_t)(c < 0 ? 0 : c > 1023 ? 1023 : c);
 }
