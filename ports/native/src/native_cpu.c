@@ -107,6 +107,9 @@ void __sanitizer_cov_trace_pc(void) {
     if (native_now >= due) reached_due();
 }
 
+/* With interrupts masked nothing reaches the robot meanwhile: the clock
+ * may pass the window's end, and the simulator lets the robot be until the
+ * others catch up (it yields once, after it). */
 void native_spend(uint64_t cycles) {
     native_now += cycles;
     if (native_now >= due) reached_due();

@@ -43,9 +43,88 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
     }
 }
 
-void native_air_place(ir_distance_fn distance, void *ctx) {
+/* Robots by cell of a grid range_mm wide (when their positions are
+ * known): the robots in range of one are in its cell and the eight round
+ * it. A counting sort: cell_first[c] .. cell_first[c + 1] index in_cell. */
+static int grid_on, grid_cols, grid_rows;
+static double grid_x0, grid_y0, grid_cell;
+static int *cell_first, *in_cell, *cell_of;
+static int grid_room;
+
+static int cell_at(double x, double y, int *cx, int *cy) {
+    *cx = (int)((x - grid_x0) / grid_cell);
+    *cy = (int)((y - grid_y0) / grid_cell);
+    return *cy * grid_cols + *cx;
+}
+
+static void grid_build(const double *xy) {
+    double x1 = xy[0], y1 = xy[1];
+    grid_x0 = x1;
+    grid_y0 = y1;
+    for (int i = 1; i < n_robots; i++) {
+        double x = xy[2 * i], y = xy[2 * i + 1];
+        grid_x0 = x < grid_x0 ? x : grid_x0;
+        grid_y0 = y < grid_y0 ? y : grid_y0;
+        x1 = x > x1 ? x : x1;
+        y1 = y > y1 ? y : y1;
+    }
+    grid_cell = range_mm;
+    /* At most four cells a robot: a far-flung swarm gets larger cells. */
+    while ((floor((x1 - grid_x0) / grid_cell) + 1) * (floor((y1 - grid_y0) / grid_cell) + 1) > 4.0 * n_robots + 16)
+        grid_cell *= 2;
+    grid_cols = (int)floor((x1 - grid_x0) / grid_cell) + 1;
+    grid_rows = (int)floor((y1 - grid_y0) / grid_cell) + 1;
+    int cells = grid_cols * grid_rows, cx, cy;
+    if (cells + 1 > grid_room) {
+        grid_room = 2 * (cells + 1);
+        cell_first = realloc(cell_first, (size_t)grid_room * sizeof *cell_first);
+        if (cell_first == NULL) exit(EXIT_CRASH);
+    }
+    memset(cell_first, 0, (size_t)(cells + 1) * sizeof *cell_first);
+    for (int i = 0; i < n_robots; i++) cell_first[(cell_of[i] = cell_at(xy[2 * i], xy[2 * i + 1], &cx, &cy)) + 1]++;
+    for (int c = 0; c < cells; c++) cell_first[c + 1] += cell_first[c];
+    int *fill = malloc((size_t)cells * sizeof *fill);
+    if (fill == NULL) exit(EXIT_CRASH);
+    memcpy(fill, cell_first, (size_t)cells * sizeof *fill);
+    for (int i = 0; i < n_robots; i++) in_cell[fill[cell_of[i]]++] = i; /* by index within a cell */
+    free(fill);
+}
+
+void native_air_place(ir_distance_fn distance, void *ctx, const double *xy) {
     distance_of = distance;
     distance_ctx = ctx;
+    grid_on = xy != NULL && n_robots > 0;
+    if (!grid_on) return;
+    if (in_cell == NULL) {
+        in_cell = malloc((size_t)n_robots * sizeof *in_cell);
+        cell_of = malloc((size_t)n_robots * sizeof *cell_of);
+        if (in_cell == NULL || cell_of == NULL) exit(EXIT_CRASH);
+    }
+    grid_build(xy);
+}
+
+/* each(j, mm, ctx) for every robot j in range of robot i (not i), in
+ * index order within each cell. */
+typedef void (*in_range_fn)(int j, double mm, void *ctx);
+
+static void visit(int i, int j, in_range_fn each, void *ctx) {
+    if (j == i) return;
+    double mm = distance_of(i, j, distance_ctx);
+    if (mm <= range_mm) each(j, mm, ctx);
+}
+
+static void each_in_range(int i, in_range_fn each, void *ctx) {
+    if (!grid_on) {
+        for (int j = 0; j < n_robots; j++) visit(i, j, each, ctx);
+        return;
+    }
+    int c = cell_of[i], cx = c % grid_cols, cy = c / grid_cols;
+    for (int y = cy - 1; y <= cy + 1; y++)
+        for (int x = cx - 1; x <= cx + 1; x++) {
+            if (x < 0 || y < 0 || x >= grid_cols || y >= grid_rows) continue;
+            int cell = y * grid_cols + x;
+            for (int k = cell_first[cell]; k < cell_first[cell + 1]; k++) visit(i, in_cell[k], each, ctx);
+        }
 }
 
 /* A receiver's comparator sees a frame's first pulse within a few
@@ -63,14 +142,26 @@ int native_air_clear(int sender, uint64_t at) {
     return 1;
 }
 
+typedef struct link_list {
+    int *receivers;
+    int room, n;
+} link_list;
+
+static void add_link(int j, double mm, void *ctx) {
+    (void)mm;
+    link_list *l = ctx;
+    if (l->n < l->room) l->receivers[l->n] = j;
+    l->n++;
+}
+
+static int by_index(const void *a, const void *b) { return *(const int *)a - *(const int *)b; }
+
 int native_air_links(int sender, int *receivers, int room) {
-    int n = 0;
-    for (int j = 0; j < n_robots; j++) {
-        if (j == sender || distance_of(sender, j, distance_ctx) > range_mm) continue;
-        if (n < room) receivers[n] = j;
-        n++;
-    }
-    return n < room ? n : room;
+    link_list l = {receivers, room, 0};
+    each_in_range(sender, add_link, &l);
+    int n = l.n < room ? l.n : room;
+    qsort(receivers, (size_t)n, sizeof *receivers, by_index);
+    return n;
 }
 
 /* A reading as the receiver's ADC takes it: the model's, with its noise. */
@@ -102,13 +193,21 @@ static void deliver_to(int receiver, int sender, const native_sent *s, double mm
     d->frame.low_gain = reading(ir_low_gain_reading(rounded), rng);
 }
 
+typedef struct sending {
+    int sender;
+    const native_sent *frame;
+} sending;
+
+static void deliver_one(int j, double mm, void *ctx) {
+    const sending *s = ctx;
+    deliver_to(j, s->sender, s->frame, mm);
+}
+
 void native_air_send(int sender, const native_sent *frames, unsigned n) {
-    for (unsigned k = 0; k < n; k++)
-        for (int j = 0; j < n_robots; j++) {
-            if (j == sender) continue;
-            double mm = distance_of(sender, j, distance_ctx);
-            if (mm <= range_mm) deliver_to(j, sender, &frames[k], mm);
-        }
+    for (unsigned k = 0; k < n; k++) {
+        sending s = {sender, &frames[k]};
+        each_in_range(sender, deliver_one, &s);
+    }
 }
 
 static int by_receiver_then_start(const void *a, const void *b) {

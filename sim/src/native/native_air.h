@@ -16,8 +16,10 @@
  * receivers (at least a window: it must reach them in their future). */
 void native_air_start(int n, int range_mm, double loss_pct, uint64_t seed, uint32_t nominal_hz,
                       uint64_t latency);
-/* Where the robots are now (ir_channel_place's contract). */
-void native_air_place(ir_distance_fn distance, void *ctx);
+/* Where the robots are now (ir_channel_place's contract), and their
+ * positions (x, y in mm, index order) when known: a grid then finds who is
+ * in range of whom; NULL: every pair is asked. */
+void native_air_place(ir_distance_fn distance, void *ctx, const double *xy);
 /* Carrier sense (native_carrier_fn): clear unless a robot in range began
  * a frame before at (sender's own cycles) that is not over; a clear
  * channel's frame is on the air from then. */

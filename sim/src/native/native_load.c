@@ -18,12 +18,20 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+/* A host shared object: position-independent, and no program (a program
+ * names its dynamic linker, PT_INTERP). */
 int native_is_robot(const char *path) {
     FILE *f = fopen(path, "rb");
     if (f == NULL) return 0;
     Elf64_Ehdr h;
     int yes = fread(&h, sizeof h, 1, f) == 1 && memcmp(h.e_ident, ELFMAG, SELFMAG) == 0 &&
               h.e_ident[EI_CLASS] == ELFCLASS64 && h.e_type == ET_DYN && h.e_machine == EM_X86_64;
+    for (int i = 0; yes && i < h.e_phnum; i++) {
+        Elf64_Phdr p;
+        if (fseek(f, (long)(h.e_phoff + (uint64_t)i * h.e_phentsize), SEEK_SET) != 0 ||
+            fread(&p, sizeof p, 1, f) != 1 || p.p_type == PT_INTERP)
+            yes = 0;
+    }
     fclose(f);
     return yes;
 }

@@ -60,7 +60,15 @@ static void light(int index, int millivolts) {
     native_swarm_robot(index)->io->adc_mv[NATIVE_ADC_LIGHT] = (uint16_t)millivolts;
 }
 
-static const world_robots native_robots = {led, light, native_air_place, native_air_links};
+/* The world's distances, and its robots' positions for the air's grid. */
+static double *positions;
+
+static void place(ir_distance_fn distance, void *ctx) {
+    for (int i = 0; i < n_robots; i++) world_run_position(i, &positions[2 * i], &positions[2 * i + 1]);
+    native_air_place(distance, ctx, positions);
+}
+
+static const world_robots native_robots = {led, light, place, native_air_links};
 
 /* ---- what each robot is told before it starts ---- */
 
@@ -164,9 +172,10 @@ static int start(const options *o, const char *path) {
     native_air_start(o->robots, o->ir_range_mm, o->ir_loss_pct, 0x2545F4914F6CDD1Dull, nominal_hz, window);
     for (int i = 0; i < o->robots; i++) configure(i, o);
     if (o->world != NULL) {
-        if (world_run_start(o->robots, o, &native_robots, nominal_hz) != 0) return -1;
+        positions = malloc((size_t)o->robots * 2 * sizeof *positions);
+        if (positions == NULL || world_run_start(o->robots, o, &native_robots, nominal_hz) != 0) return -1;
     } else {
-        native_air_place(placement_distance_of, (void *)&o->place);
+        native_air_place(placement_distance_of, (void *)&o->place, NULL);
     }
     native_swarm_boot();
     return 0;

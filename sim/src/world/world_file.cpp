@@ -982,7 +982,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
 world_spec Reader::load(const json &doc) {
     Node root{&doc, "", ""};
     const std::string example = "{\"arena\": {\"width_mm\": 600, \"height_mm\": 400}, \"robots\": [{\"count\": 10}]}";
-    object(root, {"description", "robot", "fidelity", "arena", "seed", "duration_s", "sample_period_s", "ir",
+    object(root, {"description", "robot", "arena", "seed", "duration_s", "sample_period_s", "fidelity", "ir",
                   "clock_spread_pct", "light", "obstacles", "objects", "robots"},
            example);
     world_spec w{};

@@ -245,6 +245,11 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
     }
 }
 
+void world_run_position(int index, double *x_mm, double *y_mm) {
+    *x_mm = poses[index].x_mm;
+    *y_mm = poses[index].y_mm;
+}
+
 int world_run_is_epuck(void) { return spec.robot_kind == WORLD_ROBOT_EPUCK; }
 
 int world_run_is_native(void) { return spec.fidelity == WORLD_FIDELITY_NATIVE; }

@@ -28,6 +28,8 @@ typedef struct world_robots {
 /* The robots are loaded: place them on the IR channel, open the outputs;
  * -1 after a message. */
 int world_run_start(int n, const options *o, const world_robots *robots, uint32_t nominal_hz);
+/* Where robot index is now (as of the last physics step). */
+void world_run_position(int index, double *x_mm, double *y_mm);
 /* Robot index set its motors' duties at time t (s). */
 void world_run_motors(int index, uint8_t left, uint8_t right, double t);
 /* After the lockstep window ending at cycle end of the nominal clock:

@@ -1,0 +1,148 @@
+#!/usr/bin/env python3
+"""The native mode: how fast, how much memory, and whether it agrees with
+the exact mode. Rewrites its section of docs/benchmarks.md.
+
+    python3 bench/native_bench.py [--seeds N] [--quick]
+
+Uses the build in build/ (cmake --build build first): openswarm-sim, the
+programs built natively by tests/native and for the AVR by tests/avr.
+  speed: the disperse template packed in a square arena with physics
+  (sample every 1 s), 100 / 1000 / 10 000 robots, 1 and 2 threads:
+  real-time factor, robot-seconds per second, peak memory per robot;
+  outputs at 1000 robots for 10 minutes: the time, and each file's size;
+  cross-check: tests/native/crosscheck.py on disperse, orbit, phototaxis
+  and gradient, seeds 1..N in each mode.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+sys.dont_write_bytecode = True
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "tests", "native"))
+import benchmarks_page  # noqa: E402
+import crosscheck  # noqa: E402
+
+BUILD = os.path.join(ROOT, "build")
+SIM = os.path.join(BUILD, "sim", "openswarm-sim")
+NATIVE = os.path.join(BUILD, "tests", "native")
+AVR = os.path.join(BUILD, "tests", "avr")
+WORLDS = os.path.join(ROOT, "tests", "world", "worlds")
+OUT = os.path.join(ROOT, "build-bench", "native")
+BEGIN, END = "<!-- native_bench: begin -->", "<!-- native_bench: end -->"
+
+
+def packed_world(robots, seconds):
+    """robots packed on a grid 40 mm apart in the middle of an arena three
+    times as wide: they have room to spread."""
+    side = math.ceil(math.sqrt(robots))
+    region = side * 40
+    arena = 3 * region + 200
+    return {"description": f"{robots} robots packed 40 mm apart", "arena": {"width_mm": arena, "height_mm": arena},
+            "seed": 1, "duration_s": seconds, "sample_period_s": 1.0,
+            "robots": [{"grid": {"x_mm": (arena - region) / 2, "y_mm": (arena - region) / 2, "columns": side,
+                                 "rows": math.ceil(robots / side), "spacing_mm": 40}}]
+            if robots % side == 0 else [{"count": robots, "region": {"x_mm": (arena - region) / 2,
+                                        "y_mm": (arena - region) / 2, "width_mm": region, "height_mm": region}}]}
+
+
+def timed_run(robots, seconds, threads, out):
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, "world.json")
+    with open(path, "w") as f:
+        json.dump(packed_world(robots, seconds), f)
+    start = time.monotonic()
+    child = subprocess.Popen([SIM, "--world", path, "--out", out, "-q", "--threads", str(threads),
+                              os.path.join(NATIVE, "native_disperse.so")], stdout=subprocess.DEVNULL)
+    _, status, usage = os.wait4(child.pid, 0)  # this run's own peak memory
+    wall = time.monotonic() - start
+    if status != 0:
+        sys.exit(f"openswarm-sim failed ({status}) on {robots} robots")
+    return wall, usage.ru_maxrss
+
+
+def speed_rows(quick):
+    rows = []
+    for robots, seconds in ((100, 60), (1000, 60), (10000, 10)):
+        if quick and robots > 1000:
+            continue
+        for threads in (1, 2):
+            wall, peak_kb = timed_run(robots, seconds, threads, os.path.join(OUT, f"speed{robots}_{threads}"))
+            rows.append((robots, seconds, threads, seconds / wall, robots * seconds / wall, peak_kb))
+            print(rows[-1], file=sys.stderr)
+    return rows
+
+
+def outputs_row():
+    out = os.path.join(OUT, "outputs1000")
+    wall, _ = timed_run(1000, 600, 2, out)
+    sizes = {name: os.path.getsize(os.path.join(out, name)) for name in
+             ("trajectories.csv", "final.png", "viewer.html")}
+    return wall, sizes
+
+
+CROSS = (("disperse", "template_disperse.elf", "native_disperse.so", os.path.join(ROOT, "templates", "disperse",
+          "worlds", "packed.json"), 60),
+         ("orbit", "world_orbit.elf", "native_orbit.so", os.path.join(WORLDS, "orbit.json"), None),
+         ("phototaxis", "world_phototaxis.elf", "native_phototaxis.so", os.path.join(WORLDS, "phototaxis.json"), None),
+         ("gradient", "world_gradient.elf", "native_gradient.so", os.path.join(WORLDS, "gradient.json"), None))
+
+
+def cross_rows(seeds):
+    rows = []
+    for behaviour, elf, so, world, seconds in CROSS:
+        xs, ys, t, p = crosscheck.crosscheck(SIM, behaviour, os.path.join(AVR, elf), os.path.join(NATIVE, so),
+                                             world, os.path.join(OUT, "cross_" + behaviour), seeds, seconds)
+        rows.append((behaviour, xs, ys, t, p))
+        print(rows[-1], file=sys.stderr)
+    return rows
+
+
+def mean_sd(v):
+    m = sum(v) / len(v)
+    return m, math.sqrt(sum((x - m) ** 2 for x in v) / (len(v) - 1))
+
+
+def section(speed, outputs, cross, seeds, command):
+    lines = [BEGIN, "## Native mode", "", f"`{command}` on this 2-core machine (quiet).", "",
+             "### Speed: the disperse template, packed, in a world with physics", "",
+             "| robots | simulated | threads | real-time factor | robot-seconds per second | peak memory per robot |",
+             "|---:|---:|---:|---:|---:|---:|"]
+    for robots, seconds, threads, factor, rps, peak_kb in speed:
+        lines.append(f"| {robots} | {seconds} s | {threads} | {factor:.1f}x | {rps:,.0f} | {peak_kb / robots:.0f} KB |")
+    if outputs:
+        wall, sizes = outputs
+        lines += ["", f"1000 robots for 10 minutes with the outputs (sample every 1 s, 2 threads): {wall:.0f} s; "
+                  + ", ".join(f"{name} {size / 1e6:.1f} MB" for name, size in sizes.items()) + "."]
+    lines += ["", "### Cross-check against the exact mode", "",
+              f"`tests/native/crosscheck.py`: each behaviour's metric over seeds 1-{seeds} in each mode, "
+              "Welch's t-test; the modes agree when p >= 0.01.", "",
+              "| behaviour | metric | exact mean (sd) | native mean (sd) | difference | p | agree |",
+              "|---|---|---:|---:|---:|---:|---|"]
+    metric = {"disperse": "mean nearest-neighbour distance at 60 s, mm", "orbit": "mean distance off the 60 mm orbit, mm",
+              "phototaxis": "final over starting distance to the lamp", "gradient": "time until every LED shows its hop count, s"}
+    for behaviour, xs, ys, t, p in cross:
+        (mx, sx), (my, sy) = mean_sd(xs), mean_sd(ys)
+        diff = f"{(my - mx) / mx * 100:+.0f}%" if mx else f"{my - mx:+.2f}"
+        lines.append(f"| {behaviour} | {metric[behaviour]} | {mx:.2f} ({sx:.2f}) | {my:.2f} ({sy:.2f}) | {diff} | "
+                     f"{p:.3f} | {'yes' if p >= 0.01 else 'no'} |")
+    lines += ["", END]
+    return "\n".join(lines)
+
+
+def main():
+    quick = "--quick" in sys.argv
+    seeds = int(sys.argv[sys.argv.index("--seeds") + 1]) if "--seeds" in sys.argv else 8
+    speed = speed_rows(quick)
+    outputs = None if quick else outputs_row()
+    cross = cross_rows(seeds)
+    command = "python3 bench/native_bench.py" + (" --quick" if quick else "") + f" --seeds {seeds}"
+    benchmarks_page.write_section(BEGIN, END, section(speed, outputs, cross, seeds, command))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# End to end: the native mode through the tool. The disperse template built
+# for the host (`openswarm build --native`) and run in its packed world
+# (`openswarm run --native`): the robots spread out and the picture and the
+# viewer are written; a world with "fidelity": "native" is run natively
+# without being asked; and the mistakes are refused with their fix.
+#   native_run.sh OPENSWARM OPENSWARM_SIM WORKDIR
+set -uo pipefail
+openswarm=$1 sim=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+source "$(dirname "$0")/check.sh"
+"$openswarm" new app --template disperse >/dev/null || exit 1
+
+check "build --native" 0 "Built app/build/kilobot-native/app.so for kilobot, native" \
+    "$openswarm" build -C app --native
+test -s app/build/kilobot-native/app.so || { echo "no app.so"; failed=$((failed + 1)); }
+check "run --native in the packed world" 0 "Built .*app.so \(native\).*ran 120.000 s of simulated time \(10 robots\).*Open app/out/packed/viewer.html" \
+    "$openswarm" run -C app --native --world app/worlds/packed.json
+python3 - app/out/packed/trajectories.csv <<'PY' && passed=$((passed + 1)) || failed=$((failed + 1))
+import csv, math, sys
+samples = {}
+for row in csv.DictReader(open(sys.argv[1])):
+    samples.setdefault(float(row["time_s"]), []).append((float(row["x_mm"]), float(row["y_mm"])))
+def mean_nearest(points):
+    return sum(min(math.dist(p, q) for q in points if q is not p) for p in points) / len(points)
+first, last = min(samples), max(samples)
+start, end = mean_nearest(samples[first]), mean_nearest(samples[last])
+print(f"native: mean nearest-neighbour distance {start:.1f} mm at {first} s, {end:.1f} mm at {last} s")
+assert end >= 1.5 * start, f"the robots did not spread: {start:.1f} -> {end:.1f} mm (want x1.5)"
+PY
+for f in final.png viewer.html; do
+    test -s "app/out/packed/$f" && passed=$((passed + 1)) || { echo "FAILED: no $f"; failed=$((failed + 1)); }
+done
+
+# A world that asks for the native mode gets it from plain `run`.
+sed 's/"seed": 7,/"seed": 7, "fidelity": "native",/' app/worlds/packed.json >native.json
+check "\"fidelity\": \"native\" builds and runs natively" 0 "Built .*app.so \(native\).*ran 5.000 s" \
+    "$openswarm" run -C app --world native.json --time 5
+
+# Mistakes, each naming the fix.
+"$openswarm" build -C app >/dev/null 2>&1
+check "the exact mode's firmware in a native world" 2 "asks for \"fidelity\": \"native\".*openswarm build --native" \
+    "$sim" --world native.json --time 1 app/build/kilobot/app.elf
+check "a shared object that is no robot" 2 "no native robot.*openswarm build --native" \
+    "$sim" --time 1 /lib/x86_64-linux-gnu/libm.so.6
+check "--gdb in the native mode" 2 "--gdb: the native mode runs the app on the host.*without --native" \
+    "$openswarm" run -C app --native --gdb 1234
+check "--trace in the native mode (the simulator)" 2 "--trace measures the simulated MCU.*exact mode" \
+    "$sim" --trace --time 1 app/build/kilobot-native/app.so
+check "--native --debug" 2 "--debug and --native: give one" "$openswarm" build -C app --native --debug
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
