@@ -45,11 +45,11 @@ function(openswarm_add_firmware name)
   if(NOT F_SOURCES)
     message(FATAL_ERROR "openswarm_add_firmware(${name}): SOURCES is required")
   endif()
-  if(OPENSWARM_NATIVE)
-    openswarm_add_native_app(${name} "${F_PORT}" "${F_SOURCES}" "${F_CONFIG}")
-    return()
+  if(OPENSWARM_NATIVE AND NOT F_PORT STREQUAL "kilobot")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): the native mode (OPENSWARM_NATIVE) runs "
+      "Kilobot apps so far, not PORT ${F_PORT}: build it without OPENSWARM_NATIVE")
   endif()
-  if(F_PORT STREQUAL "kilobot" AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "avr")
+  if(F_PORT STREQUAL "kilobot" AND NOT OPENSWARM_NATIVE AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "avr")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT kilobot needs the AVR toolchain: "
       "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/kilobot/cmake/avr-gcc.cmake "
       "(or build with `openswarm build`)")
@@ -77,6 +77,12 @@ function(openswarm_add_firmware name)
   if(F_CONFIG)
     get_filename_component(config "${F_CONFIG}" ABSOLUTE)
     set(config_args CONFIG ${config})
+  endif()
+  if(OPENSWARM_NATIVE)
+    openswarm_add_native_robot(${name} BOARD ${F_PORT} SOURCES ${F_SOURCES} ${generated_sources}
+      ${config_args} INCLUDES ${OPENSWARM_GENERATED_DIR})
+    openswarm_app_warnings(${name})
+    return()
   endif()
   if(F_PORT STREQUAL "epuck_world")
     openswarm_add_kernel(${name}_openswarm PORT host BOARD epuck_world ${config_args})
@@ -114,32 +120,8 @@ function(openswarm_add_firmware name)
 endfunction()
 
 # OPENSWARM_NATIVE (openswarm build --native): the app for the host as a
-# robot of the simulator's native mode, <name>.so (cmake/OpenSwarmNative.cmake),
-# with the configuration and start-up code `openswarm build` generated.
+# robot of the simulator's native mode, <name>.so (cmake/OpenSwarmNative.cmake).
 option(OPENSWARM_NATIVE "build the app for the host, as a native-mode robot (<name>.so)" OFF)
-function(openswarm_add_native_app name port sources config)
-  if(NOT port STREQUAL "kilobot")
-    message(FATAL_ERROR "openswarm_add_firmware(${name}): the native mode (OPENSWARM_NATIVE) runs "
-      "Kilobot apps so far, not PORT ${port}: build it without OPENSWARM_NATIVE")
-  endif()
-  set(generated)
-  set(includes)
-  if(OPENSWARM_GENERATED_DIR AND EXISTS ${OPENSWARM_GENERATED_DIR}/openswarm_app.c)
-    if(NOT config)
-      set(config ${OPENSWARM_GENERATED_DIR}/openswarm_config.h)
-    endif()
-    set(generated ${OPENSWARM_GENERATED_DIR}/openswarm_app.c)
-    set(includes ${OPENSWARM_GENERATED_DIR})
-  endif()
-  set(config_args)
-  if(config)
-    get_filename_component(config "${config}" ABSOLUTE)
-    set(config_args CONFIG ${config})
-  endif()
-  openswarm_add_native_robot(${name} BOARD ${port} SOURCES ${sources} ${generated} ${config_args}
-    INCLUDES ${includes})
-  openswarm_app_warnings(${name})
-endfunction()
 
 # The e-puck2's robot image beside the QEMU one: the same app on the
 # robot board (ports/epuck/epuck2/robot), <name>-robot.elf linked where

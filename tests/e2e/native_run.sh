@@ -16,18 +16,7 @@ check "build --native" 0 "Built app/build/kilobot-native/app.so for kilobot, nat
 test -s app/build/kilobot-native/app.so || { echo "no app.so"; failed=$((failed + 1)); }
 check "run --native in the packed world" 0 "Built .*app.so \(native\).*ran 120.000 s of simulated time \(10 robots\).*Open app/out/packed/viewer.html" \
     "$openswarm" run -C app --native --world app/worlds/packed.json
-python3 - app/out/packed/trajectories.csv <<'PY' && passed=$((passed + 1)) || failed=$((failed + 1))
-import csv, math, sys
-samples = {}
-for row in csv.DictReader(open(sys.argv[1])):
-    samples.setdefault(float(row["time_s"]), []).append((float(row["x_mm"]), float(row["y_mm"])))
-def mean_nearest(points):
-    return sum(min(math.dist(p, q) for q in points if q is not p) for p in points) / len(points)
-first, last = min(samples), max(samples)
-start, end = mean_nearest(samples[first]), mean_nearest(samples[last])
-print(f"native: mean nearest-neighbour distance {start:.1f} mm at {first} s, {end:.1f} mm at {last} s")
-assert end >= 1.5 * start, f"the robots did not spread: {start:.1f} -> {end:.1f} mm (want x1.5)"
-PY
+python3 "$(dirname "$0")/spread.py" app/out/packed/trajectories.csv 10 120 && passed=$((passed + 1)) || failed=$((failed + 1))
 for f in final.png viewer.html; do
     test -s "app/out/packed/$f" && passed=$((passed + 1)) || { echo "FAILED: no $f"; failed=$((failed + 1)); }
 done

@@ -19,20 +19,7 @@ if grep -q " led \| motors " run.log; then echo "traced without --trace:"; cat r
 for f in trajectories.csv final.png viewer.html; do
     test -s "app/out/packed/$f" || { echo "app/out/packed/$f was not written"; cat run.log; exit 1; }
 done
-python3 - app/out/packed/trajectories.csv <<'PY'
-import csv, math, sys
-samples = {}
-for row in csv.DictReader(open(sys.argv[1])):
-    samples.setdefault(float(row["time_s"]), []).append((float(row["x_mm"]), float(row["y_mm"])))
-def mean_nearest(points):
-    return sum(min(math.dist(p, q) for q in points if q is not p) for p in points) / len(points)
-first, last = min(samples), max(samples)
-assert len(samples[first]) == 10 and len(samples[last]) == 10, "expected 10 robots in every sample"
-assert last >= 119, f"the trajectories end at {last} s, not at the world's 120 s"
-start, end = mean_nearest(samples[first]), mean_nearest(samples[last])
-print(f"mean nearest-neighbour distance: {start:.1f} mm at {first} s, {end:.1f} mm at {last} s")
-assert end >= 1.5 * start, f"the robots did not spread: {start:.1f} -> {end:.1f} mm (want x1.5)"
-PY
+python3 "$(dirname "$0")/spread.py" app/out/packed/trajectories.csv 10 120
 
 # --out and --time given: the files go where asked, for the time asked.
 "$openswarm" run -C app --world app/worlds/packed.json --out short --time 1 >short.log 2>&1 \

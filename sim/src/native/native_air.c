@@ -131,14 +131,24 @@ static void each_in_range(int i, in_range_fn each, void *ctx) {
  * microseconds: two robots that start closer together both send. */
 #define SENSE_CYCLES IR_LATENCY_CYCLES
 
+typedef struct carrier {
+    uint64_t now; /* nominal cycles */
+    int busy;
+} carrier;
+
+/* A robot in range whose frame began before now, sensed, and is not over. */
+static void sense(int j, double mm, void *ctx) {
+    (void)mm;
+    carrier *c = ctx;
+    uint64_t s = last_start[j];
+    if (s != 0 && s + SENSE_CYCLES <= c->now && c->now < s + FRAME_CYCLES) c->busy = 1;
+}
+
 int native_air_clear(int sender, uint64_t at) {
-    uint64_t now = at * nominal / native_swarm_robot(sender)->hz;
-    for (int j = 0; j < n_robots; j++) {
-        uint64_t s = last_start[j];
-        if (j == sender || s == 0 || s + SENSE_CYCLES > now || now >= s + FRAME_CYCLES) continue;
-        if (distance_of(sender, j, distance_ctx) <= range_mm) return 0;
-    }
-    last_start[sender] = now;
+    carrier c = {at * nominal / native_swarm_robot(sender)->hz, 0};
+    each_in_range(sender, sense, &c);
+    if (c.busy) return 0;
+    last_start[sender] = c.now;
     return 1;
 }
 

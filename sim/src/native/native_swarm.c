@@ -20,7 +20,10 @@
 
 #include "window_workers.h"
 
-#define ROBOTS_PER_THREAD 32
+/* A window of a sleeping swarm is little work: two threads only pay
+ * their waiting for each other below thousands of robots (measured,
+ * docs/benchmarks.md "Native mode"). --threads still chooses. */
+#define ROBOTS_PER_THREAD 2500
 
 static native_copy *copies;
 static int n_threads;
@@ -127,7 +130,21 @@ static int dozing(const native_robot *r, uint64_t own_end) {
     return io->inbox_count == 0 || io->inbox[io->inbox_head].start > own_end;
 }
 
-static void run_robot(int i, uint64_t own_end) {
+/* The robots waiting for carrier sense: each thread notes its own as they
+ * ask (asking[t]), the main thread the ones it runs on (asking[0]). */
+typedef struct asker_list {
+    int *index;
+    unsigned n, room;
+} asker_list;
+static asker_list *asking;
+
+static void note_asking(int t, int i) {
+    asker_list *l = &asking[t];
+    l->index = grow(l->index, &l->room, l->n + 1, sizeof *l->index);
+    l->index[l->n++] = i;
+}
+
+static void run_robot(int t, int i, uint64_t own_end) {
     native_robot *r = &robots[i];
     native_copy *c = load(i);
     for (;;) {
@@ -137,9 +154,11 @@ static void run_robot(int i, uint64_t own_end) {
             boot(r, c, r->io->now);
             continue;
         }
-        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0 ||
-            r->io->transmit == NATIVE_TRANSMIT_ASKED)
+        if (r->io->transmit == NATIVE_TRANSMIT_ASKED) {
+            note_asking(t, i);
             return;
+        }
+        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0) return;
     }
 }
 
@@ -154,7 +173,7 @@ static int run_share(int t) {
         if (r->io->state != NATIVE_RUNNING) continue;
         all_stopped = 0;
         uint64_t own_end = own_end_of(r);
-        if (!dozing(r, own_end)) run_robot(i, own_end);
+        if (!dozing(r, own_end)) run_robot(t, i, own_end);
     }
     return all_stopped;
 }
@@ -183,7 +202,8 @@ int native_swarm_create(native_copy *all_copies, int n_copies, int n) {
     n_robots = n;
     robots = calloc((size_t)n, sizeof *robots);
     loaded = malloc((size_t)n_copies * sizeof *loaded);
-    if (robots == NULL || loaded == NULL) return -1;
+    asking = calloc((size_t)n_copies, sizeof *asking);
+    if (robots == NULL || loaded == NULL || asking == NULL) return -1;
     for (int t = 0; t < n_copies; t++) loaded[t] = -1;
     for (int i = 0; i < n; i++) {
         native_robot *r = &robots[i];
@@ -207,20 +227,24 @@ void native_swarm_boot(void) {
     window_workers_begin(n_threads, run_share);
 }
 
-/* The robot waiting for carrier sense that asked first (by the nominal
- * clock, then by index); -1: none. */
+/* The one that asked first (by the nominal clock, then by index), taken
+ * off its list; -1: none. */
 static int first_asking(void) {
-    int first = -1;
+    int first = -1, from = 0;
+    unsigned at_k = 0;
     uint64_t first_at = 0;
-    for (int i = 0; i < n_robots; i++) {
-        const native_io *io = robots[i].io;
-        if (io->transmit != NATIVE_TRANSMIT_ASKED) continue;
-        uint64_t at = io->now * nominal / robots[i].hz;
-        if (first < 0 || at < first_at) {
-            first = i;
-            first_at = at;
+    for (int t = 0; t < n_threads; t++)
+        for (unsigned k = 0; k < asking[t].n; k++) {
+            int i = asking[t].index[k];
+            uint64_t at = robots[i].io->now * nominal / robots[i].hz;
+            if (first < 0 || at < first_at || (at == first_at && i < first)) {
+                first = i;
+                first_at = at;
+                from = t;
+                at_k = k;
+            }
         }
-    }
+    if (first >= 0) asking[from].index[at_k] = asking[from].index[--asking[from].n];
     return first;
 }
 
@@ -241,7 +265,7 @@ int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn cle
             r->io->transmit = NATIVE_TRANSMIT_BUSY;
             r->log.n_sent--; /* it never went out */
         }
-        run_robot(i, own_end_of(r));
+        run_robot(0, i, own_end_of(r));
     }
     return all_stopped;
 }
