@@ -406,6 +406,12 @@ void board_erase_calibration(avr_t *avr);
 void power_down_freeze(robot *r);
 void power_down_thaw(robot *r);
 
+/* Whether the instruction at the PC lies in flash. A return through a
+ * stack overwritten or freed too far jumps anywhere (a thread's paint,
+ * 0xE7E7: byte 0x1CFCE, past 32 KB); simavr 1.6 reads there before its own
+ * bounds check, as the watches below would: test this first. */
+static inline int pc_in_flash(const avr_t *avr) { return avr->pc + 1u <= avr->flashend; }
+
 static inline int at_sleep_instruction(const avr_t *avr) {
     return (avr->flash[avr->pc] | avr->flash[avr->pc + 1] << 8) == SLEEP_OPCODE;
 }
