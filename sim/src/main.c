@@ -155,7 +155,10 @@ static void print_firmware_legend(const options *o) {
 }
 
 static int load_robots(const options *o, FILE *csv) {
-    robots = calloc((size_t)o->robots, sizeof *robots);
+    /* A world may hold no robots (docs/world.md): its time still runs, by
+     * the clock robots would have. */
+    nominal_hz = KILOBOT_CLOCK_HZ;
+    robots = calloc(o->robots > 0 ? (size_t)o->robots : 1, sizeof *robots);
     if (robots == NULL) {
         fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", o->robots);
         return -1;
@@ -191,13 +194,14 @@ static void run(const options *o) {
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
         progress_update(end);
-        if (all_stopped || end == limit) break;
+        if ((all_stopped && o->robots > 0) || end == limit) break; /* none: run to the end */
         if (counters_every != 0 && end >= next_counters) {
             print_counters(o, end);
             next_counters += counters_every;
         }
     }
-    if (o->counters_period >= 0) print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
+    if (o->counters_period >= 0 && o->robots > 0)
+        print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
     progress_end();
     lockstep_end();
 }

@@ -29,6 +29,9 @@
 /* Robots run in lockstep windows this many cycles long; an IR edge reaches
  * its receivers exactly this long after it left (air/ir_channel.c). */
 #define IR_LATENCY_CYCLES 64
+/* A Kilobot's clock: a firmware without an MCU record runs at it, and a
+ * world without robots counts its time in it. */
+#define KILOBOT_CLOCK_HZ 8000000u
 #define MAX_OHC_MESSAGES 16
 
 enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5, EXIT_FAULT = 6,
