@@ -4,6 +4,8 @@
 
 #include <mpi.h>
 
+#include "experiment_failures.hpp"
+
 namespace openswarm {
 
 namespace {
@@ -19,17 +21,16 @@ int env_int(const char *name, int fallback) {
 }
 
 // A rank's outcomes in two messages: doubles (job, count, samples...) and
-// text (job, tab, failure, newline, ...).
+// the failures' reasons (experiment_failures.hpp).
 void send(const std::vector<TrialOutcome> &outcomes) {
     std::vector<double> numbers;
-    std::string failures;
     for (size_t k = 0; k < outcomes.size(); k++) {
         if (!outcomes[k].here) continue;
         numbers.push_back((double)k);
         numbers.push_back((double)outcomes[k].samples.size());
         numbers.insert(numbers.end(), outcomes[k].samples.begin(), outcomes[k].samples.end());
-        if (!outcomes[k].failure.empty()) failures += std::to_string(k) + "\t" + outcomes[k].failure + '\n';
     }
+    const std::string failures = encode_failures(outcomes);
     MPI_Send(numbers.data(), (int)numbers.size(), MPI_DOUBLE, 0, 1, MPI_COMM_WORLD);
     MPI_Send(failures.data(), (int)failures.size(), MPI_CHAR, 0, 2, MPI_COMM_WORLD);
 }
@@ -41,20 +42,25 @@ void receive(std::vector<TrialOutcome> &outcomes, int from) {
     MPI_Get_count(&status, MPI_DOUBLE, &count);
     std::vector<double> numbers((size_t)count);
     MPI_Recv(numbers.data(), count, MPI_DOUBLE, from, 1, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    std::vector<size_t> sent; // the trials rank from ran
     for (size_t at = 0; at + 2 <= numbers.size();) {
         size_t k = (size_t)numbers[at], n = (size_t)numbers[at + 1];
         outcomes[k].samples.assign(numbers.begin() + (long)at + 2, numbers.begin() + (long)(at + 2 + n));
+        sent.push_back(k);
         at += 2 + n;
     }
     MPI_Probe(from, 2, MPI_COMM_WORLD, &status);
     MPI_Get_count(&status, MPI_CHAR, &count);
     std::string failures((size_t)count, '\0');
     MPI_Recv(failures.data(), count, MPI_CHAR, from, 2, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    for (size_t at = 0; at < failures.size();) {
-        size_t tab = failures.find('\t', at), end = failures.find('\n', tab);
-        outcomes[std::stoul(failures.substr(at, tab - at))].failure = failures.substr(tab + 1, end - tab - 1);
-        at = end + 1;
-    }
+    std::string why;
+    if (decode_failures(failures, outcomes, why)) return;
+    // Not from this version of the tool: the rank's trials without samples
+    // failed for a reason rank 0 cannot read, rather than seem to have run.
+    for (size_t k : sent)
+        if (outcomes[k].samples.empty() && outcomes[k].failure.empty())
+            outcomes[k].failure = "rank " + std::to_string(from) + " sent why it failed in a form rank 0 "
+                                  "cannot read (" + why + "): run every rank with the same openswarm";
 }
 
 }  // namespace

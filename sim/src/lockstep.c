@@ -87,6 +87,10 @@ static int run_robot(robot *r) {
         r->wake_registered = 1;
     }
     while (!robot_finished(r) && r->avr->cycle < end) {
+        if (!pc_in_flash(r->avr)) {
+            r->state = cpu_Crashed; /* main.c's report says where the PC went */
+            break;
+        }
         power_down_before_step(r);
         register_store_check(r);
         if (profiling)

@@ -79,6 +79,23 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     return debug_attach(r, o);
 }
 
+/* A crash: where, and what to look for. A PC past the flash is ours to
+ * catch (lockstep.c), so it is still there to name. */
+static void report_crash(const robot *r, const options *o, double t) {
+    if (!pc_in_flash(r->avr)) {
+        fprintf(stderr, "openswarm-sim: robot %d (%s) crashed at %.6f s: its program counter left the "
+                        "flash: PC 0x%x, past its end at 0x%x. A return through a stack overwritten or "
+                        "freed too far (a thread's stack too small in openswarm.json, assembly that "
+                        "moves SP) or a call through a bad function pointer; run it with avr-gdb "
+                        "(openswarm run --gdb 1234) and step to the return that jumps there\n",
+                r->index, firmware_of(o, r->index), t, (unsigned)r->avr->pc, (unsigned)r->avr->flashend);
+        return;
+    }
+    fprintf(stderr, "openswarm-sim: %sthe firmware crashed at %.6f s (PC 0x%04x): a bad "
+                    "jump or a stack overflow; run it with avr-gdb to see where\n",
+            r->console.prefix, t, (unsigned)r->avr->pc);
+}
+
 static int report(int n, const options *o) {
     int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, memory_broken = 0;
     unsigned faults = 0;
@@ -96,9 +113,7 @@ static int report(int n, const options *o) {
                     r->index, t);
             booted = 1;
         } else if (r->state == cpu_Crashed) {
-            fprintf(stderr, "openswarm-sim: %sthe firmware crashed at %.6f s (PC 0x%04x): a bad "
-                            "jump or a stack overflow; run it with avr-gdb to see where\n",
-                    r->console.prefix, t, (unsigned)r->avr->pc);
+            report_crash(r, o, t);
             crashed = 1;
         } else if (r->state == cpu_Done) {
             int s = r->avr->data[GPIOR0_ADDR];
@@ -143,7 +158,10 @@ static void print_firmware_legend(const options *o) {
 }
 
 static int load_robots(const options *o, FILE *csv) {
-    robots = calloc((size_t)o->robots, sizeof *robots);
+    /* A world may hold no robots (docs/world.md): its time still runs, by
+     * the clock robots would have. */
+    nominal_hz = KILOBOT_CLOCK_HZ;
+    robots = calloc(o->robots > 0 ? (size_t)o->robots : 1, sizeof *robots);
     if (robots == NULL) {
         fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", o->robots);
         return -1;
@@ -179,13 +197,14 @@ static void run(const options *o) {
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
         progress_update(end);
-        if (all_stopped || end == limit) break;
+        if ((all_stopped && o->robots > 0) || end == limit) break; /* none: run to the end */
         if (counters_every != 0 && end >= next_counters) {
             print_counters(o, end);
             next_counters += counters_every;
         }
     }
-    if (o->counters_period >= 0) print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
+    if (o->counters_period >= 0 && o->robots > 0)
+        print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
     progress_end();
     lockstep_end();
 }

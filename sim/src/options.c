@@ -348,6 +348,11 @@ int options_check_robots(options *o) {
                         "(the last one also runs on the robots after it)\n", o->n_elves, o->robots);
         return -1;
     }
+    if (o->profile && o->robots == 0) {
+        fprintf(stderr, "openswarm-sim: --profile counts the cycles of the robots' firmware, and %s has "
+                        "no robots: drop --profile, or add robots to it\n", o->world ? o->world : "the run");
+        return -1;
+    }
     if (o->profile && !one_firmware(o)) {
         fprintf(stderr, "openswarm-sim: --profile names the functions of one firmware: run one "
                         "FIRMWARE.elf on every robot\n");

@@ -29,6 +29,9 @@
 /* Robots run in lockstep windows this many cycles long; an IR edge reaches
  * its receivers exactly this long after it left (air/ir_channel.c). */
 #define IR_LATENCY_CYCLES 64
+/* A Kilobot's clock: a firmware without an MCU record runs at it, and a
+ * world without robots counts its time in it. */
+#define KILOBOT_CLOCK_HZ 8000000u
 #define MAX_OHC_MESSAGES 16
 
 enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5, EXIT_FAULT = 6,
@@ -415,6 +418,12 @@ void board_erase_calibration(avr_t *avr);
 #define SLEEP_OPCODE 0x9588
 void power_down_freeze(robot *r);
 void power_down_thaw(robot *r);
+
+/* Whether the instruction at the PC lies in flash. A return through a
+ * stack overwritten or freed too far jumps anywhere (a thread's paint,
+ * 0xE7E7: byte 0x1CFCE, past 32 KB); simavr 1.6 reads there before its own
+ * bounds check, as the watches below would: test this first. */
+static inline int pc_in_flash(const avr_t *avr) { return avr->pc + 1u <= avr->flashend; }
 
 static inline int at_sleep_instruction(const avr_t *avr) {
     return (avr->flash[avr->pc] | avr->flash[avr->pc + 1] << 8) == SLEEP_OPCODE;

@@ -2,7 +2,8 @@
 # End to end: an experiment spread over two MPI ranks on one machine
 # (`mpirun -np 2 --oversubscribe openswarm experiment FILE`) gives the same
 # results.csv, byte for byte, as the same experiment run alone: each rank
-# runs its share of the trials (both controllers on each), rank 0 gathers.
+# runs its share of the trials (both controllers on each), rank 0 gathers;
+# a trial that fails on rank 1 is reported by rank 0 with its whole reason.
 #   experiment_mpi.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -21,4 +22,32 @@ grep -q "^\[rank 0 .*OpenSwarm" mpi.log && grep -q "^\[rank 1 .*OpenSwarm" mpi.l
 grep -Eq "^6 of 6 trials ran in " mpi.log
 "$openswarm" experiment experiments/paper.json --trials 3 --duration 60 --out alone > alone.log
 cmp mpi/results.csv alone/results.csv
-echo "1 passed, 0 failed"
+
+# A trial that fails on rank 1 (slot = trial + controller: the second
+# controller's first trial) reaches rank 0 with its reason whole, newlines
+# and tabs included (one such reason crashed rank 0: std::stoul on a line
+# of it), and the other trial's results are kept.
+cat > broken.sh <<'BROKEN'
+#!/bin/sh
+printf 'broken on purpose:\n\tline two\twith tabs\n7\tnot a trial\n' >&2
+exit 1
+BROKEN
+chmod +x broken.sh
+python3 - <<'SPEC'
+import json
+e = json.load(open("experiments/paper.json"))
+e["controllers"] = [e["controllers"][0], {"name": "broken", "program": "../broken.sh"}]
+json.dump(e, open("experiments/broken.json", "w"), indent=1)
+SPEC
+status=0
+mpirun --oversubscribe -np 2 "$openswarm" experiment experiments/broken.json --trials 1 --duration 10 \
+    --out broken > broken.log 2>&1 || status=$?
+cat broken.log
+test "$status" -eq 1 || { echo "FAILED: mpirun exited $status, not 1 (a failed trial)"; exit 1; }
+grep -Eq "^1 of 2 trials ran in " broken.log
+grep -q "broken, trial 1 (.*) failed: " broken.log
+grep -q "^broken on purpose:$" broken.log
+grep -q "^$(printf '\t')line two$(printf '\t')with tabs$" broken.log
+grep -q "^7$(printf '\t')not a trial$" broken.log
+grep -q "^1,OpenSwarm,.*,10.000," broken/results.csv
+echo "2 passed, 0 failed"

@@ -4,19 +4,16 @@ paths, count the checks."""
 import csv
 import subprocess
 import sys
-import time
 
 
 def run(sim, elf, world, out, extra=()):
-    """Runs ELF in WORLD, writing OUT (with the simulator options extra);
-    returns the wall time in seconds."""
-    start = time.monotonic()
+    """Runs ELF in WORLD, writing OUT (with the simulator options extra).
+    How long it takes is not checked: a busy machine may take any time, and
+    the test's ctest TIMEOUT bounds a run that hangs."""
     done = subprocess.run([sim, "--world", world, "--out", out, "-q", *extra, elf],
-                          capture_output=True, text=True, timeout=240)
-    wall = time.monotonic() - start
+                          capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"openswarm-sim failed ({done.returncode}):\n{done.stderr}")
-    return wall
 
 
 def paths(out):

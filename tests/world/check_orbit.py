@@ -13,8 +13,7 @@ its IR distance estimates, which starts 80 mm away facing away from the star
   and the estimate itself is off by a few mm, so +- 20 mm (a third of the
   radius; the IR range is 100 mm) is what "keeps its distance" means;
   it goes round: its angle around the star sweeps one full turn or more
-  counter-clockwise after SETTLE_S;
-  the run takes under a minute of wall time.
+  counter-clockwise after SETTLE_S.
 """
 import math
 import sys
@@ -24,12 +23,11 @@ from behaviour import Checks, paths, run
 ORBIT_MM = 60.0
 BAND_MM = 20.0
 SETTLE_S = 20.0
-WALL_LIMIT_S = 60.0
 
 
 def main():
     sim, elf, world, out = sys.argv[1:5]
-    wall = run(sim, elf, world, out)
+    run(sim, elf, world, out)
     robots = paths(out)
     checks = Checks()
     star, planet = robots[0], robots[1]
@@ -52,7 +50,6 @@ def main():
         last = a
     checks.expect(swept >= 360.0, f"it goes round the star counter-clockwise: {swept:.0f} deg "
                   f"({swept / 360.0:.1f} turns) in {late[-1][0] - late[0][0]:.0f} s")
-    checks.expect(wall < WALL_LIMIT_S, f"{planet[-1][0]:.0f} s simulated in {wall:.1f} s of wall time")
     checks.finish()
 
 

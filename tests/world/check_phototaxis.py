@@ -7,8 +7,7 @@ and robots 400 mm from it facing away, and checks:
   in the same world without the lamp (OUT/dark.json: same robots, same
   seed, ambient light only) the same firmware brings none of them as near:
   each ends more than half as far as it started from where the lamp was
-  (the approach is the light's doing, not the walk's);
-  each run takes under a minute of wall time.
+  (the approach is the light's doing, not the walk's).
 """
 import json
 import math
@@ -16,8 +15,6 @@ import os
 import sys
 
 from behaviour import Checks, paths, run
-
-WALL_LIMIT_S = 60.0
 
 
 def distances(robots, lamp):
@@ -32,11 +29,10 @@ def main():
     lamp = (source["x_mm"], source["y_mm"])
     checks = Checks()
 
-    wall = run(sim, elf, world, f"{out}/light")
+    run(sim, elf, world, f"{out}/light")
     robots = paths(f"{out}/light")
     for i, (start, end) in distances(robots, lamp).items():
         checks.expect(end < 0.5 * start, f"with the lamp robot {i} ends nearer: {start:.0f} -> {end:.0f} mm")
-    checks.expect(wall < WALL_LIMIT_S, f"with the lamp: {robots[0][-1][0]:.0f} s simulated in {wall:.1f} s of wall time")
 
     spec["description"] = "phototaxis.json without its lamp (written by check_phototaxis.py)"
     spec["light"]["sources"] = []
@@ -44,12 +40,11 @@ def main():
     dark = f"{out}/dark.json"
     with open(dark, "w") as f:
         json.dump(spec, f, indent=1)
-    wall = run(sim, elf, dark, f"{out}/dark")
+    run(sim, elf, dark, f"{out}/dark")
     robots = paths(f"{out}/dark")
     for i, (start, end) in distances(robots, lamp).items():
         checks.expect(end > 0.5 * start, f"without the lamp robot {i} does not close in on its place: "
                       f"{start:.0f} -> {end:.0f} mm")
-    checks.expect(wall < WALL_LIMIT_S, f"without the lamp: {robots[0][-1][0]:.0f} s simulated in {wall:.1f} s of wall time")
     checks.finish()
 
 

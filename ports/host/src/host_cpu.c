@@ -10,8 +10,8 @@
  * moment the kernel unmasks them, exactly like a pending AVR interrupt.
  *
  * For the driver to know when an interrupt's effects are over, the CPU
- * acknowledges the sequence number of the last interrupt raised each time
- * it is back in thread code or idle with nothing pending. */
+ * acknowledges the sequence number of the last interrupt raised before it
+ * found nothing pending, each time it is back in thread code or idle. */
 #define _GNU_SOURCE
 #include "host_internal.h"
 
@@ -46,6 +46,7 @@ static host_clock clock_mode = HOST_CLOCK_REALTIME;
 static pthread_t timer;
 static atomic_bool timer_running;
 static pthread_mutex_t driver_lock = PTHREAD_MUTEX_INITIALIZER;
+static void (*idle_window_hook)(void); /* tests only (host.h) */
 
 static bool anything_pending(void) {
     return atomic_load(&pending_ticks) != 0 || atomic_load(&pending_isr) ||
@@ -123,11 +124,18 @@ void host_cpu_note_scheduling(void) { atomic_store(&scheduling, true); }
 void port_idle(void) {
     host_cpu_note_scheduling();
     for (;;) {
+        /* Only what was raised before the look for pending work may be
+         * acknowledged: an interrupt raised after the look was not
+         * serviced (its pending flag is set before its number, raise_irq's
+         * callers), and acknowledging it let host_cpu_interrupt return
+         * before its ISR ran. */
+        unsigned seq = atomic_load(&raised);
         if (anything_pending()) {
             service_all();
             return;
         }
-        atomic_store(&acked, atomic_load(&raised));
+        if (idle_window_hook != NULL) idle_window_hook();
+        atomic_store(&acked, seq);
         atomic_store(&cpu_idle, true);
         sem_post(&progress);
         if (!anything_pending()) {
@@ -231,6 +239,8 @@ static void *timer_main(void *unused) {
 
 void host_set_clock(host_clock clock) { clock_mode = clock; }
 
+void host_cpu_set_idle_window_hook(void (*hook)(void)) { idle_window_hook = hook; }
+
 void port_tick_start(void) {
     if (clock_mode != HOST_CLOCK_REALTIME || atomic_load(&timer_running)) return;
     atomic_store(&timer_running, true);
@@ -287,9 +297,7 @@ void host_cpu_interrupt(void (*isr)(void *), void *arg) {
 bool host_cpu_wait_idle(uint32_t timeout_ms) {
     struct timespec deadline = deadline_in(timeout_ms);
     for (;;) {
-        if (atomic_load(&cpu_idle) && atomic_load(&acked) == atomic_load(&raised) &&
-            !anything_pending())
-            return true;
+        if (cpu_settled()) return true;
         if (sem_timedwait(&progress, &deadline) != 0 && errno == ETIMEDOUT) return false;
     }
 }

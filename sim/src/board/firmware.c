@@ -101,7 +101,7 @@ static int read_hex(const char *path, elf_firmware_t *fw) {
 static void assume_kilobot(const char *path, elf_firmware_t *fw) {
     if (fw->mmcu[0] != '\0' && fw->frequency != 0) return;
     strcpy(fw->mmcu, "atmega328p");
-    fw->frequency = 8000000;
+    fw->frequency = KILOBOT_CLOCK_HZ;
     static int said;
     if (!said++)
         fprintf(stderr, "openswarm-sim: %s has no MCU record: running it as a Kilobot's "

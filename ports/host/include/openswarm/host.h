@@ -43,6 +43,13 @@ void host_cpu_interrupt(void (*isr)(void *), void *arg);
  * did not happen within timeout_ms of wall-clock time. */
 bool host_cpu_wait_idle(uint32_t timeout_ms);
 
+/* For the port's own tests only: hook(), when not NULL, runs on the idle
+ * CPU between its look for pending interrupts and its acknowledgement of
+ * those raised, the window where a raise must not be acknowledged before
+ * it was serviced (tests/host/test_host_port.cpp widens it with a sleep).
+ * Set it while the CPU is off (before host_cpu_start, after host_cpu_stop). */
+void host_cpu_set_idle_window_hook(void (*hook)(void));
+
 #ifdef __cplusplus
 }
 #endif
