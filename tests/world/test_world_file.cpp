@@ -265,7 +265,7 @@ TEST_F(WorldFile, KeysWithEscapesAreLocated) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "a\/b\u00e9": 1})");
     EXPECT_EQ(err.substr(0, err.find('\n')),
               "world.json:1:48: unknown key \"a/b\xc3\xa9\"; the keys here are description, robot, arena, seed, duration_s, "
-              "sample_period_s, ir, clock_spread_pct, light, obstacles, objects, robots");
+              "sample_period_s, fidelity, ir, clock_spread_pct, light, obstacles, objects, robots");
 }
 
 TEST_F(WorldFile, SyntaxErrorsArePlaced) {
