@@ -2,7 +2,7 @@
 """The native mode against the exact mode: one behaviour's metric over
 several seeds in each, and Welch's t-test on the two sets.
 
-    crosscheck.py SIM BEHAVIOUR EXACT.elf NATIVE.so WORLD OUT SEEDS [SECONDS]
+    crosscheck.py SIM BEHAVIOUR EXACT.elf NATIVE.so WORLD OUT SEEDS [SECONDS] [--differ]
 
 runs WORLD (its "seed" replaced by 1..SEEDS, for SECONDS of simulated time
 or its duration_s) with the firmware in the exact mode and the same program
@@ -10,7 +10,9 @@ built natively, computes the behaviour's metric from each run's
 trajectories.csv, and prints both means, their difference and the test's
 p-value. The modes agree when p >= 0.01: no evidence at the 1% level that
 the metric's mean differs (docs/world.md, "Native mode"). Exits 1 when they
-do not agree. bench/native_bench.py runs it on every behaviour with more
+do not agree; with --differ, the other way round: a program whose
+behaviour hangs on what the modes do differently (16-bit `int`) must be
+caught (native.int16_move_to_light). bench/native_bench.py runs it on every behaviour with more
 seeds for the docs; tests/native runs a small version.
 
 Metrics (larger or smaller is not better; they only have to agree):
@@ -140,16 +142,23 @@ def crosscheck(sim, behaviour, exact, native, world_path, out, seeds, seconds=No
 
 
 def main():
-    sim, behaviour, exact, native, world, out, seeds = sys.argv[1:8]
-    seconds = float(sys.argv[8]) if len(sys.argv) > 8 else None
+    args = [a for a in sys.argv[1:] if a != "--differ"]
+    differ = len(args) < len(sys.argv) - 1
+    sim, behaviour, exact, native, world, out, seeds = args[:7]
+    seconds = float(args[7]) if len(args) > 7 else None
     xs, ys, t, p = crosscheck(sim, behaviour, exact, native, world, out, int(seeds), seconds)
     mean = lambda v: sum(v) / len(v)  # noqa: E731
-    print(f"{behaviour}: exact {mean(xs):.2f} ({', '.join(f'{x:.1f}' for x in xs)}), "
-          f"native {mean(ys):.2f} ({', '.join(f'{y:.1f}' for y in ys)}); Welch t {t:.2f}, p {p:.3f}")
+    print(f"{behaviour}: exact {mean(xs):.2f} ({', '.join(f'{x:.2f}' for x in xs)}), "
+          f"native {mean(ys):.2f} ({', '.join(f'{y:.2f}' for y in ys)}); Welch t {t:.2f}, p {p:.4f}")
     agree = p >= 0.01
-    print(("ok   " if agree else "FAIL ") + f"the modes agree on {behaviour} (p {p:.3f} >= 0.01)")
-    print(f"{int(agree)} passed, {int(not agree)} failed")
-    sys.exit(0 if agree else 1)
+    if differ:
+        ok = not agree
+        print(("ok   " if ok else "FAIL ") + f"the cross-check tells the modes apart on {behaviour} (p {p:.4f} < 0.01)")
+    else:
+        ok = agree
+        print(("ok   " if ok else "FAIL ") + f"the modes agree on {behaviour} (p {p:.3f} >= 0.01)")
+    print(f"{int(ok)} passed, {int(not ok)} failed")
+    sys.exit(0 if ok else 1)
 
 
 if __name__ == "__main__":

@@ -96,7 +96,7 @@ int output_open(const output_options *o, const world_spec *w)
     free(objects);
     if (rc)
         goto fail;
-    history_init(&out.history, w);
+    history_init(&out.history, w, o->history_bytes);
     if (picture_init(&out.picture, w))
         goto fail;
     if (o->video) {

@@ -6,6 +6,7 @@
 #ifndef OPENSWARM_OUTPUT_H
 #define OPENSWARM_OUTPUT_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "world/world_spec.h"
@@ -34,6 +35,7 @@ typedef struct output_options {
     const char *dir;      /* created if missing */
     int video;            /* also write video.mp4 (needs ffmpeg on the PATH) */
     int quiet;            /* no list of written files at the end */
+    size_t history_bytes; /* the samples kept for final.png and viewer.html; 0: 64 MB */
 } output_options;
 
 /* Open the outputs; -1 with a message naming the path and the fix. The

@@ -12,11 +12,21 @@
 
 #include "output/output.h"
 
-/* ---- history.c: every sample so far, copied (final.png's trails and
- * viewer.html need the whole run; 100 robots x 6000 samples is ~10 MB). */
+/* ---- history.c: the run so far, copied sample by sample for final.png's
+ * trails and viewer.html. It is bounded: past its budget (by default
+ * HISTORY_BUDGET_BYTES) it
+ * keeps every other sample it holds (and each later one on the new
+ * stride), so a thousand robots for ten minutes stay in memory and the
+ * viewer stays loadable; the newest sample is always there. 100 robots x
+ * 6000 samples (10 minutes at 0.1 s) fit whole. */
+#define HISTORY_BUDGET_BYTES (64u << 20)
 typedef struct output_history {
     const world_spec *world;
-    int n, capacity;        /* samples */
+    size_t budget;          /* bytes */
+    int n, capacity;        /* samples kept */
+    int stride;             /* kept: every stride-th sample added, and the newest */
+    long added;             /* samples added so far */
+    long *number;           /* [n]: each kept sample's number among those added */
     double *time_s;         /* [n] */
     output_robot *robots;   /* [n * world->n_robots] */
     world_point *objects;   /* [n * world->n_objects] */
@@ -25,7 +35,7 @@ typedef struct output_history {
     int n_links, links_capacity;
 } output_history;
 
-void history_init(output_history *h, const world_spec *w);
+void history_init(output_history *h, const world_spec *w, size_t budget); /* 0: the default */
 int history_add(output_history *h, const output_sample *s); /* -1: out of memory */
 void history_free(output_history *h);
 static inline const output_robot *history_robots(const output_history *h, int k)

@@ -132,8 +132,13 @@ void add_legs(world &w, Robot &r, double friction, double mass_kg, double radius
     w.physics.CreateJoint(&legs);
 }
 
-/* Put the carrier on the robot, moving as the motors would move it. */
+/* Put the carrier on the robot, moving as the motors would move it. A
+ * robot whose motors are off is left to the solver: once it has been at
+ * rest for Box2D's half second it sleeps and costs nothing per step until
+ * its motors start or something pushes it - most of a settled swarm. */
 void walk(Robot &r, const kilobot_twist &twist) {
+    const bool still = twist.forward_mm_s == 0 && twist.left_mm_s == 0 && twist.turn_rad_s == 0;
+    if (still && !r.body->IsAwake()) return;
     double angle = r.body->GetAngle();
     double c = std::cos(angle), s = std::sin(angle);
     b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
@@ -141,7 +146,7 @@ void walk(Robot &r, const kilobot_twist &twist) {
     r.carrier->SetTransform(r.body->GetPosition(), float(angle));
     r.carrier->SetLinearVelocity(v);
     r.carrier->SetAngularVelocity(float(twist.turn_rad_s));
-    r.body->SetAwake(true);
+    if (!still) r.body->SetAwake(true);
 }
 
 /* A differential drive: each wheel rolls its steps' worth; the body turns

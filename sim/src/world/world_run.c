@@ -225,7 +225,7 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
     next_step = step_cycles;
     observe();
     if (o->out_dir == NULL) return 0;
-    output_options out = {o->out_dir, o->video, o->quiet};
+    output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet};
     if (output_open(&out, &spec) != 0) return -1;
     recording = 1;
     next_sample_s = spec.sample_period_s;
