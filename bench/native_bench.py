@@ -10,8 +10,10 @@ programs built natively by tests/native and for the AVR by tests/avr.
   (sample every 1 s), 100 / 1000 / 10 000 robots, 1 and 2 threads:
   real-time factor, robot-seconds per second, peak memory per robot;
   outputs at 1000 robots for 10 minutes: the time, and each file's size;
-  cross-check: tests/native/crosscheck.py on disperse, orbit, phototaxis
-  and gradient, seeds 1..N in each mode.
+  cross-check: tests/native/crosscheck.py on disperse, orbit, phototaxis,
+  gradient and synchronisation, and on move_to_light with its light summed
+  in an `int` (16-bit on the robot: the modes must differ) and in a `long`,
+  seeds 1..N in each mode.
 """
 import json
 import math
@@ -85,19 +87,27 @@ def outputs_row():
     return wall, sizes
 
 
-CROSS = (("disperse", "template_disperse.elf", "native_disperse.so", os.path.join(ROOT, "templates", "disperse",
-          "worlds", "packed.json"), 60),
-         ("orbit", "world_orbit.elf", "native_orbit.so", os.path.join(WORLDS, "orbit.json"), None),
-         ("phototaxis", "world_phototaxis.elf", "native_phototaxis.so", os.path.join(WORLDS, "phototaxis.json"), None),
-         ("gradient", "world_gradient.elf", "native_gradient.so", os.path.join(WORLDS, "gradient.json"), None))
+CROSS = (("disperse", "disperse", "template_disperse.elf", "native_disperse.so",
+          os.path.join(ROOT, "templates", "disperse", "worlds", "packed.json"), 60),
+         ("orbit", "orbit", "world_orbit.elf", "native_orbit.so", os.path.join(WORLDS, "orbit.json"), None),
+         ("phototaxis", "phototaxis", "world_phototaxis.elf", "native_phototaxis.so",
+          os.path.join(WORLDS, "phototaxis.json"), None),
+         ("gradient", "gradient", "world_gradient.elf", "native_gradient.so", os.path.join(WORLDS, "gradient.json"), None),
+         ("synchronisation", "synchronisation", "synchronise.elf", "native_synchronise.so",
+          os.path.join(WORLDS, "synchronise.json"), None),
+         ("move_to_light, `int` sum", "phototaxis", "move_to_light_int.elf", "native_move_to_light_int.so",
+          os.path.join(WORLDS, "phototaxis.json"), None),
+         ("move_to_light, `long` sum", "phototaxis", "move_to_light_long.elf", "native_move_to_light_long.so",
+          os.path.join(WORLDS, "phototaxis.json"), None))
 
 
 def cross_rows(seeds):
     rows = []
-    for behaviour, elf, so, world, seconds in CROSS:
+    for label, behaviour, elf, so, world, seconds in CROSS:
+        out = os.path.join(OUT, "cross_" + so[len("native_"):-len(".so")])
         xs, ys, t, p = crosscheck.crosscheck(SIM, behaviour, os.path.join(AVR, elf), os.path.join(NATIVE, so),
-                                             world, os.path.join(OUT, "cross_" + behaviour), seeds, seconds)
-        rows.append((behaviour, xs, ys, t, p))
+                                             world, out, seeds, seconds)
+        rows.append((label, behaviour, xs, ys, t, p))
         print(rows[-1], file=sys.stderr)
     return rows
 
@@ -127,12 +137,13 @@ def section(speed, outputs, cross, seeds, command):
               "| behaviour | metric | exact mean (sd) | native mean (sd) | difference | p | agree |",
               "|---|---|---:|---:|---:|---:|---|"]
     metric = {"disperse": "mean nearest-neighbour distance at 60 s, mm", "orbit": "mean distance off the 60 mm orbit, mm",
-              "phototaxis": "final over starting distance to the lamp", "gradient": "time until every LED shows its hop count, s"}
-    for behaviour, xs, ys, t, p in cross:
+              "phototaxis": "final over starting distance to the lamp", "gradient": "time until every LED shows its hop count, s",
+              "synchronisation": "mean spread of a flash over the robots, second half, s"}
+    for label, behaviour, xs, ys, t, p in cross:
         (mx, sx), (my, sy) = mean_sd(xs), mean_sd(ys)
         diff = f"{(my - mx) / mx * 100:+.0f}%" if mx else f"{my - mx:+.2f}"
-        lines.append(f"| {behaviour} | {metric[behaviour]} | {mx:.2f} ({sx:.2f}) | {my:.2f} ({sy:.2f}) | {diff} | "
-                     f"{p:.3f} | {'yes' if p >= 0.01 else 'no'} |")
+        lines.append(f"| {label} | {metric[behaviour]} | {mx:.2f} ({sx:.2f}) | {my:.2f} ({sy:.2f}) | {diff} | "
+                     f"{p:.3f} | {'yes' if p >= 0.01 else 'no'} |".replace("| 0.000 |", "| < 0.001 |"))
     lines += ["", END]
     return "\n".join(lines)
 

@@ -26,6 +26,14 @@ sed 's/"seed": 7,/"seed": 7, "fidelity": "native",/' app/worlds/packed.json >nat
 check "\"fidelity\": \"native\" builds and runs natively" 0 "Built .*app.so \(native\).*ran 5.000 s" \
     "$openswarm" run -C app --world native.json --time 5
 
+# The template's thousand robots (10 minutes natively; 3 s here), with
+# their picture and viewer.
+check "the thousand-robot world" 0 "Built .*app.so \(native\).*ran 3.000 s of simulated time \(1000 robots\).*Open app/out/thousand/viewer.html" \
+    "$openswarm" run -C app --world app/worlds/thousand.json --time 3
+for f in final.png viewer.html; do
+    test -s "app/out/thousand/$f" && passed=$((passed + 1)) || { echo "FAILED: no thousand/$f"; failed=$((failed + 1)); }
+done
+
 # Mistakes, each naming the fix.
 "$openswarm" build -C app >/dev/null 2>&1
 check "the exact mode's firmware in a native world" 2 "asks for \"fidelity\": \"native\".*openswarm build --native" \

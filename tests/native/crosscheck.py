@@ -20,6 +20,7 @@ Metrics (larger or smaller is not better; they only have to agree):
   orbit       mean distance of the planet from its 60 mm orbit after 20 s, mm
   phototaxis  mean final distance to the lamp over the starting distance
   gradient    time until every robot shows its hop count's colour to the end, s
+  synchronisation  mean spread of a flash over the robots in the second half, s
 """
 import json
 import math
@@ -74,6 +75,18 @@ def gradient(robots, world):
                 settled = max(settled, t)
                 break
     return settled
+
+
+def synchronisation(robots, world):
+    """How far apart the robots flash once they have had time to agree:
+    over robot 0's flashes in the second half of the run, the mean of the
+    largest distance from one to any robot's nearest flash, s."""
+    white = (3, 3, 3)
+    onsets = {i: [p[k][0] for k in range(1, len(p)) if p[k][4] == white and p[k - 1][4] != white]
+              for i, p in robots.items()}
+    half = max(p[-1][0] for p in robots.values()) / 2
+    gaps = [max(min(abs(t - u) for u in onsets[i]) for i in onsets) for t in onsets[0] if t >= half]
+    return sum(gaps) / len(gaps)
 
 
 def run(sim, firmware, world, seed, out, seconds):

@@ -166,10 +166,22 @@ static uint64_t own_end_of(const native_robot *r) {
     return r->hz == nominal ? window_end : window_end * r->hz / nominal;
 }
 
+/* A swarm's images are beyond the caches: robot i + 1's is fetched while
+ * robot i runs (and the state saying whether it runs at all, one ahead). */
+static void prefetch_next(int i) {
+    if (i + 2 * n_threads < n_robots) __builtin_prefetch(robots[i + 2 * n_threads].io);
+    if (i + n_threads >= n_robots) return;
+    const native_robot *next = &robots[i + n_threads];
+    if (dozing(next, own_end_of(next))) return;
+    size_t bytes = copies[(i + n_threads) % n_threads].image_bytes;
+    for (size_t at = 0; at < bytes; at += 64) __builtin_prefetch(next->image + at);
+}
+
 static int run_share(int t) {
     int all_stopped = 1;
     for (int i = t; i < n_robots; i += n_threads) {
         native_robot *r = &robots[i];
+        prefetch_next(i);
         if (r->io->state != NATIVE_RUNNING) continue;
         all_stopped = 0;
         uint64_t own_end = own_end_of(r);
