@@ -55,6 +55,11 @@ void load_controllers(const fs::path &f, const json &doc, Experiment &e) {
         check_keys(f, path, c, {"name", "program"});
         ExperimentController ctl;
         ctl.name = string_at(f, path + ".name", require(f, c, "name", path), "a name");
+        if (ctl.name.empty() || ctl.name.size() > max_controller_name)
+            fail(f, path + ".name",
+                 quoted_start(ctl.name) + " is " + std::to_string(ctl.name.size()) +
+                     " bytes long; each trial's folder is named after it (trial-01-<name>): give a "
+                     "name of 1.." + std::to_string(max_controller_name) + " bytes");
         for (const auto &other : e.controllers)
             if (other.name == ctl.name) fail(f, path + ".name", "\"" + ctl.name + "\" is named twice");
         ctl.program = f.parent_path() / string_at(f, path + ".program", require(f, c, "program", path),

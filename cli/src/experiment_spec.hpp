@@ -12,6 +12,10 @@
 
 namespace openswarm {
 
+// A controller's name names its trials' folders (a file name holds at most
+// 255 bytes): at most this long.
+constexpr size_t max_controller_name = 100;
+
 struct ExperimentController {
     std::string name;              // as results.csv and the plot name it
     std::filesystem::path program; // the controller built for the world

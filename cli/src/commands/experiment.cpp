@@ -72,8 +72,21 @@ std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
 
 void run_job(const Experiment &e, const Paths &paths, Job &job) {
     const ExperimentController &c = e.controllers[job.controller];
-    fs::create_directories(job.dir);
-    std::ofstream(job.dir / "world.json") << trial_world(e, job.seed, c.program);
+    std::error_code ec;
+    fs::create_directories(job.dir, ec);
+    if (ec) {
+        job.failure = "cannot create the trial's folder " + job.dir.string() + ": " + ec.message();
+        return;
+    }
+    {
+        std::ofstream world(job.dir / "world.json");
+        world << trial_world(e, job.seed, c.program);
+        world.close();
+        if (!world) {
+            job.failure = "cannot write " + (job.dir / "world.json").string() + " (the disk full?)";
+            return;
+        }
+    }
     std::string output;
     int status = capture_program_and_errors({paths.simulator.string(), "--quiet", "--no-progress",
                                              "--world", (job.dir / "world.json").string(), "--out",
@@ -238,6 +251,30 @@ bool programs_present(const Experiment &e) {
     return true;
 }
 
+// The results' folder, made before any trial runs (by every rank, as each
+// writes its trials there); false after a message naming it, why, and the
+// fix (from rank 0 only: the others find the same).
+bool prepare_out(const fs::path &out, const Ranks &ranks) {
+    auto report = [&](const std::string &message) {
+        if (ranks.rank() == 0) openswarm::report(message);
+    };
+    std::error_code ec;
+    fs::file_status st = fs::status(out, ec);
+    if (fs::exists(st) && !fs::is_directory(st)) {
+        report("--out " + out.string() + ": it is a file, not a folder; the results go into a folder: "
+               "give another --out (a folder, new or existing)");
+        return false;
+    }
+    ec.clear();
+    fs::create_directories(out, ec);
+    if (ec) {
+        report("--out " + out.string() + ": cannot create the results' folder: " + ec.message() +
+               "; give an --out folder you can write to");
+        return false;
+    }
+    return true;
+}
+
 int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &ranks) {
     Experiment e;
     try {
@@ -257,6 +294,7 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     }
     fs::path file(o.file);
     fs::path out = o.out.empty() ? file.parent_path() / (file.stem().string() + "-results") : fs::path(o.out);
+    if (!prepare_out(out, ranks)) return EXIT_USAGE;
     std::vector<Job> jobs;
     for (int t = 0; t < e.trials; t++)
         for (size_t c = 0; c < e.controllers.size(); c++) {
@@ -276,7 +314,6 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
                     out.string().c_str());
     std::fflush(stdout);
     auto began = std::chrono::steady_clock::now();
-    fs::create_directories(out);
     run_all(e, paths, jobs, ranks, workers);
     gather(ranks, jobs);
     if (ranks.rank() != 0) return EXIT_OK;
@@ -317,7 +354,14 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
         ->check(CLI::Range(1.0, 86400.0));
     cmd->callback([o, &paths] {
         Ranks ranks;
-        exit_code = ranks.agree(run_experiment(*o, paths, ranks));
+        int status;
+        try {
+            status = run_experiment(*o, paths, ranks);
+        } catch (const fs::filesystem_error &err) { // a last resort: each place above says more
+            report(std::string("experiment: ") + err.what() + "; check the --out folder and the disk");
+            status = EXIT_FAILED;
+        }
+        exit_code = ranks.agree(status);
     });
 }
 

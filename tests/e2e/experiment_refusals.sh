@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# End to end: `openswarm experiment` refuses what it cannot do before any
+# trial runs - with a message naming the input, the place and the fix, and
+# exit status 2 - instead of aborting (status 134) or running trials it
+# cannot keep apart. The controller is a stand-in that never runs.
+#   experiment_refusals.sh OPENSWARM WORKDIR
+set -uo pipefail
+openswarm=$1 work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+passed=0 failed=0
+
+# expect STATUS REGEX COMMAND...: run it, check the status and stderr.
+expect() {
+    local status=$1 regex=$2
+    shift 2
+    local err
+    err=$("$@" 2>&1 >/dev/null)
+    local got=$?
+    if [ "$got" -eq "$status" ] && printf '%s' "$err" | grep -Eq -- "$regex"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAILED: $* -> exit $got (expected $status), stderr:"
+        printf '%s\n' "$err"
+    fi
+}
+
+printf '#!/bin/sh\nexit 1\n' > controller.sh
+chmod +x controller.sh
+
+# experiment NAME [CONTROLLER NAME...]: NAME.json with these controllers
+# (default: one, "plain"), all running controller.sh.
+experiment() {
+    local file=$1.json
+    shift
+    [ $# -gt 0 ] || set -- plain
+    local list="" name
+    for name in "$@"; do
+        list="$list${list:+, }{\"name\": \"$name\", \"program\": \"controller.sh\"}"
+    done
+    cat > "$file" <<JSON
+{
+  "arena": {"width_mm": 1000, "height_mm": 1000},
+  "marks": {"columns": 3, "rows": 3, "spacing_mm": 250},
+  "robots": 1,
+  "objects": {"count": 1},
+  "duration_s": 10,
+  "trials": 2,
+  "controllers": [$list]
+}
+JSON
+}
+
+# The results' folder cannot be made: each a message, none an abort.
+experiment one
+echo "not a folder" > results-file
+expect 2 "--out /dev/full: it is a file, not a folder.*give another --out" "$openswarm" experiment one.json --out /dev/full
+expect 2 "--out results-file: it is a file, not a folder.*give another --out" "$openswarm" experiment one.json --out results-file
+grep -qx "not a folder" results-file && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: results-file changed"; }
+expect 2 "--out /proc/nope: cannot create the results' folder: .*give an --out folder you can write to" \
+    "$openswarm" experiment one.json --out /proc/nope
+# A name longer than a file name can hold names the trials' folders.
+long=$(printf 'x%.0s' $(seq 300))
+experiment long "$long"
+expect 2 "long.json: \"controllers\[0\].name\": \"x{40}...\" is 300 bytes long; each trial's folder is named after it.*1..100 bytes" \
+    "$openswarm" experiment long.json --out long-results
+[ ! -e long-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: long-results was made"; }
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
