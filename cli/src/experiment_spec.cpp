@@ -1,5 +1,6 @@
 #include "experiment_spec.hpp"
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -60,8 +61,17 @@ void load_controllers(const fs::path &f, const json &doc, Experiment &e) {
                  quoted_start(ctl.name) + " is " + std::to_string(ctl.name.size()) +
                      " bytes long; each trial's folder is named after it (trial-01-<name>): give a "
                      "name of 1.." + std::to_string(max_controller_name) + " bytes");
-        for (const auto &other : e.controllers)
-            if (other.name == ctl.name) fail(f, path + ".name", "\"" + ctl.name + "\" is named twice");
+        for (size_t k = 0; k < e.controllers.size(); k++) {
+            const std::string &other = e.controllers[k].name;
+            if (other == ctl.name) fail(f, path + ".name", "\"" + ctl.name + "\" is named twice");
+            if (controller_folder(other) == controller_folder(ctl.name))
+                fail(f, path + ".name",
+                     quoted_start(ctl.name) + " and controllers[" + std::to_string(k) + "].name " +
+                         quoted_start(other) + " would share their trials' folders (trial-01-" +
+                         controller_folder(ctl.name) +
+                         ", ...): a folder's name keeps only letters and digits, lower-cased; "
+                         "rename one so that they differ in a letter or digit");
+        }
         ctl.program = f.parent_path() / string_at(f, path + ".program", require(f, c, "program", path),
                                                   "a controller program's path");
         e.controllers.push_back(ctl);
@@ -87,6 +97,12 @@ uint64_t next(uint64_t &s) {
 }
 
 }  // namespace
+
+std::string controller_folder(const std::string &name) {
+    std::string s;
+    for (char c : name) s += std::isalnum((unsigned char)c) ? (char)std::tolower((unsigned char)c) : '-';
+    return s;
+}
 
 Experiment load_experiment(const fs::path &file) {
     std::ifstream in(file);

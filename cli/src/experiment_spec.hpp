@@ -38,6 +38,11 @@ struct Experiment {
     std::string reference_label;
 };
 
+// What a controller's trial folders are named after (trial-01-<this>):
+// its ASCII letters lower-cased, its digits, and a '-' for every other
+// byte. Two controllers whose names give the same are refused.
+std::string controller_folder(const std::string &name);
+
 // Read and check file; throws ConfigError naming the file, the key and the fix.
 Experiment load_experiment(const std::filesystem::path &file);
 

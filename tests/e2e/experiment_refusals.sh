@@ -66,5 +66,15 @@ expect 2 "long.json: \"controllers\[0\].name\": \"x{40}...\" is 300 bytes long; 
     "$openswarm" experiment long.json --out long-results
 [ ! -e long-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: long-results was made"; }
 
+# Names that differ only in case, punctuation or accents would share their
+# trials' folders (4 trials in 2 folders, each overwriting the other).
+experiment case "Plain Loop" "plain-loop"
+expect 2 "case.json: \"controllers\[1\].name\": \"plain-loop\" and controllers\[0\].name \"Plain Loop\" would share their trials' folders \(trial-01-plain-loop, ...\): .*differ in a letter or digit" \
+    "$openswarm" experiment case.json --out case-results
+experiment accents "Café" "Cafè"
+expect 2 "accents.json: \"controllers\[1\].name\": \"Cafè\" and controllers\[0\].name \"Café\" would share their trials' folders \(trial-01-caf--, ...\)" \
+    "$openswarm" experiment accents.json --out accents-results
+[ ! -e case-results ] && [ ! -e accents-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: a refused experiment made its folder"; }
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -47,12 +47,6 @@ struct Job {
     std::string failure; // empty when it ran
 };
 
-std::string slug(const std::string &name) {
-    std::string s;
-    for (char c : name) s += std::isalnum((unsigned char)c) ? (char)std::tolower((unsigned char)c) : '-';
-    return s;
-}
-
 // objects.csv (time_s,object,x_mm,y_mm) to the metrics at each time.
 std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
     std::ifstream in(objects_csv);
@@ -300,7 +294,7 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
         for (size_t c = 0; c < e.controllers.size(); c++) {
             char name[64];
             std::snprintf(name, sizeof name, "trial-%02d-", t + 1);
-            jobs.push_back({t, c, e.seed + (uint32_t)t, out / (name + slug(e.controllers[c].name)), {}, {}});
+            jobs.push_back({t, c, e.seed + (uint32_t)t, out / (name + controller_folder(e.controllers[c].name)), {}, {}});
         }
     // Ranks on one machine share its cores.
     unsigned cores = std::max(1u, std::thread::hardware_concurrency() / (unsigned)ranks.local_size());
