@@ -36,6 +36,9 @@ typedef struct output_options {
     int quiet;            /* no list of written files at the end */
 } output_options;
 
+/* What can be checked before anything is opened (--video needs ffmpeg on
+ * the PATH); -1 after a message naming the fix. */
+int output_check(const output_options *o);
 /* Open the outputs; -1 with a message naming the path and the fix. The
  * world is kept by reference until output_close. */
 int output_open(const output_options *o, const world_spec *w);

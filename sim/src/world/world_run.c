@@ -105,6 +105,13 @@ int world_options_check(options *o) {
         o->clock_spread_pct = spec.clock_spread_pct;
     if (o->temperature_mv < 0) o->temperature_mv = ROOM_TEMPERATURE_MV;
     if (assign_firmware(o) != 0) return -1;
+    if (o->video && o->out_dir == NULL) {
+        fprintf(stderr, "openswarm-sim: --video records the run into --out DIR's video.mp4: give "
+                        "--out DIR too, or drop --video\n");
+        return -1;
+    }
+    output_options out = {o->out_dir, o->video, o->quiet};
+    if (o->out_dir != NULL && output_check(&out) != 0) return -1;
     int status = options_check_robots(o);
     o->uid = -1; /* each robot's comes from the world */
     if (status != 0) return -1;

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# End to end: openswarm-sim refuses what it cannot do before it opens any
+# output - with a message naming the input, the place and the fix, and a
+# non-zero exit status (2 for bad input) - and fails when an output cannot
+# be written.
+#   sim_refusals.sh OPENSWARM-SIM KILOBOT.elf EPUCK-CONTROLLER WORKDIR
+set -uo pipefail
+sim=$1 elf=$2 epuck=$3 work=$4
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+passed=0 failed=0
+
+# expect STATUS REGEX COMMAND...: run it, check the status and stderr.
+expect() {
+    local status=$1 regex=$2
+    shift 2
+    local err
+    err=$("$@" 2>&1 >/dev/null)
+    local got=$?
+    if [ "$got" -eq "$status" ] && printf '%s' "$err" | grep -Eq -- "$regex"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAILED: $* -> exit $got (expected $status), stderr:"
+        printf '%s\n' "$err"
+    fi
+}
+# check DESCRIPTION COMMAND...: the command succeeds.
+check() {
+    local what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $what"; fi
+}
+
+cat > kilobots.json <<'JSON'
+{
+  "arena": {"width_mm": 500, "height_mm": 500},
+  "duration_s": 0.2,
+  "robots": [{"poses": [{"x_mm": 100, "y_mm": 100}]}]
+}
+JSON
+cat > epucks.json <<'JSON'
+{
+  "robot": "epuck",
+  "arena": {"width_mm": 1000, "height_mm": 1000},
+  "duration_s": 0.2,
+  "robots": [{"poses": [{"x_mm": 300, "y_mm": 300}]}]
+}
+JSON
+
+# --video without ffmpeg on the PATH: refused before the outputs are
+# opened (a previous run's trajectories.csv was truncated).
+"$sim" --quiet --no-progress --world kilobots.json --out run "$elf" || { echo "FAILED: a plain run"; exit 1; }
+cp run/trajectories.csv kept.csv
+mkdir -p empty-bin
+for world in kilobots.json epucks.json; do
+    program=$elf
+    [ "$world" = epucks.json ] && program=$epuck
+    expect 2 "--video needs ffmpeg: apt-get install ffmpeg, or drop --video \\(none in the PATH.s folders: .*empty-bin\\)" \
+        env PATH="$PWD/empty-bin" "$sim" --quiet --no-progress --world "$world" --out run --video "$program"
+    check "--video without ffmpeg changed run/trajectories.csv ($world)" cmp -s kept.csv run/trajectories.csv
+done
+expect 2 "--video records the run into --out DIR's video.mp4: give --out DIR too" \
+    "$sim" --quiet --no-progress --world kilobots.json --video "$elf"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
