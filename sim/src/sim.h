@@ -78,6 +78,7 @@ typedef struct options {
     int charging;       /* on the charger: its status output (PD0) low */
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
     placement place;    /* --distance (default), --line or --positions */
+    const char *positions; /* --positions FILE, NULL: not given */
     int ir_range_mm;    /* a robot hears senders this close or closer */
     int ir_log;         /* print every frame on the air, decoded */
     double clock_spread_pct; /* robots' clocks differ by up to this, either way */

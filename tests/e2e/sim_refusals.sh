@@ -62,5 +62,33 @@ done
 expect 2 "--video records the run into --out DIR's video.mp4: give --out DIR too" \
     "$sim" --quiet --no-progress --world kilobots.json --video "$elf"
 
+# An output that is the same file as an input: the input would be
+# overwritten (a world file named trajectories.csv, --out .).
+cp kilobots.json trajectories.csv
+expect 2 "--out \\.: its trajectories.csv is the world file trajectories.csv: the run would overwrite it; give another --out folder, or rename the world file" \
+    "$sim" --quiet --no-progress --world trajectories.csv --out . "$elf"
+check "--out . overwrote the world file trajectories.csv" cmp -s kilobots.json trajectories.csv
+mkdir -p sub
+expect 2 "--out sub/\\.\\./: its trajectories.csv is the world file \\./trajectories.csv" \
+    "$sim" --quiet --no-progress --world ./trajectories.csv --out sub/../ "$elf"
+check "--out sub/../ overwrote the world file" cmp -s kilobots.json trajectories.csv
+cp "$elf" robot.elf
+ln -s robot.elf link.elf
+for option in --trace-csv --vcd; do
+    expect 2 "$option link.elf is robot 0's firmware robot.elf: the run would overwrite it; give $option another file" \
+        "$sim" --quiet --no-progress --time 0.1 "$option" link.elf robot.elf
+done
+expect 2 "--fault-log robot.elf is robot 0's firmware robot.elf: the run would overwrite it; give --fault-log another file" \
+    "$sim" --quiet --no-progress --time 0.1 --faults reset=1 --fault-log robot.elf robot.elf
+printf '0 0\n' > at.txt
+expect 2 "--trace-csv at.txt is the --positions file at.txt: the run would overwrite it; give --trace-csv another file" \
+    "$sim" --quiet --no-progress --time 0.1 --positions at.txt --trace-csv at.txt robot.elf
+cp epucks.json objects.csv
+expect 2 "--out \\.: its objects.csv is the world file objects.csv: the run would overwrite it" \
+    "$sim" --quiet --no-progress --world objects.csv --out . "$epuck"
+check "--out . overwrote the e-puck world file objects.csv" cmp -s epucks.json objects.csv
+check "an output overwrote robot.elf" cmp -s "$elf" robot.elf
+check "an output overwrote at.txt" grep -qx "0 0" at.txt
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
