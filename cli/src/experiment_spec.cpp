@@ -1,6 +1,7 @@
 #include "experiment_spec.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -102,6 +103,26 @@ std::string controller_folder(const std::string &name) {
     std::string s;
     for (char c : name) s += std::isalnum((unsigned char)c) ? (char)std::tolower((unsigned char)c) : '-';
     return s;
+}
+
+std::string trial_rows_problem(const Experiment &e, bool duration_given) {
+    double things = e.robots + e.objects;
+    double samples = std::floor(e.duration_s / e.sample_period_s + 1e-9) + 1, rows = things * samples;
+    if (rows <= max_trial_rows) return "";
+    // the shortest period that fits, rounded up to 3 significant digits
+    double least = e.duration_s / (std::floor(max_trial_rows / things) - 1);
+    double unit = std::pow(10, std::floor(std::log10(least)) - 2);
+    least = std::ceil(least / unit - 1e-9) * unit;
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%s: \"sample_period_s\": %d robot%s and %d object%s sampled every %g s for %g s%s make "
+                  "%.3g rows of each trial's trajectories.csv and objects.csv; openswarm-sim writes at "
+                  "most %.0f: a sample_period_s of at least %g s, a shorter %s, or fewer robots and objects",
+                  e.file.string().c_str(), e.robots, e.robots == 1 ? "" : "s", e.objects,
+                  e.objects == 1 ? "" : "s", e.sample_period_s, e.duration_s,
+                  duration_given ? " (--duration)" : "", rows, max_trial_rows, least,
+                  duration_given ? "--duration" : "duration_s");
+    return text;
 }
 
 Experiment load_experiment(const fs::path &file) {

@@ -43,6 +43,16 @@ struct Experiment {
 // byte. Two controllers whose names give the same are refused.
 std::string controller_folder(const std::string &name);
 
+// openswarm-sim writes at most this many rows of trajectories.csv and
+// objects.csv in a run (robots and objects x samples; OUTPUT_MAX_ROWS in
+// sim/src/output/output.h, docs/world.md).
+constexpr double max_trial_rows = 50000000.0;
+
+// Every trial's samples within max_trial_rows; a message naming the file,
+// the numbers and the fix if not, else "". duration_given: --duration set
+// the duration, not the file.
+std::string trial_rows_problem(const Experiment &e, bool duration_given);
+
 // Read and check file; throws ConfigError naming the file, the key and the fix.
 Experiment load_experiment(const std::filesystem::path &file);
 

@@ -76,5 +76,26 @@ expect 2 "accents.json: \"controllers\[1\].name\": \"Cafè\" and controllers\[0\
     "$openswarm" experiment accents.json --out accents-results
 [ ! -e case-results ] && [ ! -e accents-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: a refused experiment made its folder"; }
 
+# Trials that would each write more samples than openswarm-sim takes (50
+# million rows): refused at once, not trial by trial.
+cat > big.json <<'JSON'
+{
+  "arena": {"width_mm": 4000, "height_mm": 3000},
+  "marks": {"columns": 40, "rows": 30, "spacing_mm": 80},
+  "robots": 100,
+  "objects": {"count": 1000, "radius_mm": 20},
+  "duration_s": 86400,
+  "sample_period_s": 0.1,
+  "trials": 1,
+  "controllers": [{"name": "plain", "program": "controller.sh"}]
+}
+JSON
+expect 2 "big.json: \"sample_period_s\": 100 robots and 1000 objects sampled every 0.1 s for 86400 s make 9.5e\\+08 rows of each trial's trajectories.csv and objects.csv; openswarm-sim writes at most 50000000: a sample_period_s of at least 1.91 s, a shorter duration_s, or fewer robots and objects" \
+    "$openswarm" experiment big.json --out big-results
+sed -i 's/"duration_s": 86400/"duration_s": 3600/' big.json
+expect 2 "big.json: \"sample_period_s\": 100 robots and 1000 objects sampled every 0.1 s for 86400 s \\(--duration\\) make 9.5e\\+08 rows" \
+    "$openswarm" experiment big.json --duration 86400 --out big-results
+[ ! -e big-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: big-results was made"; }
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -90,5 +90,27 @@ check "--out . overwrote the e-puck world file objects.csv" cmp -s epucks.json o
 check "an output overwrote robot.elf" cmp -s "$elf" robot.elf
 check "an output overwrote at.txt" grep -qx "0 0" at.txt
 
+# A run that would write more samples than the documented limit (50
+# million rows of trajectories.csv and objects.csv): refused at once, with
+# the numbers and the fix (it was accepted: about 360 GB of CSV). timeout:
+# before the fix this ran for a million simulated seconds.
+cat > long.json <<'JSON'
+{
+  "arena": {"width_mm": 500, "height_mm": 500},
+  "duration_s": 1e6,
+  "sample_period_s": 0.001,
+  "robots": [{"poses": [{"x_mm": 100, "y_mm": 100}]}],
+  "objects": [{"x_mm": 300, "y_mm": 300, "radius_mm": 20}]
+}
+JSON
+sed 's/"arena"/"robot": "epuck", "arena"/' long.json > long-epucks.json
+expect 2 "--out long: 1 robot and 1 object sampled every 0.001 s for 1e\\+06 s make 2e\\+09 rows of trajectories.csv and objects.csv \\(about 65 GB\\); at most 50000000 are written: a sample_period_s of at least 0.0401 s in long.json, a shorter run \\(--time or duration_s\\), or no --out" \
+    timeout 60 "$sim" --quiet --no-progress --world long.json --out long "$elf"
+check "a refused run made its --out folder" test ! -e long
+expect 2 "--out long: 1 robot and 1 object sampled every 0.001 s for 30000 s make 6e\\+07 rows" \
+    timeout 60 "$sim" --quiet --no-progress --world long.json --time 30000 --out long "$elf"
+expect 2 "--out long: 1 e-puck and 1 object sampled every 0.001 s" \
+    timeout 60 "$sim" --quiet --no-progress --world long-epucks.json --out long "$epuck"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

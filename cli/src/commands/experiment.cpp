@@ -280,6 +280,11 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     if (o.trials) e.trials = o.trials;
     if (o.duration_s > 0) e.duration_s = o.duration_s;
     if (e.reference_time_s > e.duration_s) e.reference_fraction = -1; // off the plot
+    std::string too_many = trial_rows_problem(e, o.duration_s > 0);
+    if (!too_many.empty()) {
+        report(too_many);
+        return EXIT_USAGE;
+    }
     if (!programs_present(e)) return EXIT_USAGE;
     if (paths.simulator.empty()) {
         report("openswarm-sim was not found next to this tool; build it with "

@@ -36,6 +36,11 @@ typedef struct output_options {
     int quiet;            /* no list of written files at the end */
 } output_options;
 
+/* At most this many rows of trajectories.csv and objects.csv together
+ * (robots and objects x samples): about 2 GB of CSV, and as much memory
+ * for viewer.html (docs/world.md). */
+#define OUTPUT_MAX_ROWS 50000000.0
+
 /* What can be checked before anything is opened (--video needs ffmpeg on
  * the PATH); -1 after a message naming the fix. */
 int output_check(const output_options *o);
