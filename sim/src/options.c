@@ -100,7 +100,7 @@ static void usage(FILE *out) {
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
-            "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
+            "or ELF or an output that could not be written, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
             "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
             "left open: printed when it happens) or its stack pointer went below the\n"
             "stack it is on (a thread's past its guard, the main stack into the RAM\n"

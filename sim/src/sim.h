@@ -501,6 +501,14 @@ void ohc_robot_reset(robot *r);
 
 /* debug.c: avr-gdb and GTKWave */
 int debug_attach(robot *r, const options *o);
-void debug_detach(robot *r);
+/* -1 after a message if the --vcd file could not be written. */
+int debug_detach(robot *r);
+
+/* written.c: flush f (and close it when close_it), what the run wrote as
+ * what ("--trace-csv FILE", "the standard output"); -1 after a message
+ * naming it and why if any write to it failed. */
+int written_close(FILE *f, const char *what, int close_it);
+/* fflush(stdout), keeping why it failed for written_close. */
+void stdout_flush(void);
 
 #endif

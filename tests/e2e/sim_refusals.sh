@@ -3,9 +3,9 @@
 # output - with a message naming the input, the place and the fix, and a
 # non-zero exit status (2 for bad input) - and fails when an output cannot
 # be written.
-#   sim_refusals.sh OPENSWARM-SIM KILOBOT.elf EPUCK-CONTROLLER WORKDIR
+#   sim_refusals.sh OPENSWARM-SIM AVR-TESTS-DIR EPUCK-CONTROLLER WORKDIR
 set -uo pipefail
-sim=$1 elf=$2 epuck=$3 work=$4
+sim=$1 elf=$2/kilolib_blink.elf epuck=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 passed=0 failed=0
 
@@ -111,6 +111,24 @@ expect 2 "--out long: 1 robot and 1 object sampled every 0.001 s for 30000 s mak
     timeout 60 "$sim" --quiet --no-progress --world long.json --time 30000 --out long "$elf"
 expect 2 "--out long: 1 e-puck and 1 object sampled every 0.001 s" \
     timeout 60 "$sim" --quiet --no-progress --world long-epucks.json --out long "$epuck"
+
+# A write that fails fails the run, naming the file (each exited 0, the
+# trace or log lost). /dev/full takes the open and refuses every write.
+expect 2 "--trace-csv /dev/full: cannot write it: No space left on device" \
+    "$sim" --quiet --no-progress --time 2 --trace-csv /dev/full "$elf"
+expect 2 "--vcd /dev/full: cannot write it: No space left on device" \
+    "$sim" --quiet --no-progress --time 2 --vcd /dev/full "$elf"
+expect 2 "--fault-log /dev/full: cannot write it: No space left on device" \
+    "$sim" --quiet --no-progress --time 2 --faults reset:0@0.5,brownout:0@1 --fault-log /dev/full "$elf"
+err=$("$sim" --no-progress --time 2 --trace "$elf" 2>&1 >/dev/full)
+status=$?
+if [ "$status" -eq 2 ] && printf '%s' "$err" | grep -q "the standard output: cannot write it: No space left on device"; then
+    passed=$((passed + 1))
+else
+    failed=$((failed + 1))
+    echo "FAILED: --trace > /dev/full -> exit $status (expected 2), stderr:"
+    printf '%s\n' "$err"
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

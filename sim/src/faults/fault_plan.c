@@ -332,12 +332,12 @@ void faults_after_window(avr_cycle_count_t end) {
     find_next_due();
 }
 
-void faults_finish(void) {
-    if (plans == NULL) return;
+int faults_finish(void) {
+    if (plans == NULL) return 0;
     fprintf(stderr, "openswarm-sim: faults injected:");
     for (int k = 0; k < FAULT_KINDS; k++)
         fprintf(stderr, "%s %lu %s", k ? "," : "", fault_log_count(k), fault_kind_name(k));
     if (spec.log_path != NULL) fprintf(stderr, " (one a line in %s)", spec.log_path);
     fprintf(stderr, "\n");
-    fault_log_close();
+    return fault_log_close();
 }

@@ -65,8 +65,9 @@ uint32_t faults_clock_rate(int index, uint32_t hz);
 /* Between two windows: the resets, brown-outs and power returns due by
  * cycle end of the nominal clock. */
 void faults_after_window(avr_cycle_count_t end);
-/* The run's counts on stderr; the log closed. */
-void faults_finish(void);
+/* The run's counts on stderr; the log closed: -1 after a message if it
+ * could not be written. */
+int faults_finish(void);
 
 /* fault_log.c: one line per fault, "fault t=SECONDS robot=INDEX kind=KIND ...". */
 int fault_log_open(const char *path);
@@ -74,7 +75,8 @@ void fault_log(int kind, double seconds, int index, const char *detail_format, .
     __attribute__((format(printf, 4, 5)));
 unsigned long fault_log_count(int kind);
 const char *fault_kind_name(int kind);
-void fault_log_close(void);
+/* -1 after a message if the log could not be written. */
+int fault_log_close(void);
 
 /* board/power_cycle.c: what a reset and a power cut do to one robot. */
 void power_cycle_reset(robot *r);
