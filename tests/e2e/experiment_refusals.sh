@@ -97,5 +97,13 @@ expect 2 "big.json: \"sample_period_s\": 100 robots and 1000 objects sampled eve
     "$openswarm" experiment big.json --duration 86400 --out big-results
 [ ! -e big-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: big-results was made"; }
 
+# Numbers that are not finite (nan ran the file's duration, exit 0) or negative.
+for bad in nan NaN inf -inf -5 1e999; do
+    expect 2 "--duration: '$bad' is not seconds: give a finite number 1..86400, e.g. --duration 600" \
+        "$openswarm" experiment one.json --duration "$bad" --out nan-results
+done
+[ ! -e nan-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: --duration nan ran"; }
+expect 2 "--time: 'nan' is not seconds: give a finite number 0.001..3600, e.g. --time 5" "$openswarm" size --time nan
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -350,7 +350,7 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("--trials", o->trials, "trials per controller instead of the file's (a quick look)")
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
-        ->check(CLI::Range(1.0, 86400.0));
+        ->check(finite_seconds("--duration", 1, 86400, "600"));
     cmd->callback([o, &paths] {
         Ranks ranks;
         int status;
