@@ -413,7 +413,7 @@ int options_check_robots(options *o) {
     }
     if (o->faults != NULL) {
         o->faults->log_path = o->fault_log;
-        if (faults_check(o->faults, o->robots) != 0) return -1;
+        if (faults_check(o->faults, o->robots, o->seconds) != 0) return -1;
     }
     if (o->n_elves > o->robots) {
         fprintf(stderr, "openswarm-sim: %d firmware files for %d robots: give at most one per robot "

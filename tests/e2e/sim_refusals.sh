@@ -130,5 +130,24 @@ else
     printf '%s\n' "$err"
 fi
 
+# --faults: a fault given twice (the last won), an empty list (exit 2, no
+# message), a fault after the run's end (nothing injected, exit 0).
+expect 2 "--faults 'drift:0=2,drift:0=-3': drift:0 is given twice \\(drift:0=2 and drift:0=-3\\): keep one" \
+    "$sim" --quiet --no-progress --time 0.1 --faults drift:0=2,drift:0=-3 "$elf"
+expect 2 "--faults 'reset=3': reset= is given twice \\(reset=2 and reset=3\\): keep one" \
+    "$sim" --quiet --no-progress --time 0.1 --faults reset=2 --faults reset=3 "$elf"
+expect 2 "--faults 'reset:0@1,reset:0@1': reset:0@1 is given twice" \
+    "$sim" --quiet --no-progress --time 2 --faults reset:0@1,reset:0@1 "$elf"
+expect 2 "--faults 'blank:0,blank:0': blank:0 is given twice" \
+    "$sim" --quiet --no-progress --time 0.1 --faults blank:0,blank:0 "$elf"
+expect 2 "--faults '': an empty list; expected a comma-separated list of reset=PER_HOUR" \
+    "$sim" --quiet --no-progress --time 0.1 --faults "" "$elf"
+expect 2 "--faults reset:0@5: at 5 s, after the end of the run \\(1 s\\): give a time within it, or a longer --time" \
+    "$sim" --quiet --no-progress --time 1 --faults reset:0@5 "$elf"
+expect 2 "--faults brownout:0@0.5: at 0.5 s, after the end of the run \\(0.2 s\\)" \
+    "$sim" --quiet --no-progress --world kilobots.json --faults brownout:0@0.5 "$elf"
+check "two resets at different times are two faults" \
+    "$sim" --quiet --no-progress --time 2 --faults reset:0@0.5,reset:0@1 "$elf"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -46,14 +46,19 @@ typedef struct fault_spec {
     uint64_t seed;
     fault_at at[MAX_FAULTS_AT];
     int n_at;
+    /* Each item as given, to name it: once only (a second is refused). */
+    char at_text[MAX_FAULTS_AT][40];
+    unsigned keys_given;       /* bit k: the k-th key=value item was given */
+    char key_text[8][40];
     const char *log_path;      /* --fault-log FILE; NULL: stderr */
 } fault_spec;
 
 /* fault_plan.c */
 /* One --faults argument, added to spec; -1 after a message. */
 int faults_parse(const char *text, fault_spec *spec);
-/* The checks that need the robots' count; -1 after a message. */
-int faults_check(const fault_spec *spec, int robots);
+/* The checks that need the robots' count and the run's length (a fault
+ * at a time after it would never be injected); -1 after a message. */
+int faults_check(const fault_spec *spec, int robots, double seconds);
 /* Draw the faults of n robots; open the log. -1 after a message. */
 int faults_start(const fault_spec *spec, int n);
 /* The robots are loaded: their resets and brown-outs can fire. */
