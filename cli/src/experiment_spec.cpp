@@ -1,5 +1,7 @@
 #include "experiment_spec.hpp"
 
+#include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -55,8 +57,22 @@ void load_controllers(const fs::path &f, const json &doc, Experiment &e) {
         check_keys(f, path, c, {"name", "program"});
         ExperimentController ctl;
         ctl.name = string_at(f, path + ".name", require(f, c, "name", path), "a name");
-        for (const auto &other : e.controllers)
-            if (other.name == ctl.name) fail(f, path + ".name", "\"" + ctl.name + "\" is named twice");
+        if (ctl.name.empty() || ctl.name.size() > max_controller_name)
+            fail(f, path + ".name",
+                 quoted_start(ctl.name) + " is " + std::to_string(ctl.name.size()) +
+                     " bytes long; each trial's folder is named after it (trial-01-<name>): give a "
+                     "name of 1.." + std::to_string(max_controller_name) + " bytes");
+        for (size_t k = 0; k < e.controllers.size(); k++) {
+            const std::string &other = e.controllers[k].name;
+            if (other == ctl.name) fail(f, path + ".name", "\"" + ctl.name + "\" is named twice");
+            if (controller_folder(other) == controller_folder(ctl.name))
+                fail(f, path + ".name",
+                     quoted_start(ctl.name) + " and controllers[" + std::to_string(k) + "].name " +
+                         quoted_start(other) + " would share their trials' folders (trial-01-" +
+                         controller_folder(ctl.name) +
+                         ", ...): a folder's name keeps only letters and digits, lower-cased; "
+                         "rename one so that they differ in a letter or digit");
+        }
         ctl.program = f.parent_path() / string_at(f, path + ".program", require(f, c, "program", path),
                                                   "a controller program's path");
         e.controllers.push_back(ctl);
@@ -82,6 +98,32 @@ uint64_t next(uint64_t &s) {
 }
 
 }  // namespace
+
+std::string controller_folder(const std::string &name) {
+    std::string s;
+    for (char c : name) s += std::isalnum((unsigned char)c) ? (char)std::tolower((unsigned char)c) : '-';
+    return s;
+}
+
+std::string trial_rows_problem(const Experiment &e, bool duration_given) {
+    double things = e.robots + e.objects;
+    double samples = std::floor(e.duration_s / e.sample_period_s + 1e-9) + 1, rows = things * samples;
+    if (rows <= max_trial_rows) return "";
+    // the shortest period that fits, rounded up to 3 significant digits
+    double least = e.duration_s / (std::floor(max_trial_rows / things) - 1);
+    double unit = std::pow(10, std::floor(std::log10(least)) - 2);
+    least = std::ceil(least / unit - 1e-9) * unit;
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%s: \"sample_period_s\": %d robot%s and %d object%s sampled every %g s for %g s%s make "
+                  "%.3g rows of each trial's trajectories.csv and objects.csv; openswarm-sim writes at "
+                  "most %.0f: a sample_period_s of at least %g s, a shorter %s, or fewer robots and objects",
+                  e.file.string().c_str(), e.robots, e.robots == 1 ? "" : "s", e.objects,
+                  e.objects == 1 ? "" : "s", e.sample_period_s, e.duration_s,
+                  duration_given ? " (--duration)" : "", rows, max_trial_rows, least,
+                  duration_given ? "--duration" : "duration_s");
+    return text;
+}
 
 Experiment load_experiment(const fs::path &file) {
     std::ifstream in(file);

@@ -12,6 +12,10 @@
 
 namespace openswarm {
 
+// A controller's name names its trials' folders (a file name holds at most
+// 255 bytes): at most this long.
+constexpr size_t max_controller_name = 100;
+
 struct ExperimentController {
     std::string name;              // as results.csv and the plot name it
     std::filesystem::path program; // the controller built for the world
@@ -33,6 +37,21 @@ struct Experiment {
     double reference_fraction = -1, reference_time_s = -1;
     std::string reference_label;
 };
+
+// What a controller's trial folders are named after (trial-01-<this>):
+// its ASCII letters lower-cased, its digits, and a '-' for every other
+// byte. Two controllers whose names give the same are refused.
+std::string controller_folder(const std::string &name);
+
+// openswarm-sim writes at most this many rows of trajectories.csv and
+// objects.csv in a run (robots and objects x samples; OUTPUT_MAX_ROWS in
+// sim/src/output/output.h, docs/world.md).
+constexpr double max_trial_rows = 50000000.0;
+
+// Every trial's samples within max_trial_rows; a message naming the file,
+// the numbers and the fix if not, else "". duration_given: --duration set
+// the duration, not the file.
+std::string trial_rows_problem(const Experiment &e, bool duration_given);
 
 // Read and check file; throws ConfigError naming the file, the key and the fix.
 Experiment load_experiment(const std::filesystem::path &file);

@@ -178,7 +178,7 @@ static int load_robots(const options *o, FILE *csv) {
 static void print_counters(const options *o, avr_cycle_count_t now) {
     for (int i = 0; i < o->robots; i++)
         firmware_counters_print(&robots[i], (double)now / nominal_hz);
-    fflush(stdout);
+    stdout_flush();
 }
 
 /* The robots in lockstep windows until the time is up or all stopped. */
@@ -209,7 +209,7 @@ static void run(const options *o) {
     lockstep_end();
 }
 
-int main(int argc, char **argv) {
+static int run_main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
     if (o.world != NULL && world_run_is_epuck()) {
@@ -253,14 +253,27 @@ int main(int argc, char **argv) {
     faults_attach(robots, nominal_hz);
 
     run(&o);
+    int written = 0; /* -1: an output could not be written (reported) */
     for (int i = 0; i < o.robots; i++) {
         if (csv != NULL || o.trace) trace_flush(&robots[i]);
-        debug_detach(&robots[i]);
+        if (debug_detach(&robots[i]) != 0) written = -1;
     }
-    if (csv != NULL) fclose(csv);
+    if (csv != NULL) {
+        char what[4200];
+        snprintf(what, sizeof what, "--trace-csv %s", o.trace_csv);
+        if (written_close(csv, what, 1) != 0) written = -1;
+    }
     if (o.profile) profile_print(o.robots);
-    faults_finish();
-    int written = o.world != NULL ? world_run_finish() : 0;
+    if (faults_finish() != 0) written = -1;
+    if (o.world != NULL && world_run_finish() != 0) written = -1;
     int status = report(o.robots, &o);
     return status == 0 && written != 0 ? EXIT_USAGE : status;
+}
+
+/* Whatever the run printed reached the standard output, or the run fails
+ * (a full disk under `> log` left the consoles cut short, exit 0). */
+int main(int argc, char **argv) {
+    int status = run_main(argc, argv);
+    if (written_close(stdout, "the standard output", 0) != 0 && status == 0) status = EXIT_USAGE;
+    return status;
 }

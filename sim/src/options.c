@@ -4,6 +4,7 @@
 #include <getopt.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "sim.h"
 #include "faults/faults.h"
@@ -99,7 +100,7 @@ static void usage(FILE *out) {
             "  -h, --help           this text\n\n"
             "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
             "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
-            "or ELF, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
+            "or ELF or an output that could not be written, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
             "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
             "left open: printed when it happens) or its stack pointer went below the\n"
             "stack it is on (a thread's past its guard, the main stack into the RAM\n"
@@ -277,7 +278,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'c' + 256: if (parse_period(optarg, o) != 0) return -1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
-        case 'P': place.positions = optarg; o->given |= GIVEN_PLACEMENT; break;
+        case 'P': place.positions = o->positions = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'I': if ((v = number("--ir-range", optarg, 10, 1000, "100")) < 0) return -1; o->ir_range_mm = (int)v; o->given |= GIVEN_IR_RANGE; break;
         case 'R': o->ir_log = 1; break;
         case 'S': if (percentage("--clock-spread", optarg, 5, "1", &o->clock_spread_pct) != 0) return -1; o->given |= GIVEN_CLOCK_SPREAD; break;
@@ -331,9 +332,80 @@ int parse_options(int argc, char **argv, options *o) {
     return options_check_robots(o);
 }
 
+/* An input the run reads, which no output may be. */
+typedef struct input_file {
+    const char *path;
+    char what[64]; /* "the world file", "robot 3's firmware" */
+    struct stat st;
+} input_file;
+
+/* The first input that is the same file as path (an existing one), or NULL. */
+static const input_file *input_at(const input_file *inputs, int n, const char *path) {
+    struct stat st;
+    if (stat(path, &st) != 0) return NULL; /* not there yet: no input */
+    for (int k = 0; k < n; k++)
+        if (inputs[k].st.st_dev == st.st_dev && inputs[k].st.st_ino == st.st_ino) return &inputs[k];
+    return NULL;
+}
+
+/* No output may overwrite an input (a world file named trajectories.csv
+ * with --out ., --trace-csv naming the firmware): compared by device and
+ * inode, so any spelling of the path and links are caught. */
+static int outputs_apart_from_inputs(const options *o) {
+    int room = 2 + (o->robots > 0 ? o->robots : 0), n = 0, status = 0;
+    input_file *inputs = calloc((size_t)room, sizeof *inputs);
+    if (inputs == NULL) return 0;
+#define INPUT(p, ...)                                                                         \
+    do {                                                                                      \
+        if ((p) != NULL && stat((p), &inputs[n].st) == 0) {                                   \
+            inputs[n].path = (p);                                                             \
+            snprintf(inputs[n].what, sizeof inputs[n].what, __VA_ARGS__);                     \
+            n++;                                                                              \
+        }                                                                                     \
+    } while (0)
+    INPUT(o->world, "the world file");
+    INPUT(o->positions, "the --positions file");
+    const char *previous = NULL;
+    for (int i = 0; i < o->robots; i++) {
+        const char *elf = firmware_of(o, i);
+        if (elf == NULL || (previous != NULL && strcmp(elf, previous) == 0)) continue;
+        INPUT(elf, "robot %d's firmware", i);
+        previous = elf;
+    }
+#undef INPUT
+    const struct {
+        const char *option, *path;
+    } files[] = {{"--trace-csv", o->trace_csv}, {"--vcd", o->vcd}, {"--fault-log", o->fault_log}};
+    for (size_t k = 0; status == 0 && k < sizeof files / sizeof files[0]; k++) {
+        const input_file *in = files[k].path ? input_at(inputs, n, files[k].path) : NULL;
+        if (in == NULL) continue;
+        fprintf(stderr, "openswarm-sim: %s %s is %s %s: the run would overwrite it; give %s another file\n",
+                files[k].option, files[k].path, in->what, in->path, files[k].option);
+        status = -1;
+    }
+    static const char *written[] = {"trajectories.csv", "objects.csv", "final.png", "viewer.html",
+                                    "video.mp4"};
+    for (size_t k = 0; status == 0 && o->out_dir != NULL && k < sizeof written / sizeof written[0]; k++) {
+        if (k == 4 && !o->video) continue;
+        char path[4096];
+        size_t len = strlen(o->out_dir);
+        snprintf(path, sizeof path, "%s%s%s", o->out_dir, len && o->out_dir[len - 1] == '/' ? "" : "/",
+                 written[k]);
+        const input_file *in = input_at(inputs, n, path);
+        if (in == NULL) continue;
+        fprintf(stderr, "openswarm-sim: --out %s: its %s is %s %s: the run would overwrite it; give "
+                        "another --out folder, or rename %s\n",
+                o->out_dir, written[k], in->what, in->path, in->what);
+        status = -1;
+    }
+    free(inputs);
+    return status;
+}
+
 /* The checks that need the robots' count: after a placement option or a
  * world file set it. */
 int options_check_robots(options *o) {
+    if (outputs_apart_from_inputs(o) != 0) return -1;
     if (o->fault_log != NULL && o->faults == NULL) {
         fprintf(stderr, "openswarm-sim: --fault-log %s logs injected faults: give --faults SPEC too\n",
                 o->fault_log);
@@ -341,7 +413,7 @@ int options_check_robots(options *o) {
     }
     if (o->faults != NULL) {
         o->faults->log_path = o->fault_log;
-        if (faults_check(o->faults, o->robots) != 0) return -1;
+        if (faults_check(o->faults, o->robots, o->seconds) != 0) return -1;
     }
     if (o->n_elves > o->robots) {
         fprintf(stderr, "openswarm-sim: %d firmware files for %d robots: give at most one per robot "

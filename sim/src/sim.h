@@ -78,6 +78,7 @@ typedef struct options {
     int charging;       /* on the charger: its status output (PD0) low */
     int uid;            /* first robot's id; -1: EEPROM left erased (one robot) */
     placement place;    /* --distance (default), --line or --positions */
+    const char *positions; /* --positions FILE, NULL: not given */
     int ir_range_mm;    /* a robot hears senders this close or closer */
     int ir_log;         /* print every frame on the air, decoded */
     double clock_spread_pct; /* robots' clocks differ by up to this, either way */
@@ -500,6 +501,14 @@ void ohc_robot_reset(robot *r);
 
 /* debug.c: avr-gdb and GTKWave */
 int debug_attach(robot *r, const options *o);
-void debug_detach(robot *r);
+/* -1 after a message if the --vcd file could not be written. */
+int debug_detach(robot *r);
+
+/* written.c: flush f (and close it when close_it), what the run wrote as
+ * what ("--trace-csv FILE", "the standard output"); -1 after a message
+ * naming it and why if any write to it failed. */
+int written_close(FILE *f, const char *what, int close_it);
+/* fflush(stdout), keeping why it failed for written_close. */
+void stdout_flush(void);
 
 #endif

@@ -1,6 +1,10 @@
 // One function per subcommand; each registers itself on the CLI11 app.
 #pragma once
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
 #include <CLI/CLI.hpp>
 
 #include "../paths.hpp"
@@ -23,6 +27,24 @@ void add_config_command(CLI::App &app, const Paths &paths);
 void add_size_command(CLI::App &app, const Paths &paths);
 void add_test_command(CLI::App &app, const Paths &paths);
 void add_experiment_command(CLI::App &app, const Paths &paths);
+
+// A number option's check: a finite number in [lo, hi] (CLI::Range lets
+// nan through: every comparison with it is false). The message names the
+// option, what it was given, the range and an example.
+inline CLI::Validator finite_seconds(const std::string &option, double lo, double hi,
+                                     const std::string &example) {
+    return CLI::Validator(
+        [=](std::string &text) -> std::string {
+            char *end = nullptr;
+            double v = std::strtod(text.c_str(), &end);
+            if (end != text.c_str() && *end == '\0' && std::isfinite(v) && v >= lo && v <= hi) return "";
+            char range[64];
+            std::snprintf(range, sizeof range, "%g..%g", lo, hi);
+            // CLI11 puts "OPTION: " before it
+            return "'" + text + "' is not seconds: give a finite number " + range + ", e.g. " + option + " " + example;
+        },
+        "SECONDS", "finite seconds");
+}
 
 // "openswarm: <message>" on standard error.
 void report(const std::string &message);

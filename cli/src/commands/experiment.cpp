@@ -47,12 +47,6 @@ struct Job {
     std::string failure; // empty when it ran
 };
 
-std::string slug(const std::string &name) {
-    std::string s;
-    for (char c : name) s += std::isalnum((unsigned char)c) ? (char)std::tolower((unsigned char)c) : '-';
-    return s;
-}
-
 // objects.csv (time_s,object,x_mm,y_mm) to the metrics at each time.
 std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
     std::ifstream in(objects_csv);
@@ -72,8 +66,21 @@ std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
 
 void run_job(const Experiment &e, const Paths &paths, Job &job) {
     const ExperimentController &c = e.controllers[job.controller];
-    fs::create_directories(job.dir);
-    std::ofstream(job.dir / "world.json") << trial_world(e, job.seed, c.program);
+    std::error_code ec;
+    fs::create_directories(job.dir, ec);
+    if (ec) {
+        job.failure = "cannot create the trial's folder " + job.dir.string() + ": " + ec.message();
+        return;
+    }
+    {
+        std::ofstream world(job.dir / "world.json");
+        world << trial_world(e, job.seed, c.program);
+        world.close();
+        if (!world) {
+            job.failure = "cannot write " + (job.dir / "world.json").string() + " (the disk full?)";
+            return;
+        }
+    }
     std::string output;
     int status = capture_program_and_errors({paths.simulator.string(), "--quiet", "--no-progress",
                                              "--world", (job.dir / "world.json").string(), "--out",
@@ -238,6 +245,30 @@ bool programs_present(const Experiment &e) {
     return true;
 }
 
+// The results' folder, made before any trial runs (by every rank, as each
+// writes its trials there); false after a message naming it, why, and the
+// fix (from rank 0 only: the others find the same).
+bool prepare_out(const fs::path &out, const Ranks &ranks) {
+    auto report = [&](const std::string &message) {
+        if (ranks.rank() == 0) openswarm::report(message);
+    };
+    std::error_code ec;
+    fs::file_status st = fs::status(out, ec);
+    if (fs::exists(st) && !fs::is_directory(st)) {
+        report("--out " + out.string() + ": it is a file, not a folder; the results go into a folder: "
+               "give another --out (a folder, new or existing)");
+        return false;
+    }
+    ec.clear();
+    fs::create_directories(out, ec);
+    if (ec) {
+        report("--out " + out.string() + ": cannot create the results' folder: " + ec.message() +
+               "; give an --out folder you can write to");
+        return false;
+    }
+    return true;
+}
+
 int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &ranks) {
     Experiment e;
     try {
@@ -249,6 +280,11 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     if (o.trials) e.trials = o.trials;
     if (o.duration_s > 0) e.duration_s = o.duration_s;
     if (e.reference_time_s > e.duration_s) e.reference_fraction = -1; // off the plot
+    std::string too_many = trial_rows_problem(e, o.duration_s > 0);
+    if (!too_many.empty()) {
+        report(too_many);
+        return EXIT_USAGE;
+    }
     if (!programs_present(e)) return EXIT_USAGE;
     if (paths.simulator.empty()) {
         report("openswarm-sim was not found next to this tool; build it with "
@@ -257,12 +293,13 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     }
     fs::path file(o.file);
     fs::path out = o.out.empty() ? file.parent_path() / (file.stem().string() + "-results") : fs::path(o.out);
+    if (!prepare_out(out, ranks)) return EXIT_USAGE;
     std::vector<Job> jobs;
     for (int t = 0; t < e.trials; t++)
         for (size_t c = 0; c < e.controllers.size(); c++) {
             char name[64];
             std::snprintf(name, sizeof name, "trial-%02d-", t + 1);
-            jobs.push_back({t, c, e.seed + (uint32_t)t, out / (name + slug(e.controllers[c].name)), {}, {}});
+            jobs.push_back({t, c, e.seed + (uint32_t)t, out / (name + controller_folder(e.controllers[c].name)), {}, {}});
         }
     // Ranks on one machine share its cores.
     unsigned cores = std::max(1u, std::thread::hardware_concurrency() / (unsigned)ranks.local_size());
@@ -276,7 +313,6 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
                     out.string().c_str());
     std::fflush(stdout);
     auto began = std::chrono::steady_clock::now();
-    fs::create_directories(out);
     run_all(e, paths, jobs, ranks, workers);
     gather(ranks, jobs);
     if (ranks.rank() != 0) return EXIT_OK;
@@ -314,10 +350,17 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("--trials", o->trials, "trials per controller instead of the file's (a quick look)")
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
-        ->check(CLI::Range(1.0, 86400.0));
+        ->check(finite_seconds("--duration", 1, 86400, "600"));
     cmd->callback([o, &paths] {
         Ranks ranks;
-        exit_code = ranks.agree(run_experiment(*o, paths, ranks));
+        int status;
+        try {
+            status = run_experiment(*o, paths, ranks);
+        } catch (const fs::filesystem_error &err) { // a last resort: each place above says more
+            report(std::string("experiment: ") + err.what() + "; check the --out folder and the disk");
+            status = EXIT_FAILED;
+        }
+        exit_code = ranks.agree(status);
     });
 }
 

@@ -193,7 +193,7 @@ void add_size_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("-t,--time", *seconds,
                     "simulated seconds to run the app for to measure its stacks' worst use (Kilobot)")
         ->capture_default_str()
-        ->check(CLI::Range(0.001, 3600.0));
+        ->check(finite_seconds("--time", 0.001, 3600, "5"));
     cmd->callback([dir, seconds, &paths] { exit_code = run_size(*dir, paths, *seconds); });
 }
 

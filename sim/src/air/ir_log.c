@@ -69,7 +69,7 @@ static void report(const robot *from, const air_frame *f, const char *in_range) 
         printf("type %02x crc %s, pulses within %d cycles of their slots", f->bytes[9],
                crc == ir_frame_crc(f->bytes) ? "ok" : "BAD", f->worst);
     printf(", in range of %s\n", in_range[0] ? in_range : "nobody");
-    fflush(stdout);
+    stdout_flush();
 }
 
 /* The slot nearest to a pulse `since` cycles after the pulse slots count

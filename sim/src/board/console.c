@@ -30,7 +30,7 @@ static void put(console *c, uint8_t v) {
                    c->line);
         else
             printf("%s%s\n", c->prefix, c->line);
-        fflush(stdout);
+        stdout_flush();
         c->len = 0;
     } else if (v != '\r') {
         c->line[c->len++] = (char)v;

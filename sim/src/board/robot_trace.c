@@ -39,7 +39,7 @@ static void emit(robot_trace *t, const char *device, int a, int b, int c) {
             printf("%s[%10.6f s] %-6s red %d green %d blue %d\n", t->prefix, s, device, a, b, c);
         else
             printf("%s[%10.6f s] %-6s left %d right %d\n", t->prefix, s, device, a, b);
-        fflush(stdout);
+        stdout_flush();
     }
     if (t->csv)
         fprintf(t->csv, "%.6f,%llu,%d,%s,%d,%d,%d\n", s, (unsigned long long)t->burst, t->index,

@@ -17,6 +17,7 @@ static const char *const kind_names[FAULT_KINDS] = {
 };
 
 static FILE *out;
+static const char *out_path;
 static unsigned long counts[FAULT_KINDS];
 
 int fault_log_open(const char *path) {
@@ -24,6 +25,7 @@ int fault_log_open(const char *path) {
         out = stderr;
         return 0;
     }
+    out_path = path;
     out = fopen(path, "w");
     if (out == NULL) {
         fprintf(stderr, "openswarm-sim: --fault-log %s: %s; give a file in a folder that exists\n",
@@ -51,7 +53,13 @@ unsigned long fault_log_count(int kind) { return counts[kind]; }
 
 const char *fault_kind_name(int kind) { return kind_names[kind]; }
 
-void fault_log_close(void) {
-    if (out != NULL && out != stderr) fclose(out);
+int fault_log_close(void) {
+    int status = 0;
+    if (out != NULL && out != stderr) {
+        char what[4200];
+        snprintf(what, sizeof what, "--fault-log %s", out_path);
+        status = written_close(out, what, 1);
+    }
     out = NULL;
+    return status;
 }

@@ -100,21 +100,65 @@ static int robot_and_drift(const char *text, fault_spec *s) {
     return 0;
 }
 
+static const char *item_name(int kind);
+static int parse_value(const char *item, size_t n, const char *value, fault_spec *s);
+
+/* The fault at[n_at - 1], just added as item: -2 with why if the same
+ * fault was given before (the same robot's drift or blank; the same
+ * robot's reset or brown-out at the same time), else 0 with its text kept. */
+static int new_at(const char *item, fault_spec *s, char *why, size_t room) {
+    const fault_at *f = &s->at[s->n_at - 1];
+    for (int k = 0; k < s->n_at - 1; k++) {
+        const fault_at *e = &s->at[k];
+        if (e->kind != f->kind || e->robot != f->robot) continue;
+        if ((f->kind == FAULT_RESET || f->kind == FAULT_BROWNOUT) && e->seconds != f->seconds) continue;
+        char name[48];
+        if (f->kind == FAULT_RESET || f->kind == FAULT_BROWNOUT)
+            snprintf(name, sizeof name, "%s:%d@%g", item_name(f->kind), f->robot, f->seconds);
+        else
+            snprintf(name, sizeof name, "%s:%d", item_name(f->kind), f->robot);
+        snprintf(why, room, "%s is given twice (%s and %.39s): keep one", name, s->at_text[k], item);
+        s->n_at--;
+        return -2;
+    }
+    snprintf(s->at_text[s->n_at - 1], sizeof s->at_text[0], "%s", item);
+    return 0;
+}
+
 /* One item of the list: "key=value" or "kind:robot[@seconds]" or
- * "drift:robot=value". */
-static int parse_item(const char *item, fault_spec *s) {
+ * "drift:robot=value". -1: unknown or out of range; -2: why says. */
+static int parse_item(const char *item, fault_spec *s, char *why, size_t room) {
     const char *eq = strchr(item, '='), *colon = strchr(item, ':');
     if (colon != NULL && (eq == NULL || colon < eq)) {
         size_t n = (size_t)(colon - item);
-        if (n == 5 && strncmp(item, "reset", n) == 0) return robot_and_time(colon + 1, FAULT_RESET, s);
-        if (n == 8 && strncmp(item, "brownout", n) == 0) return robot_and_time(colon + 1, FAULT_BROWNOUT, s);
-        if (n == 5 && strncmp(item, "blank", n) == 0) return robot_and_time(colon + 1, FAULT_BLANK_CALIBRATION, s);
-        if (n == 5 && strncmp(item, "drift", n) == 0) return robot_and_drift(colon + 1, s);
-        return -1;
+        int rc = -1;
+        if (n == 5 && strncmp(item, "reset", n) == 0) rc = robot_and_time(colon + 1, FAULT_RESET, s);
+        else if (n == 8 && strncmp(item, "brownout", n) == 0) rc = robot_and_time(colon + 1, FAULT_BROWNOUT, s);
+        else if (n == 5 && strncmp(item, "blank", n) == 0) rc = robot_and_time(colon + 1, FAULT_BLANK_CALIBRATION, s);
+        else if (n == 5 && strncmp(item, "drift", n) == 0) rc = robot_and_drift(colon + 1, s);
+        return rc == 0 ? new_at(item, s, why, room) : rc;
     }
     if (eq == NULL) return -1;
     size_t n = (size_t)(eq - item);
-    const char *value = eq + 1;
+    static const char *const keys[] = {"reset", "brownout", "brownout-ms", "flip", "cut", "drift", "blank", "seed"};
+    for (int k = 0; k < (int)(sizeof keys / sizeof keys[0]); k++) {
+        if (strlen(keys[k]) != n || strncmp(item, keys[k], n) != 0) continue;
+        if (s->keys_given & (1u << k)) {
+            snprintf(why, room, "%s= is given twice (%s and %.39s): keep one", keys[k], s->key_text[k], item);
+            return -2;
+        }
+        int rc = parse_value(item, n, eq + 1, s);
+        if (rc == 0) {
+            s->keys_given |= 1u << k;
+            snprintf(s->key_text[k], sizeof s->key_text[0], "%s", item);
+        }
+        return rc;
+    }
+    return -1;
+}
+
+/* key=value's value, for the key item's first n bytes name. */
+static int parse_value(const char *item, size_t n, const char *value, fault_spec *s) {
     double v;
 #define KEY(name) (n == sizeof name - 1 && strncmp(item, name, n) == 0)
     if (KEY("reset")) return number_in(value, 0, MAX_PER_HOUR, &s->resets_per_hour);
@@ -141,6 +185,10 @@ static int parse_item(const char *item, fault_spec *s) {
 }
 
 int faults_parse(const char *text, fault_spec *s) {
+    if (text[0] == '\0') {
+        spec_usage(text, "an empty list");
+        return -1;
+    }
     if (!s->enabled) {
         s->enabled = 1;
         s->brownout_ms = DEFAULT_BROWNOUT_MS;
@@ -150,11 +198,16 @@ int faults_parse(const char *text, fault_spec *s) {
     char *copy = malloc(length + 1);
     if (copy == NULL) return -1;
     memcpy(copy, text, length + 1);
-    int status = length == 0 ? -1 : 0;
+    int status = 0;
     for (char *item = copy, *next; status == 0 && item != NULL; item = next) {
         next = strchr(item, ',');
         if (next != NULL) *next++ = '\0';
-        if (parse_item(item, s) != 0) {
+        char why[200];
+        int rc = parse_item(item, s, why, sizeof why);
+        if (rc == -2) {
+            fprintf(stderr, "openswarm-sim: --faults '%s': %s\n", text, why);
+            status = -1;
+        } else if (rc != 0) {
             char what[96];
             if (s->n_at == MAX_FAULTS_AT)
                 snprintf(what, sizeof what, "too many faults at given times (64 at most)");
@@ -179,7 +232,7 @@ static const char *item_name(int kind) {
     }
 }
 
-int faults_check(const fault_spec *s, int robots_in_run) {
+int faults_check(const fault_spec *s, int robots_in_run, double seconds) {
     if (!s->enabled) return 0;
     if (s->blank > robots_in_run) {
         fprintf(stderr, "openswarm-sim: --faults blank=%d: the run has %d robots; give at most %d\n",
@@ -191,6 +244,14 @@ int faults_check(const fault_spec *s, int robots_in_run) {
         fprintf(stderr, "openswarm-sim: --faults %s:%d: the run's robots are 0..%d (the index, as in "
                         "\"[robot N]\", not the uid)\n",
                 item_name(s->at[i].kind), s->at[i].robot, robots_in_run - 1);
+        return -1;
+    }
+    for (int i = 0; i < s->n_at; i++) {
+        const fault_at *f = &s->at[i];
+        if ((f->kind != FAULT_RESET && f->kind != FAULT_BROWNOUT) || f->seconds <= seconds) continue;
+        fprintf(stderr, "openswarm-sim: --faults %s: at %g s, after the end of the run (%g s): give a "
+                        "time within it, or a longer --time\n",
+                s->at_text[i], f->seconds, seconds);
         return -1;
     }
     return 0;
@@ -332,12 +393,12 @@ void faults_after_window(avr_cycle_count_t end) {
     find_next_due();
 }
 
-void faults_finish(void) {
-    if (plans == NULL) return;
+int faults_finish(void) {
+    if (plans == NULL) return 0;
     fprintf(stderr, "openswarm-sim: faults injected:");
     for (int k = 0; k < FAULT_KINDS; k++)
         fprintf(stderr, "%s %lu %s", k ? "," : "", fault_log_count(k), fault_kind_name(k));
     if (spec.log_path != NULL) fprintf(stderr, " (one a line in %s)", spec.log_path);
     fprintf(stderr, "\n");
-    fault_log_close();
+    return fault_log_close();
 }

@@ -46,14 +46,19 @@ typedef struct fault_spec {
     uint64_t seed;
     fault_at at[MAX_FAULTS_AT];
     int n_at;
+    /* Each item as given, to name it: once only (a second is refused). */
+    char at_text[MAX_FAULTS_AT][40];
+    unsigned keys_given;       /* bit k: the k-th key=value item was given */
+    char key_text[8][40];
     const char *log_path;      /* --fault-log FILE; NULL: stderr */
 } fault_spec;
 
 /* fault_plan.c */
 /* One --faults argument, added to spec; -1 after a message. */
 int faults_parse(const char *text, fault_spec *spec);
-/* The checks that need the robots' count; -1 after a message. */
-int faults_check(const fault_spec *spec, int robots);
+/* The checks that need the robots' count and the run's length (a fault
+ * at a time after it would never be injected); -1 after a message. */
+int faults_check(const fault_spec *spec, int robots, double seconds);
 /* Draw the faults of n robots; open the log. -1 after a message. */
 int faults_start(const fault_spec *spec, int n);
 /* The robots are loaded: their resets and brown-outs can fire. */
@@ -65,8 +70,9 @@ uint32_t faults_clock_rate(int index, uint32_t hz);
 /* Between two windows: the resets, brown-outs and power returns due by
  * cycle end of the nominal clock. */
 void faults_after_window(avr_cycle_count_t end);
-/* The run's counts on stderr; the log closed. */
-void faults_finish(void);
+/* The run's counts on stderr; the log closed: -1 after a message if it
+ * could not be written. */
+int faults_finish(void);
 
 /* fault_log.c: one line per fault, "fault t=SECONDS robot=INDEX kind=KIND ...". */
 int fault_log_open(const char *path);
@@ -74,7 +80,8 @@ void fault_log(int kind, double seconds, int index, const char *detail_format, .
     __attribute__((format(printf, 4, 5)));
 unsigned long fault_log_count(int kind);
 const char *fault_kind_name(int kind);
-void fault_log_close(void);
+/* -1 after a message if the log could not be written. */
+int fault_log_close(void);
 
 /* board/power_cycle.c: what a reset and a power cut do to one robot. */
 void power_cycle_reset(robot *r);

@@ -263,7 +263,7 @@ int native_run(const options *o) {
         lines[i].text[lines[i].len] = '\0'; /* a last line without its end */
         if (!o->quiet) print_line(i, lines[i].text, seconds_of(native_swarm_robot(i), native_swarm_robot(i)->io->now));
     }
-    fflush(stdout);
+    stdout_flush();
     int written = o->world != NULL ? world_run_finish() : 0;
     int status = report(o);
     return status == 0 && written != 0 ? EXIT_USAGE : status;

@@ -79,6 +79,11 @@ static void close_all(void)
     memset(&out, 0, sizeof out);
 }
 
+int output_check(const output_options *o)
+{
+    return o->video ? video_check() : 0;
+}
+
 int output_open(const output_options *o, const world_spec *w)
 {
     if (out.open)

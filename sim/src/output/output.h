@@ -38,6 +38,14 @@ typedef struct output_options {
     size_t history_bytes; /* the samples kept for final.png and viewer.html; 0: 64 MB */
 } output_options;
 
+/* At most this many rows of trajectories.csv and objects.csv together
+ * (robots and objects x samples): about 2 GB of CSV, and as much memory
+ * for viewer.html (docs/world.md). */
+#define OUTPUT_MAX_ROWS 50000000.0
+
+/* What can be checked before anything is opened (--video needs ffmpeg on
+ * the PATH); -1 after a message naming the fix. */
+int output_check(const output_options *o);
 /* Open the outputs; -1 with a message naming the path and the fix. The
  * world is kept by reference until output_close. */
 int output_open(const output_options *o, const world_spec *w);

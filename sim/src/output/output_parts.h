@@ -94,6 +94,8 @@ typedef struct video {
 
 /* Fails (with the fix) when ffmpeg is not on the PATH. */
 int video_open(video *v, const char *path, int width, int height);
+/* ffmpeg is on the PATH; -1 after a message naming the fix if not. */
+int video_check(void);
 int video_frame(video *v, cairo_surface_t *frame);
 int video_close(video *v); /* ffmpeg's exit status checked */
 

@@ -80,14 +80,22 @@ static const char *cairo_pixel_format(void)
  * SIGPIPE that ends the simulator. */
 static struct sigaction previous_sigpipe;
 
+int video_check(void)
+{
+    if (on_path("ffmpeg"))
+        return 0;
+    const char *path = getenv("PATH");
+    fprintf(stderr, "openswarm-sim: --video needs ffmpeg: apt-get install ffmpeg, or drop --video "
+                    "(none in the PATH's folders: %.200s)\n",
+            path ? path : "not set");
+    return -1;
+}
+
 int video_open(video *v, const char *path, int width, int height)
 {
     memset(v, 0, sizeof *v);
-    if (!on_path("ffmpeg")) {
-        fprintf(stderr, "openswarm-sim: --video needs ffmpeg: apt-get install ffmpeg, or drop "
-                        "--video\n");
+    if (video_check() != 0)
         return -1;
-    }
     char *quoted = shell_quoted(path);
     v->path = strdup(path);
     if (!quoted || !v->path) {

@@ -95,6 +95,31 @@ static int assign_firmware(options *o) {
     return 0;
 }
 
+/* Every sample writes a row a robot and a row an object: at most
+ * OUTPUT_MAX_ROWS of them, checked before the run. */
+static int sample_count_check(const options *o) {
+    double things = (double)spec.n_robots + spec.n_objects;
+    double samples = floor(o->seconds / spec.sample_period_s + 1e-9) + 1, rows = things * samples;
+    if (o->out_dir == NULL || rows <= OUTPUT_MAX_ROWS) return 0;
+    double bytes = samples * (spec.n_robots * 40.0 + spec.n_objects * 25.0); /* a row's text */
+    /* the shortest period that fits, rounded up to 3 significant digits */
+    double least = o->seconds / (floor(OUTPUT_MAX_ROWS / things) - 1), unit = pow(10, floor(log10(least)) - 2);
+    least = ceil(least / unit - 1e-9) * unit;
+    const char *kind = spec.robot_kind == WORLD_ROBOT_EPUCK ? "e-puck" : "robot";
+    char who[64] = "", objects[64] = "";
+    if (spec.n_robots > 0) snprintf(who, sizeof who, "%d %s%s", spec.n_robots, kind, spec.n_robots == 1 ? "" : "s");
+    if (spec.n_objects > 0)
+        snprintf(objects, sizeof objects, "%s%d object%s", who[0] ? " and " : "", spec.n_objects,
+                 spec.n_objects == 1 ? "" : "s");
+    fprintf(stderr, "openswarm-sim: --out %s: %s%s sampled every %g s for %g s make %.3g rows of "
+                    "trajectories.csv and objects.csv (about %.0f %s); at most %.0f are written: a "
+                    "sample_period_s of at least %g s in %s, a shorter run (--time or duration_s), or no --out\n",
+            o->out_dir, who, objects, spec.sample_period_s, o->seconds, rows,
+            bytes >= 1e9 ? bytes / 1e9 : bytes / 1e6, bytes >= 1e9 ? "GB" : "MB", OUTPUT_MAX_ROWS, least,
+            spec.path);
+    return -1;
+}
+
 int world_options_check(options *o) {
     if (refuse_beside_world(o) != 0 || world_spec_load(o->world, &spec) != 0) return -1;
     o->robots = spec.n_robots;
@@ -105,6 +130,14 @@ int world_options_check(options *o) {
         o->clock_spread_pct = spec.clock_spread_pct;
     if (o->temperature_mv < 0) o->temperature_mv = ROOM_TEMPERATURE_MV;
     if (assign_firmware(o) != 0) return -1;
+    if (o->video && o->out_dir == NULL) {
+        fprintf(stderr, "openswarm-sim: --video records the run into --out DIR's video.mp4: give "
+                        "--out DIR too, or drop --video\n");
+        return -1;
+    }
+    output_options out = {o->out_dir, o->video, o->quiet};
+    if (o->out_dir != NULL && output_check(&out) != 0) return -1;
+    if (sample_count_check(o) != 0) return -1;
     int status = options_check_robots(o);
     o->uid = -1; /* each robot's comes from the world */
     if (status != 0) return -1;
