@@ -135,7 +135,7 @@ int world_options_check(options *o) {
                         "--out DIR too, or drop --video\n");
         return -1;
     }
-    output_options out = {o->out_dir, o->video, o->quiet};
+    output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet};
     if (o->out_dir != NULL && output_check(&out) != 0) return -1;
     if (sample_count_check(o) != 0) return -1;
     int status = options_check_robots(o);
