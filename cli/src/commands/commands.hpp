@@ -23,6 +23,7 @@ void add_config_command(CLI::App &app, const Paths &paths);
 void add_size_command(CLI::App &app, const Paths &paths);
 void add_test_command(CLI::App &app, const Paths &paths);
 void add_experiment_command(CLI::App &app, const Paths &paths);
+void add_metrics_command(CLI::App &app, const Paths &paths);
 
 // "openswarm: <message>" on standard error.
 void report(const std::string &message);
