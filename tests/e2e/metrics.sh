@@ -6,9 +6,9 @@
 # (metrics/samples.py) counts the samples. Every number checked is known
 # by hand; the native mode's run reports the same. Then the mistakes, each
 # with its exit status.
-#   metrics.sh OPENSWARM WORKDIR
+#   metrics.sh OPENSWARM OPENSWARM_SIM WORKDIR
 set -euo pipefail
-openswarm=$1 work=$2 here=$(cd "$(dirname "$0")" && pwd)
+openswarm=$1 sim=$2 work=$3 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; exit 1; }
 
@@ -54,6 +54,15 @@ grep -q "note: largest_cluster left out: the world run/world.json has no objects
 test -s run/metrics.csv || fail "run/metrics.csv was not written" all.txt
 "$openswarm" metrics --list | grep -q "^  led_agreement  *share of robots showing the most common LED colour" \
     || fail "--list does not document led_agreement"
+
+# The simulator's --console-csv, quiet: the same file on one thread and on
+# three (each window's lines are written in robot order).
+for threads in 1 3; do
+    "$sim" --quiet --no-progress --threads $threads --world world.json --out "sim$threads" \
+        --console-csv "console$threads.csv" app/build/kilobot/app.elf || fail "openswarm-sim --threads $threads"
+done
+cmp console1.csv console3.csv || fail "console.csv differs between 1 and 3 threads" console1.csv console3.csv
+cmp console1.csv run/console.csv || fail "the quiet simulator's console.csv differs from the run's"
 
 # The native mode keeps the robots' lines too: the same reports.
 "$openswarm" run -C app --native --world world.json --out native >native.log 2>&1 || fail "the native run" native.log
