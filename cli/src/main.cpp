@@ -38,6 +38,7 @@ int main(int argc, char **argv) {
     add_templates_command(app, paths);
     add_test_command(app, paths);
     add_experiment_command(app, paths);
+    add_metrics_command(app, paths);
     add_size_command(app, paths);
     add_config_command(app, paths);
     add_doctor_command(app, paths);

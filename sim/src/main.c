@@ -73,7 +73,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     adc_trigger_attach(r->avr);
     char prefix[sizeof r->console.prefix] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
-    console_attach(r, o->quiet, o->timestamps, prefix);
+    console_attach(r, o->quiet, o->timestamps, prefix, o->console_csv != NULL);
     if (o->trace || csv != NULL || o->world != NULL) trace_attach(r, o->trace, csv);
     if (measure_attach(r, o) != 0) return -1;
     return debug_attach(r, o);
@@ -181,6 +181,10 @@ static void print_counters(const options *o, avr_cycle_count_t now) {
     stdout_flush();
 }
 
+/* --console-csv: the lines robots finished in each window, written after
+ * it. */
+static FILE *console_csv;
+
 /* The robots in lockstep windows until the time is up or all stopped. */
 static void run(const options *o) {
     avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
@@ -192,6 +196,7 @@ static void run(const options *o) {
         end += LOCKSTEP_CYCLES;
         if (end > limit) end = limit;
         int all_stopped = lockstep_window(end);
+        if (console_csv != NULL) console_csv_write(console_csv, robots, o->robots);
         ir_channel_hand_over(LOCKSTEP_CYCLES);
         faults_after_window(end);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
@@ -218,6 +223,12 @@ static int run_main(int argc, char **argv) {
                             "IR; %s holds e-pucks: drop --faults\n", o.world);
             return EXIT_USAGE;
         }
+        if (o.console_csv != NULL) {
+            fprintf(stderr, "openswarm-sim: --console-csv keeps Kilobots' consoles; %s holds e-pucks, "
+                            "whose controllers print on the simulator's standard output: drop "
+                            "--console-csv\n", o.world);
+            return EXIT_USAGE;
+        }
         return world_run_epucks(&o);
     }
     if (firmware_of(&o, 0) != NULL && native_is_robot(firmware_of(&o, 0))) return native_run(&o);
@@ -242,6 +253,8 @@ static int run_main(int argc, char **argv) {
         }
         fprintf(csv, "time_s,cycle,robot,device,a,b,c\n");
     }
+    if (o.console_csv != NULL && (console_csv = console_csv_open(o.console_csv)) == NULL)
+        return EXIT_USAGE;
     if (o.faults != NULL && faults_start(o.faults, o.robots) != 0) return EXIT_USAGE;
     if (load_robots(&o, csv) != 0) return EXIT_USAGE;
     if (o.robots > 1 && !o.quiet && o.uid >= 0) /* "[robot 0]" is an index; programs see the uid */
@@ -263,11 +276,12 @@ static int run_main(int argc, char **argv) {
         snprintf(what, sizeof what, "--trace-csv %s", o.trace_csv);
         if (written_close(csv, what, 1) != 0) written = -1;
     }
+    int console_lost = console_csv != NULL && console_csv_close(console_csv, o.console_csv, robots, o.robots);
     if (o.profile) profile_print(o.robots);
     if (faults_finish() != 0) written = -1;
     if (o.world != NULL && world_run_finish() != 0) written = -1;
     int status = report(o.robots, &o);
-    return status == 0 && written != 0 ? EXIT_USAGE : status;
+    return status == 0 && (written != 0 || console_lost) ? EXIT_USAGE : status;
 }
 
 /* Whatever the run printed reached the standard output, or the run fails

@@ -39,6 +39,9 @@ static void usage(FILE *out) {
             "  -q, --quiet          do not print the consoles\n"
             "      --trace          print the robots' LED colour and motor duty changes\n"
             "      --trace-csv FILE write them as CSV: time_s,cycle,robot,device,a,b,c\n"
+            "      --console-csv FILE  write every robot's console and serial lines as CSV:\n"
+            "                       time_s,robot,line (also with --quiet; `metric NAME VALUE`\n"
+            "                       lines are what `openswarm metrics` reads, docs/experiments.md)\n"
             "      --uid N          the first robot's id (EEPROM 0xB0), 0..65535; robot k gets\n"
             "                       N + k (default with several robots: 1, 2, ...)\n"
             "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
@@ -233,6 +236,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"marks", no_argument, 0, 'm'},            {"watch-irq", required_argument, 0, 'i'},
         {"profile", no_argument, 0, 'F'},
         {"trace", no_argument, 0, 'T'},            {"trace-csv", required_argument, 0, 'C'},
+        {"console-csv", required_argument, 0, 'c' + 512},
         {"uid", required_argument, 0, 'U'},        {"calibration", required_argument, 0, 'K'},
         {"light", required_argument, 0, 'L'},      {"voltage", required_argument, 0, 'V'},
         {"temperature", required_argument, 0, 'E'}, {"gdb", required_argument, 0, 'G'},
@@ -305,6 +309,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'W': o->vcd = optarg; break;
         case 'H': o->charging = 1; break;
         case 'w': o->world = optarg; break;
+        case 'c' + 512: o->console_csv = optarg; break;
         case 'o': o->out_dir = optarg; break;
         case 'v': o->video = 1; break;
         case 'p': o->progress = 1; break;

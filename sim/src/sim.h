@@ -72,6 +72,7 @@ typedef struct options {
     int n_watched;
     int trace;
     const char *trace_csv;
+    const char *console_csv; /* --console-csv FILE: every robot's console lines */
     int gdb_port;       /* 0: no debugger */
     const char *vcd;
     int light_mv, voltage_mv, temperature_mv; /* ADC inputs, -1: 0 V */
@@ -121,9 +122,20 @@ double placement_distance(const placement *p, int a, int b);
 /* The same, as the IR channel asks it (ctx: the placement). */
 double placement_distance_of(int a, int b, void *ctx);
 
+/* A robot's finished console and serial lines not yet in --console-csv,
+ * as CSV rows: the robot's thread adds them, the main thread writes them
+ * after each window (console.c). */
+typedef struct console_rows {
+    char *text;
+    size_t len, room;
+    int failed; /* out of memory: reported once, at the end */
+} console_rows;
+
 /* A line-buffered text output of one robot (its console or serial port). */
 typedef struct console {
     char prefix[24];
+    int index;            /* the robot's */
+    console_rows *rows;   /* --console-csv: its lines go there too; NULL: no */
     const avr_t *avr;     /* its robot's, for the time of a line */
     int timestamps;       /* each line begins with its time, as trace lines do */
     char line[256];
@@ -217,6 +229,7 @@ typedef struct robot {
     int index;
     avr_t *avr;
     console console, serial;
+    console_rows console_rows; /* both's lines for --console-csv */
     robot_trace trace;
     watched_irq watches[MAX_WATCHED_IRQS];
     avr_vcd_t vcd;
@@ -378,7 +391,15 @@ void profile_charge(uint32_t pc, int was_asleep, uint64_t cycles);
 void profile_print(int robots);
 
 /* console.c */
-void console_attach(robot *r, int quiet, int timestamps, const char *prefix);
+void console_attach(robot *r, int quiet, int timestamps, const char *prefix, int csv);
+/* --console-csv FILE: opened with its header (time_s,robot,line), or NULL
+ * after saying why; a row; the rows robots kept since the last call, in
+ * robot order (the same file on any number of threads); closed, -1 if
+ * anything was lost. */
+FILE *console_csv_open(const char *path);
+void console_csv_row(FILE *f, double time_s, int index, const char *line);
+void console_csv_write(FILE *f, robot *robots, int n);
+int console_csv_close(FILE *f, const char *path, robot *robots, int n);
 /* A kernel fault's name (a sys_fault), as the consoles print it. */
 const char *kernel_fault_name(uint8_t fault);
 /* After a reset: a kernel fault record or thread name under way is dropped. */

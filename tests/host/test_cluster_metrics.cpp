@@ -1,8 +1,8 @@
-// The object-clustering metrics (cli/src/cluster_metrics.cpp) on layouts
+// The object-clustering metrics (cli/src/metrics/object_clusters.cpp) on layouts
 // whose clusters and compactness are known by hand.
 #include <gtest/gtest.h>
 
-#include "../../cli/src/cluster_metrics.hpp"
+#include "../../cli/src/metrics/object_clusters.hpp"
 
 using openswarm::ObjectPosition;
 

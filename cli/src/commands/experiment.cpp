@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "../app_config.hpp"
-#include "../cluster_metrics.hpp"
+#include "../metrics/object_clusters.hpp"
 #include "../experiment_plot.hpp"
 #include "../experiment_ranks.hpp"
 #include "../experiment_spec.hpp"

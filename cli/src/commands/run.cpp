@@ -224,6 +224,20 @@ bool world_file_usable(const RunOptions &o) {
     return false;
 }
 
+// The run's folder, with a copy of the world it ran in (world.json) for the
+// metrics that need the arena or the lights; false after saying why not.
+bool keep_world_beside_run(const std::string &world_path, const std::string &out) {
+    std::error_code ec, same;
+    fs::path copy = fs::path(out) / "world.json";
+    if (fs::exists(copy, same) && fs::equivalent(world_path, copy, same)) return true;
+    fs::create_directories(out, ec);
+    if (!ec) fs::copy_file(world_path, copy, fs::copy_options::overwrite_existing, ec);
+    if (!ec) return true;
+    report("cannot keep the world in " + copy.string() + ": " + ec.message() +
+           "; choose another --out folder or fix its permissions");
+    return false;
+}
+
 int run_app(RunOptions o, const Paths &paths) {
     if (!run_options_usable(o)) return EXIT_USAGE;
     std::string port = port_to_build(o);
@@ -262,6 +276,12 @@ int run_app(RunOptions o, const Paths &paths) {
     if (world) {
         argv.insert(argv.end(), {"--world", world_path, "--out", o.out});
         if (o.video) argv.push_back("--video");
+        // A Kilobot's console lines (its `metric NAME VALUE` reports) and the
+        // world beside the trajectories: `openswarm metrics OUT` needs no more.
+        if (!(is_port(port) && port_info(port).runner == Runner::world)) {
+            if (!keep_world_beside_run(world_path, o.out)) return EXIT_FAILED;
+            argv.insert(argv.end(), {"--console-csv", (fs::path(o.out) / "console.csv").string()});
+        }
     } else {
         // With --positions the file's line count is the number of robots; with
         // --first, the app runs on one robot after them unless told otherwise.

@@ -30,6 +30,7 @@ typedef struct console_line {
     size_t len;
 } console_line;
 static console_line *lines;
+static FILE *console_csv; /* --console-csv, written after each window in robot order */
 static unsigned faults_reported;
 
 /* What the exact mode supports and this one does not (yet): refused by
@@ -126,6 +127,7 @@ static void print_console(int index, const native_robot *r) {
         if (c != '\n') continue; /* a line past its room: the rest of it is dropped */
         l->text[l->len] = '\0';
         if (!opts->quiet) print_line(index, l->text, seconds_of(r, r->io->now));
+        if (console_csv != NULL) console_csv_row(console_csv, seconds_of(r, r->io->now), index, l->text);
         l->len = 0;
     }
 }
@@ -256,15 +258,20 @@ int native_run(const options *o) {
             return EXIT_USAGE;
         }
     }
+    if (o->console_csv != NULL && (console_csv = console_csv_open(o->console_csv)) == NULL)
+        return EXIT_USAGE;
     if (start(o, path) != 0) return EXIT_USAGE;
     run(o);
     for (int i = 0; i < n_robots; i++) {
         if (lines[i].len == 0) continue;
         lines[i].text[lines[i].len] = '\0'; /* a last line without its end */
-        if (!o->quiet) print_line(i, lines[i].text, seconds_of(native_swarm_robot(i), native_swarm_robot(i)->io->now));
+        double t = seconds_of(native_swarm_robot(i), native_swarm_robot(i)->io->now);
+        if (!o->quiet) print_line(i, lines[i].text, t);
+        if (console_csv != NULL) console_csv_row(console_csv, t, i, lines[i].text);
     }
     stdout_flush();
+    int console_lost = console_csv != NULL && console_csv_close(console_csv, o->console_csv, NULL, 0);
     int written = o->world != NULL ? world_run_finish() : 0;
     int status = report(o);
-    return status == 0 && written != 0 ? EXIT_USAGE : status;
+    return status == 0 && (written != 0 || console_lost) ? EXIT_USAGE : status;
 }

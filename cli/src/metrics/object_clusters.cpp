@@ -1,4 +1,4 @@
-#include "cluster_metrics.hpp"
+#include "object_clusters.hpp"
 
 #include <algorithm>
 #include <numeric>
