@@ -242,6 +242,20 @@ TEST_F(WorldFile, ColumnsCountCharactersAndTabs) {
     EXPECT_NE(err.find("\n    " + std::string(20, ' ') + "\t" + std::string(22, ' ') + "^\n"), std::string::npos) << err;
 }
 
+// A UTF-8 byte order mark (Notepad's "UTF-8 with BOM") is not JSON but is
+// accepted, as in openswarm.json; columns on the first line do not count it.
+TEST_F(WorldFile, AByteOrderMarkIsAccepted) {
+    const std::string bom = "\xEF\xBB\xBF";
+    world_spec w{};
+    ASSERT_EQ(load(bom + R"({"arena": {"width_mm": 600, "height_mm": 400}, "seed": 5})", &w), "");
+    EXPECT_EQ(w.seed, 5u);
+    world_spec_free(&w);
+    EXPECT_EQ(error_of(bom + R"({"seed": -3, "arena": {"width_mm": 600, "height_mm": 400}})"),
+              "world.json:1:10: seed: expected the random seed, a whole number 0..4294967295, found -3; e.g. \"seed\": 7\n"
+              "    {\"seed\": -3, \"arena\": {\"width_mm\": 600, \"height_mm\": 400}}\n"
+              "             ^\n");
+}
+
 TEST_F(WorldFile, WindowsLineEndings) {
     std::string err = error_of("{\r\n\"arena\": {\"width_mm\": 600, \"height_mm\": 400},\r\n\"seed\": -3\r\n}\r\n");
     EXPECT_EQ(err.substr(0, err.find('\n')),

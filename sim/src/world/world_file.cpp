@@ -210,6 +210,10 @@ extern "C" int world_spec_load(const char *path, world_spec *out) {
         buffer << in.rdbuf();
         text = buffer.str();
     }
+    /* A UTF-8 byte order mark, as some Windows editors save: not part of
+     * the JSON (nlohmann skips it too); dropped, so that columns on the
+     * first line count from the '{'. */
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
     world_spec w{};
     try {
         world_file::read_world(path, text, w);
