@@ -306,6 +306,30 @@ TEST_F(WorldFile, SyntaxErrorsArePlaced) {
     EXPECT_EQ(first_line("{\"seed\": 1e999}"), "world.json:1:10: this number is too large for any world: check it");
 }
 
+// A value or a key of a megabyte is echoed clipped, in the message and in
+// the line shown under it (100 bytes either side of the caret).
+TEST_F(WorldFile, LongValuesAreClipped) {
+    const std::string head = R"({"arena": {"width_mm": 600, "height_mm": 400}, "robot": ")";
+    std::string err = error_of(head + std::string(1000000, 'a') + "\"}");
+    EXPECT_EQ(err, "world.json:1:57: robot: unknown robot \"" + std::string(57, 'a') + "...\"; known: kilobot, epuck\n"
+                   "    " + head + std::string(99, 'a') + "...\n"
+                   "    " + std::string(56, ' ') + "^\n");
+    // The caret far along a long line: the line is cut before it too.
+    std::string key = std::string(1000000, 'k');
+    err = error_of("{\"description\": \"" + std::string(1000, 'd') + "\", \"" + key +
+                   "\": 1, \"arena\": {\"width_mm\": 600, \"height_mm\": 400}}");
+    EXPECT_EQ(err, "world.json:1:1021: unknown key \"" + std::string(57, 'k') +
+                       "...\"; the keys here are description, robot, arena, seed, duration_s, sample_period_s, "
+                       "fidelity, ir, clock_spread_pct, light, obstacles, objects, robots\n"
+                       "    ..." + std::string(97, 'd') + "\", \"" + std::string(99, 'k') + "...\n"
+                       "       " + std::string(100, ' ') + "^\n");
+    // A cut does not split a character ("é" is two bytes).
+    std::string e;
+    for (int k = 0; k < 100; k++) e += "\xc3\xa9";
+    err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "fidelity": ")" + e + "\"}");
+    EXPECT_NE(err.find("unknown fidelity \"" + e.substr(0, 56) + "...\"; known"), std::string::npos) << err;
+}
+
 TEST_F(WorldFile, PhysicalConflictsNameBothSides) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
 "robots": [{"poses": [{"x_mm": 100, "y_mm": 100}]},

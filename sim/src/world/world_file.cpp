@@ -38,7 +38,11 @@ T *c_array(const std::vector<T> &v) {
     return out;
 }
 
-/* "file:line:column: message", the line, a caret under the column. */
+bool continues_character(char c) { return ((unsigned char)c & 0xC0) == 0x80; } /* a UTF-8 tail byte */
+
+/* "file:line:column: message", the line, a caret under the column. Of a
+ * long line, LINE_BYTES either side of the caret are shown, "..." marking
+ * what is cut. */
 void report(const std::string &path, const std::string &text, size_t byte, const std::string &message) {
     byte = std::min(byte, text.size());
     size_t line = 1, start = 0;
@@ -47,14 +51,18 @@ void report(const std::string &path, const std::string &text, size_t byte, const
             line++;
             start = k + 1;
         }
-    size_t end = text.find('\n', start);
-    std::string source = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (!source.empty() && source.back() == '\r') source.pop_back();
-    std::string caret;
+    size_t end = std::min(text.find('\n', start), text.size());
+    if (end > start && text[end - 1] == '\r') end--;
+    size_t from = byte - start > LINE_BYTES ? byte - LINE_BYTES : start;
+    while (from > start && continues_character(text[from])) from--;
+    size_t to = end > byte && end - byte > LINE_BYTES ? byte + LINE_BYTES : end;
+    while (to < end && continues_character(text[to])) to++;
+    std::string source = (from > start ? "..." : "") + text.substr(from, to - from) + (to < end ? "..." : "");
+    std::string caret = from > start ? "   " : "";
     size_t column = 1;
     for (size_t k = start; k < byte; k++) {
-        if (((unsigned char)text[k] & 0xC0) == 0x80) continue; /* a UTF-8 character's tail */
-        caret += text[k] == '\t' ? '\t' : ' ';
+        if (continues_character(text[k])) continue;
+        if (k >= from) caret += text[k] == '\t' ? '\t' : ' ';
         column++;
     }
     fprintf(stderr, "%s:%zu:%zu: %s\n", path.c_str(), line, column, message.c_str());
@@ -77,7 +85,7 @@ void Reader::robot_kind(const Node &n) {
         robot_ = "an e-puck";
         robots_plural_ = "e-pucks";
     } else if (k != "kilobot") {
-        fail(n, "unknown robot \"" + k + "\"; known: kilobot, epuck" +
+        fail(n, "unknown robot " + quote(k) + "; known: kilobot, epuck" +
                     openswarm::did_you_mean(k, {"kilobot", "epuck"}, '"'));
     }
 }
@@ -90,7 +98,7 @@ int Reader::fidelity(const Node &n) {
     std::string f = n->get<std::string>();
     if (f == "native") return WORLD_FIDELITY_NATIVE;
     if (f != "exact")
-        fail(n, "unknown fidelity \"" + f + "\"; known: exact (the firmware in simavr), native (the app "
+        fail(n, "unknown fidelity " + quote(f) + "; known: exact (the firmware in simavr), native (the app "
                 "built for the host)" + openswarm::did_you_mean(f, {"exact", "native"}, '"'));
     return WORLD_FIDELITY_EXACT;
 }

@@ -43,9 +43,17 @@ std::string mm(double v) { return format("%.1f", v); }
 std::string num(double v) { return format("%g", v); }
 std::string at_text(double x, double y) { return "(" + mm(x) + ", " + mm(y) + ")"; }
 
+std::string clip(const std::string &text, size_t bytes) {
+    if (text.size() <= bytes) return text;
+    size_t cut = bytes - 3;
+    while (cut > 0 && ((unsigned char)text[cut] & 0xC0) == 0x80) cut--; /* not inside a character */
+    return text.substr(0, cut) + "...";
+}
+
+std::string quote(const std::string &text) { return "\"" + clip(text) + "\""; }
+
 std::string found(const json &v) {
-    std::string text = v.dump();
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    std::string text = clip(v.dump(), 40);
     const char *kind = v.is_number() ? "" : v.is_string() ? "text " : v.is_boolean() ? "" : v.is_null() ? "" :
                        v.is_array() ? "a list " : "an object ";
     return kind + text;
@@ -87,7 +95,7 @@ void Reader::object(const Node &n, const std::vector<std::string> &allowed, cons
         const std::string &key = *unknown;
         std::string hint = openswarm::nearest(key, allowed);
         if (!alike(key, hint)) hint.clear();
-        fail_key(child(n, key), n.name, "unknown key \"" + key + "\"; " +
+        fail_key(child(n, key), n.name, "unknown key " + quote(key) + "; " +
                                     (hint.empty() ? "the keys here are " + openswarm::join(allowed)
                                                   : "did you mean \"" + hint + "\"?"));
     }

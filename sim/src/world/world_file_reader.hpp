@@ -57,6 +57,16 @@ std::string mm(double v);  /* a measured length */
 std::string num(double v); /* a bound, as written */
 std::string at_text(double x, double y);
 std::string found(const json &v); /* a value of the document, for "found ..." */
+/* Text from the file echoed in a message is clipped: a value may be a
+ * megabyte on one line. */
+constexpr size_t ECHO_BYTES = 60;  /* a value or a key */
+constexpr size_t PATH_BYTES = 240; /* a path made from one */
+constexpr size_t LINE_BYTES = 100; /* the line under a message, either side of the caret */
+/* text, or its start cut between UTF-8 characters and "..." added, in at
+ * most `bytes` bytes. */
+std::string clip(const std::string &text, size_t bytes = ECHO_BYTES);
+/* A string from the file, clipped, in double quotes. */
+std::string quote(const std::string &text);
 
 /* ---- world_file_geometry.cpp ----------------------------------------- */
 

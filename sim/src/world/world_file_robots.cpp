@@ -62,8 +62,8 @@ int Reader::firmware(const Node &f) {
     file = file.lexically_normal();
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
-        fail(f, "\"" + given + "\": " + (fs::exists(file, ec) ? "not a file" : "no such file") + " (looked for " +
-                    fs::absolute(file, ec).string() + "); a firmware path is relative to the world file's folder: build the "
+        fail(f, quote(given) + ": " + (fs::exists(file, ec) ? "not a file" : "no such file") + " (looked for " +
+                    clip(fs::absolute(file, ec).string(), PATH_BYTES) + "); a firmware path is relative to the world file's folder: build the "
                     "firmware, or correct the path");
     auto known = std::find(firmware_.begin(), firmware_.end(), file.string());
     int index = (int)(known - firmware_.begin());
@@ -78,7 +78,7 @@ void Reader::calibration(const Node &c, world_robot &base) const {
     if (c->is_string()) {
         std::string s = c->get<std::string>();
         if (s != "erased")
-            fail(c, "unknown calibration \"" + s + "\"; expected \"erased\" or four duties: " + ex);
+            fail(c, "unknown calibration " + quote(s) + "; expected \"erased\" or four duties: " + ex);
         for (int &d : base.calibration) d = -1;
     } else {
         if (!c->is_array() || c->size() != 4)

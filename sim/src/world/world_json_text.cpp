@@ -126,7 +126,7 @@ class Scanner {
             std::string key = string();
             auto before = seen.find(key);
             if (before != seen.end())
-                throw Mistake{key_start, "\"" + key + "\" is given twice in this object (also on line " +
+                throw Mistake{key_start, quote(key) + " is given twice in this object (also on line " +
                                              std::to_string(line_of(before->second)) + "): keep one"};
             seen[key] = key_start;
             std::string child = pointer_child(ptr, key);
@@ -134,7 +134,7 @@ class Scanner {
             skip();
             if (peek() != ':') {
                 if (i >= t.size()) eof("after a key");
-                throw Mistake{i, "expected ':' after \"" + key + "\", found " + found()};
+                throw Mistake{i, "expected ':' after " + quote(key) + ", found " + found()};
             }
             i++;
             skip();
@@ -149,7 +149,7 @@ class Scanner {
                 return;
             }
             if (i >= t.size()) eof("inside an object");
-            throw Mistake{i, "expected ',' or '}' after the value of \"" + key + "\", found " + found() +
+            throw Mistake{i, "expected ',' or '}' after the value of " + quote(key) + ", found " + found() +
                                  (peek() == '"' ? ": a ',' is missing before it" : "")};
         }
     }
