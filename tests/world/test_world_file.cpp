@@ -340,6 +340,20 @@ TEST_F(WorldFile, PhysicalConflictsNameBothSides) {
               "at least 33 mm apart (or move the grid, or change its columns, rows or spacing)");
 }
 
+// An object larger than the arena fits nowhere: said so, not as a range
+// for its centre that runs backwards ("x 1000..-400").
+TEST_F(WorldFile, AnObjectLargerThanTheArenaIsSaidNotToFit) {
+    std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
+"objects": [{"x_mm": 300, "y_mm": 200, "radius_mm": 250}]})");
+    EXPECT_EQ(err.substr(0, err.find('\n')),
+              "world.json:2:13: objects[0]: this object is 500 mm across, more than the arena (600 x 400 mm) holds: "
+              "lower radius_mm to at most 200, or enlarge the arena");
+    // As large as the arena's height: it fits, centred.
+    EXPECT_EQ(error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
+"objects": [{"x_mm": 300, "y_mm": 200, "radius_mm": 200}]})"),
+              "");
+}
+
 TEST_F(WorldFile, RegionTooSmallSaysHowManyFit) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "seed": 3,
 "robots": [{"count": 10, "region": {"x_mm": 250, "y_mm": 150, "width_mm": 40, "height_mm": 40}}]})");

@@ -5,6 +5,7 @@
  * Obstacles and objects come before the robots in the world, so the
  * robots' placement (world_file_robots.cpp) asks here whether a place is
  * clear of them. */
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -141,6 +142,12 @@ std::optional<Reader::Conflict> Reader::object_conflict(P c, double r, const std
 /* Whether a round thing (an object) at c, radius r, fits: in the arena,
  * clear of obstacles and of the objects before it. */
 std::optional<Reader::Conflict> Reader::round_conflict(P c, double r) const {
+    /* Wherever its centre, it reaches past a wall (and the range for the
+     * centre below would run backwards). */
+    if (2 * r > w_ + 2 * EPS || 2 * r > h_ + 2 * EPS)
+        return Conflict{"is " + num(2 * r) + " mm across, more than the arena (" + num(w_) + " x " + num(h_) +
+                            " mm) holds",
+                        "lower radius_mm to at most " + num(std::min(w_, h_) / 2) + ", or enlarge the arena"};
     if (c.x - r < -EPS || c.x + r > w_ + EPS || c.y - r < -EPS || c.y + r > h_ + EPS)
         return Conflict{"reaches past the arena's walls (x 0.." + num(w_) + ", y 0.." + num(h_) + ")",
                         "keep its centre within x " + num(r) + ".." + num(w_ - r) + " and y " + num(r) + ".." +
