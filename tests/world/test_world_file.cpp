@@ -354,6 +354,39 @@ TEST_F(WorldFile, AnObjectLargerThanTheArenaIsSaidNotToFit) {
               "");
 }
 
+// A distance refused for being under a limit is printed under it, with as
+// many decimals as that takes: not "16.5 mm from it" where 16.5 is allowed.
+TEST_F(WorldFile, DistancesUnderALimitArePrintedUnderIt) {
+    auto first_line = [&](const std::string &rest) {
+        std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, )" + rest + "}");
+        return err.substr(0, err.find('\n'));
+    };
+    EXPECT_EQ(first_line(R"("robots": [{"poses": [{"x_mm": 16.49, "y_mm": 100}]}])"),
+              "world.json:1:70: robots[0].poses[0]: this robot reaches past the arena's left wall: its centre is "
+              "16.49 mm from it, a Kilobot's radius is 16.5 mm: keep robots' centres within x 16.5..583.5 and y "
+              "16.5..383.5");
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": 583.5001, "y_mm": 100}]}])")
+                  .find("right wall: its centre is 16.4999 mm from it"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": -0.01, "y_mm": 100}]}])")
+                  .find("left wall: its centre is outside, 0.01 mm beyond it"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": 100, "y_mm": 100}, {"x_mm": 132.99, "y_mm": 100}]}])")
+                  .find("centres 32.99 mm apart, Kilobots are 33 mm across"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("objects": [{"x_mm": 300, "y_mm": 200, "radius_mm": 20}],
+                            "robots": [{"poses": [{"x_mm": 336.49, "y_mm": 200}]}])")
+                  .find("centres 36.49 mm apart, at least 36.5 needed"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("obstacles": [{"rect": {"x_mm": 100, "y_mm": 100, "width_mm": 50, "height_mm": 20}}],
+                            "robots": [{"poses": [{"x_mm": 83.51, "y_mm": 110}]}])")
+                  .find("overlaps obstacles[0]: its centre is 16.49 mm from it"),
+              std::string::npos);
+    // A whole tenth under the limit reads as before.
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": 16.4, "y_mm": 100}]}])").find("its centre is 16.4 mm from it"),
+              std::string::npos);
+}
+
 TEST_F(WorldFile, RegionTooSmallSaysHowManyFit) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "seed": 3,
 "robots": [{"count": 10, "region": {"x_mm": 250, "y_mm": 150, "width_mm": 40, "height_mm": 40}}]})");

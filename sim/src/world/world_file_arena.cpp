@@ -118,7 +118,7 @@ std::optional<Reader::Conflict> Reader::obstacle_conflict(P c, double r, const s
         double d = obstacle_distance(c, obstacles_[k]);
         if (d < r - EPS)
             return Conflict{d == 0 ? "has its centre inside obstacles[" + std::to_string(k) + "]"
-                                   : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm(d) +
+                                   : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm_beside(d, r) +
                                          " mm from it, " + radius,
                             "move it at least " + num(r) + " mm clear of the obstacle"};
     }
@@ -133,7 +133,8 @@ std::optional<Reader::Conflict> Reader::object_conflict(P c, double r, const std
         double d = std::hypot(c.x - b.at.x, c.y - b.at.y);
         if (d < r + b.radius_mm - EPS)
             return Conflict{"overlaps objects[" + std::to_string(k) + "] at " + at_text(b.at.x, b.at.y) + ": centres " +
-                                mm(d) + " mm apart, at least " + num(r + b.radius_mm) + " needed " + needed,
+                                mm_beside(d, r + b.radius_mm) + " mm apart, at least " + num(r + b.radius_mm) +
+                                " needed " + needed,
                             "move them apart"};
     }
     return std::nullopt;

@@ -7,6 +7,7 @@
  * made of: lengths, bounds, points, values as found. */
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -41,6 +42,17 @@ bool alike(const std::string &typed, const std::string &hint) {
 
 std::string mm(double v) { return format("%.1f", v); }
 std::string num(double v) { return format("%g", v); }
+
+std::string mm_beside(double v, double bound) {
+    double printed_bound = strtod(num(bound).c_str(), nullptr);
+    for (int decimals = 1; decimals <= 12; decimals++) {
+        char buf[64];
+        snprintf(buf, sizeof buf, "%.*f", decimals, v);
+        double printed = strtod(buf, nullptr);
+        if (v < bound ? printed < printed_bound : printed > printed_bound) return buf;
+    }
+    return mm(v); /* bound itself prints rounded past v */
+}
 std::string at_text(double x, double y) { return "(" + mm(x) + ", " + mm(y) + ")"; }
 
 std::string clip(const std::string &text, size_t bytes) {

@@ -54,6 +54,11 @@ std::string pointer_child(const std::string &ptr, const std::string &key);
 /* ---- world_file_checks.cpp: the words of messages -------------------- */
 
 std::string mm(double v);  /* a measured length */
+/* A measured length v that a check found on one side of bound: with one
+ * decimal, or as many more as it takes to read on that side of bound as
+ * num() prints it (16.49 mm from a wall where 16.5 is the least is not
+ * "16.5 mm"). */
+std::string mm_beside(double v, double bound);
 std::string num(double v); /* a bound, as written */
 std::string at_text(double x, double y);
 std::string found(const json &v); /* a value of the document, for "found ..." */

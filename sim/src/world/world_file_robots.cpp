@@ -255,7 +255,8 @@ std::optional<Reader::Conflict> Reader::robot_conflict(P c) const {
     for (int k = 0; k < 4; k++)
         if (gaps[k] < ROBOT_R - EPS)
             return Conflict{std::string("reaches past the arena's ") + walls[k] + " wall: its centre is " +
-                                (gaps[k] < 0 ? "outside, " + mm(-gaps[k]) + " mm beyond it" : mm(gaps[k]) + " mm from it") +
+                                (gaps[k] < 0 ? "outside, " + mm_beside(-gaps[k], 0) + " mm beyond it"
+                                             : mm_beside(gaps[k], ROBOT_R) + " mm from it") +
                                 ", " + robot_ + "'s radius is " + num(ROBOT_R) + " mm",
                             "keep robots' centres within x " + num(ROBOT_R) + ".." + num(w_ - ROBOT_R) + " and y " +
                                 num(ROBOT_R) + ".." + num(h_ - ROBOT_R)};
@@ -280,7 +281,7 @@ std::optional<Reader::Conflict> Reader::robot_conflict(P c) const {
             }
         }
     if (nearest >= 0)
-        return Conflict{"overlaps " + robot_name(nearest) + ": centres " + mm(nearest_d) + " mm apart, " + robots_plural_ + " are " +
+        return Conflict{"overlaps " + robot_name(nearest) + ": centres " + mm_beside(nearest_d, BODY) + " mm apart, " + robots_plural_ + " are " +
                             num(BODY) + " mm across",
                         "move them at least " + num(BODY) + " mm apart"};
     return std::nullopt;
