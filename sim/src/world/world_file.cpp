@@ -38,8 +38,6 @@ T *c_array(const std::vector<T> &v) {
     return out;
 }
 
-bool continues_character(char c) { return ((unsigned char)c & 0xC0) == 0x80; } /* a UTF-8 tail byte */
-
 /* "file:line:column: message", the line, a caret under the column. Of a
  * long line, LINE_BYTES either side of the caret are shown, "..." marking
  * what is cut. */

@@ -42,6 +42,7 @@ bool alike(const std::string &typed, const std::string &hint) {
 
 std::string mm(double v) { return format("%.1f", v); }
 std::string num(double v) { return format("%g", v); }
+std::string at_text(double x, double y) { return "(" + mm(x) + ", " + mm(y) + ")"; }
 
 std::string mm_beside(double v, double bound) {
     double printed_bound = strtod(num(bound).c_str(), nullptr);
@@ -53,12 +54,11 @@ std::string mm_beside(double v, double bound) {
     }
     return mm(v); /* bound itself prints rounded past v */
 }
-std::string at_text(double x, double y) { return "(" + mm(x) + ", " + mm(y) + ")"; }
 
 std::string clip(const std::string &text, size_t bytes) {
     if (text.size() <= bytes) return text;
     size_t cut = bytes - 3;
-    while (cut > 0 && ((unsigned char)text[cut] & 0xC0) == 0x80) cut--; /* not inside a character */
+    while (cut > 0 && continues_character(text[cut])) cut--;
     return text.substr(0, cut) + "...";
 }
 

@@ -54,12 +54,12 @@ std::string pointer_child(const std::string &ptr, const std::string &key);
 /* ---- world_file_checks.cpp: the words of messages -------------------- */
 
 std::string mm(double v);  /* a measured length */
+std::string num(double v); /* a bound, as written */
 /* A measured length v that a check found on one side of bound: with one
  * decimal, or as many more as it takes to read on that side of bound as
  * num() prints it (16.49 mm from a wall where 16.5 is the least is not
  * "16.5 mm"). */
 std::string mm_beside(double v, double bound);
-std::string num(double v); /* a bound, as written */
 std::string at_text(double x, double y);
 std::string found(const json &v); /* a value of the document, for "found ..." */
 /* Text from the file echoed in a message is clipped: a value may be a
@@ -67,6 +67,8 @@ std::string found(const json &v); /* a value of the document, for "found ..." */
 constexpr size_t ECHO_BYTES = 60;  /* a value or a key */
 constexpr size_t PATH_BYTES = 240; /* a path made from one */
 constexpr size_t LINE_BYTES = 100; /* the line under a message, either side of the caret */
+/* Whether c is a UTF-8 character's tail byte: no cut falls before one. */
+inline bool continues_character(char c) { return ((unsigned char)c & 0xC0) == 0x80; }
 /* text, or its start cut between UTF-8 characters and "..." added, in at
  * most `bytes` bytes. */
 std::string clip(const std::string &text, size_t bytes = ECHO_BYTES);
