@@ -23,7 +23,11 @@ std::string text_start(const std::string &text, size_t bytes) {
 
 std::string quoted_start(const std::string &text) { return "\"" + text_start(text, 40) + "\""; }
 
-std::string found(const json &v) { return std::string(v.type_name()) + " " + text_start(v.dump(), 37); }
+// "number 7", "string \"x\"", "object {...}"; null is its own name, not "null null".
+std::string found(const json &v) {
+    if (v.is_null()) return "null";
+    return std::string(v.type_name()) + " " + text_start(v.dump(), 37);
+}
 
 void check_keys(const fs::path &file, const std::string &path, const json &object,
                 const std::vector<std::string> &allowed) {

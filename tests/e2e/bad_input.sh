@@ -60,6 +60,11 @@ printf '{"name": "keep"}' > keep/openswarm.json
 expect 2 "\"port\": missing" "$openswarm" build -C keep
 printf '{"name": 7, "port": "kilobot"}' > keep/openswarm.json
 expect 2 "\"name\": expected the app's name, found number 7" "$openswarm" build -C keep
+printf '{"name": null, "port": "kilobot"}' > keep/openswarm.json
+expect 2 "\"name\": expected the app's name, found null$" "$openswarm" build -C keep
+# The same words for an experiment's world (cli/src/experiment_spec.cpp).
+printf '{"arena": {"width_mm": null, "height_mm": 1000}}' > experiment.json
+expect 2 "experiment.json: \"arena.width_mm\": expected a number 100..100000, found null$" "$openswarm" experiment experiment.json
 printf '{"name": "keep", "port": "kilobot", "evnets": []}' > keep/openswarm.json
 expect 2 "\"evnets\": unknown key.*did you mean \"events\"" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 40}}' > keep/openswarm.json

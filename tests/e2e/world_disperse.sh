@@ -44,4 +44,10 @@ grep -q "Building\|Built" bad.log && { echo "built before refusing a missing wor
 expect "--world excludes --robots|--robots excludes --world" "$openswarm" run -C app --world app/worlds/packed.json --robots 3
 expect "--world excludes --line|--line excludes --world" "$openswarm" run -C app --world app/worlds/packed.json --line 80
 expect "--out requires --world" "$openswarm" run -C app --out x
+# A world the simulator refuses: its message (file, line, column, the fix)
+# and exit status 2 through the tool too.
+printf '{"arena": {"width_mm": 600, "height_mm": 400},\n "robots": [{"count": 3, "reigon": {}}]}\n' >bad_world.json
+expect "bad_world.json:2:26: robots\[0\]: unknown key \"reigon\"; did you mean \"region\"\?" \
+    "$openswarm" run -C app --world bad_world.json
+grep -q "the simulator refused its input" bad.log || { echo "no word from the tool on the refusal"; cat bad.log; exit 1; }
 echo "1 passed, 0 failed"

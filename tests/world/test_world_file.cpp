@@ -242,6 +242,20 @@ TEST_F(WorldFile, ColumnsCountCharactersAndTabs) {
     EXPECT_NE(err.find("\n    " + std::string(20, ' ') + "\t" + std::string(22, ' ') + "^\n"), std::string::npos) << err;
 }
 
+// A UTF-8 byte order mark (Notepad's "UTF-8 with BOM") is not JSON but is
+// accepted, as in openswarm.json; columns on the first line do not count it.
+TEST_F(WorldFile, AByteOrderMarkIsAccepted) {
+    const std::string bom = "\xEF\xBB\xBF";
+    world_spec w{};
+    ASSERT_EQ(load(bom + R"({"arena": {"width_mm": 600, "height_mm": 400}, "seed": 5})", &w), "");
+    EXPECT_EQ(w.seed, 5u);
+    world_spec_free(&w);
+    EXPECT_EQ(error_of(bom + R"({"seed": -3, "arena": {"width_mm": 600, "height_mm": 400}})"),
+              "world.json:1:10: seed: expected the random seed, a whole number 0..4294967295, found -3; e.g. \"seed\": 7\n"
+              "    {\"seed\": -3, \"arena\": {\"width_mm\": 600, \"height_mm\": 400}}\n"
+              "             ^\n");
+}
+
 TEST_F(WorldFile, WindowsLineEndings) {
     std::string err = error_of("{\r\n\"arena\": {\"width_mm\": 600, \"height_mm\": 400},\r\n\"seed\": -3\r\n}\r\n");
     EXPECT_EQ(err.substr(0, err.find('\n')),
@@ -292,6 +306,30 @@ TEST_F(WorldFile, SyntaxErrorsArePlaced) {
     EXPECT_EQ(first_line("{\"seed\": 1e999}"), "world.json:1:10: this number is too large for any world: check it");
 }
 
+// A value or a key of a megabyte is echoed clipped, in the message and in
+// the line shown under it (100 bytes either side of the caret).
+TEST_F(WorldFile, LongValuesAreClipped) {
+    const std::string head = R"({"arena": {"width_mm": 600, "height_mm": 400}, "robot": ")";
+    std::string err = error_of(head + std::string(1000000, 'a') + "\"}");
+    EXPECT_EQ(err, "world.json:1:57: robot: unknown robot \"" + std::string(57, 'a') + "...\"; known: kilobot, epuck\n"
+                   "    " + head + std::string(99, 'a') + "...\n"
+                   "    " + std::string(56, ' ') + "^\n");
+    // The caret far along a long line: the line is cut before it too.
+    std::string key = std::string(1000000, 'k');
+    err = error_of("{\"description\": \"" + std::string(1000, 'd') + "\", \"" + key +
+                   "\": 1, \"arena\": {\"width_mm\": 600, \"height_mm\": 400}}");
+    EXPECT_EQ(err, "world.json:1:1021: unknown key \"" + std::string(57, 'k') +
+                       "...\"; the keys here are description, robot, arena, seed, duration_s, sample_period_s, "
+                       "fidelity, ir, clock_spread_pct, light, obstacles, objects, robots\n"
+                       "    ..." + std::string(97, 'd') + "\", \"" + std::string(99, 'k') + "...\n"
+                       "       " + std::string(100, ' ') + "^\n");
+    // A cut does not split a character ("é" is two bytes).
+    std::string e;
+    for (int k = 0; k < 100; k++) e += "\xc3\xa9";
+    err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "fidelity": ")" + e + "\"}");
+    EXPECT_NE(err.find("unknown fidelity \"" + e.substr(0, 56) + "...\"; known"), std::string::npos) << err;
+}
+
 TEST_F(WorldFile, PhysicalConflictsNameBothSides) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
 "robots": [{"poses": [{"x_mm": 100, "y_mm": 100}]},
@@ -300,6 +338,53 @@ TEST_F(WorldFile, PhysicalConflictsNameBothSides) {
               "world.json:3:21: robots[1].grid: its robot at column 1, row 0 (80.0, 120.0) overlaps robot 0 "
               "(robots[0].poses[0], at (100.0, 100.0)): centres 28.3 mm apart, Kilobots are 33 mm across: move them "
               "at least 33 mm apart (or move the grid, or change its columns, rows or spacing)");
+}
+
+// An object larger than the arena fits nowhere: said so, not as a range
+// for its centre that runs backwards ("x 1000..-400").
+TEST_F(WorldFile, AnObjectLargerThanTheArenaIsSaidNotToFit) {
+    std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
+"objects": [{"x_mm": 300, "y_mm": 200, "radius_mm": 250}]})");
+    EXPECT_EQ(err.substr(0, err.find('\n')),
+              "world.json:2:13: objects[0]: this object is 500 mm across, more than the arena (600 x 400 mm) holds: "
+              "lower radius_mm to at most 200, or enlarge the arena");
+    // As large as the arena's height: it fits, centred.
+    EXPECT_EQ(error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
+"objects": [{"x_mm": 300, "y_mm": 200, "radius_mm": 200}]})"),
+              "");
+}
+
+// A distance refused for being under a limit is printed under it, with as
+// many decimals as that takes: not "16.5 mm from it" where 16.5 is allowed.
+TEST_F(WorldFile, DistancesUnderALimitArePrintedUnderIt) {
+    auto first_line = [&](const std::string &rest) {
+        std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, )" + rest + "}");
+        return err.substr(0, err.find('\n'));
+    };
+    EXPECT_EQ(first_line(R"("robots": [{"poses": [{"x_mm": 16.49, "y_mm": 100}]}])"),
+              "world.json:1:70: robots[0].poses[0]: this robot reaches past the arena's left wall: its centre is "
+              "16.49 mm from it, a Kilobot's radius is 16.5 mm: keep robots' centres within x 16.5..583.5 and y "
+              "16.5..383.5");
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": 583.5001, "y_mm": 100}]}])")
+                  .find("right wall: its centre is 16.4999 mm from it"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": -0.01, "y_mm": 100}]}])")
+                  .find("left wall: its centre is outside, 0.01 mm beyond it"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": 100, "y_mm": 100}, {"x_mm": 132.99, "y_mm": 100}]}])")
+                  .find("centres 32.99 mm apart, Kilobots are 33 mm across"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("objects": [{"x_mm": 300, "y_mm": 200, "radius_mm": 20}],
+                            "robots": [{"poses": [{"x_mm": 336.49, "y_mm": 200}]}])")
+                  .find("centres 36.49 mm apart, at least 36.5 needed"),
+              std::string::npos);
+    EXPECT_NE(first_line(R"("obstacles": [{"rect": {"x_mm": 100, "y_mm": 100, "width_mm": 50, "height_mm": 20}}],
+                            "robots": [{"poses": [{"x_mm": 83.51, "y_mm": 110}]}])")
+                  .find("overlaps obstacles[0]: its centre is 16.49 mm from it"),
+              std::string::npos);
+    // A whole tenth under the limit reads as before.
+    EXPECT_NE(first_line(R"("robots": [{"poses": [{"x_mm": 16.4, "y_mm": 100}]}])").find("its centre is 16.4 mm from it"),
+              std::string::npos);
 }
 
 TEST_F(WorldFile, RegionTooSmallSaysHowManyFit) {

@@ -317,7 +317,9 @@ int run_app(RunOptions o, const Paths &paths) {
     int status = run_program(argv);
     if (status != 0) {
         report(simulator_failure(status));
-        return EXIT_FAILED;
+        // 2: it refused its input (a world file's mistake, ...): bad input,
+        // the tool's own status 2, as docs/world.md says.
+        return status == 2 ? EXIT_USAGE : EXIT_FAILED;
     }
     if (world) {
         fs::path out(o.out);
