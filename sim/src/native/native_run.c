@@ -106,7 +106,10 @@ static void configure(int index, const options *o) {
 
 static double seconds_of(const native_robot *r, uint64_t cycle) { return (double)cycle / r->hz; }
 
-static void print_line(int index, const char *text, double t) {
+/* A whole console line: printed unless --quiet, and a row of --console-csv. */
+static void emit_line(int index, const char *text, double t) {
+    if (console_csv != NULL) console_csv_row(console_csv, t, index, text);
+    if (opts->quiet) return;
     char prefix[32] = "";
     if (n_robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
     if (opts->timestamps)
@@ -126,8 +129,7 @@ static void print_console(int index, const native_robot *r) {
         }
         if (c != '\n') continue; /* a line past its room: the rest of it is dropped */
         l->text[l->len] = '\0';
-        if (!opts->quiet) print_line(index, l->text, seconds_of(r, r->io->now));
-        if (console_csv != NULL) console_csv_row(console_csv, seconds_of(r, r->io->now), index, l->text);
+        emit_line(index, l->text, seconds_of(r, r->io->now));
         l->len = 0;
     }
 }
@@ -265,9 +267,7 @@ int native_run(const options *o) {
     for (int i = 0; i < n_robots; i++) {
         if (lines[i].len == 0) continue;
         lines[i].text[lines[i].len] = '\0'; /* a last line without its end */
-        double t = seconds_of(native_swarm_robot(i), native_swarm_robot(i)->io->now);
-        if (!o->quiet) print_line(i, lines[i].text, t);
-        if (console_csv != NULL) console_csv_row(console_csv, t, i, lines[i].text);
+        emit_line(i, lines[i].text, seconds_of(native_swarm_robot(i), native_swarm_robot(i)->io->now));
     }
     stdout_flush();
     int console_lost = console_csv != NULL && console_csv_close(console_csv, o->console_csv, NULL, 0);

@@ -166,14 +166,15 @@ static uint64_t own_end_of(const native_robot *r) {
     return r->hz == nominal ? window_end : window_end * r->hz / nominal;
 }
 
-/* A swarm's images are beyond the caches: robot i + 1's is fetched while
- * robot i runs (and the state saying whether it runs at all, one ahead). */
+/* A swarm's images are beyond the caches: the thread's next robot's image
+ * is fetched while robot i runs (unless it dozes), and the state saying
+ * whether the one after it runs at all. */
 static void prefetch_next(int i) {
     if (i + 2 * n_threads < n_robots) __builtin_prefetch(robots[i + 2 * n_threads].io);
     if (i + n_threads >= n_robots) return;
     const native_robot *next = &robots[i + n_threads];
     if (dozing(next, own_end_of(next))) return;
-    size_t bytes = copies[(i + n_threads) % n_threads].image_bytes;
+    size_t bytes = copies[i % n_threads].image_bytes; /* the next one's copy too */
     for (size_t at = 0; at < bytes; at += 64) __builtin_prefetch(next->image + at);
 }
 

@@ -14,11 +14,10 @@
 
 /* ---- history.c: the run so far, copied sample by sample for final.png's
  * trails and viewer.html. It is bounded: past its budget (by default
- * HISTORY_BUDGET_BYTES) it
- * keeps every other sample it holds (and each later one on the new
- * stride), so a thousand robots for ten minutes stay in memory and the
- * viewer stays loadable; the newest sample is always there. 100 robots x
- * 6000 samples (10 minutes at 0.1 s) fit whole. */
+ * HISTORY_BUDGET_BYTES) it keeps every other sample it holds (and each
+ * later one on the new stride), so a thousand robots for ten minutes stay
+ * in memory and the viewer stays loadable; the newest sample is always
+ * there. 100 robots x 6000 samples (10 minutes at 0.1 s) fit whole. */
 #define HISTORY_BUDGET_BYTES (64u << 20)
 typedef struct output_history {
     const world_spec *world;
