@@ -5,23 +5,8 @@
 set -uo pipefail
 openswarm=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-passed=0 failed=0
+source "$(dirname "$0")/check.sh"
 
-# expect STATUS REGEX COMMAND...: run it, check the status and stderr.
-expect() {
-    local status=$1 regex=$2
-    shift 2
-    local err
-    err=$("$@" 2>&1 >/dev/null)
-    local got=$?
-    if [ "$got" -eq "$status" ] && printf '%s' "$err" | grep -Eq "$regex"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAILED: $* -> exit $got (expected $status), stderr:"
-        printf '%s\n' "$err"
-    fi
-}
 
 snapshot() { find . -printf '%p %s\n' | sort; }
 

@@ -17,3 +17,21 @@ check() {
         printf '%s\n' "$out"
     fi
 }
+
+# expect STATUS REGEX COMMAND...: runs COMMAND and counts it likewise; its
+# exit status must be STATUS and its standard error match REGEX (grep -E,
+# line by line); standard output is not looked at.
+expect() {
+    local status=$1 regex=$2
+    shift 2
+    local err
+    err=$("$@" 2>&1 >/dev/null)
+    local got=$?
+    if [ "$got" -eq "$status" ] && printf '%s' "$err" | grep -Eq -- "$regex"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAILED: $* -> exit $got (expected $status), stderr:"
+        printf '%s\n' "$err"
+    fi
+}

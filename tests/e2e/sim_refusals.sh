@@ -7,25 +7,10 @@
 set -uo pipefail
 sim=$1 elf=$2/kilolib_blink.elf epuck=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-passed=0 failed=0
+source "$(dirname "$0")/check.sh"
 
-# expect STATUS REGEX COMMAND...: run it, check the status and stderr.
-expect() {
-    local status=$1 regex=$2
-    shift 2
-    local err
-    err=$("$@" 2>&1 >/dev/null)
-    local got=$?
-    if [ "$got" -eq "$status" ] && printf '%s' "$err" | grep -Eq -- "$regex"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAILED: $* -> exit $got (expected $status), stderr:"
-        printf '%s\n' "$err"
-    fi
-}
-# check DESCRIPTION COMMAND...: the command succeeds.
-check() {
+# holds DESCRIPTION COMMAND...: the command succeeds.
+holds() {
     local what=$1
     shift
     if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $what"; fi
@@ -57,7 +42,7 @@ for world in kilobots.json epucks.json; do
     [ "$world" = epucks.json ] && program=$epuck
     expect 2 "--video needs ffmpeg: apt-get install ffmpeg, or drop --video \\(none in the PATH.s folders: .*empty-bin\\)" \
         env PATH="$PWD/empty-bin" "$sim" --quiet --no-progress --world "$world" --out run --video "$program"
-    check "--video without ffmpeg changed run/trajectories.csv ($world)" cmp -s kept.csv run/trajectories.csv
+    holds "--video without ffmpeg changed run/trajectories.csv ($world)" cmp -s kept.csv run/trajectories.csv
 done
 expect 2 "--video records the run into --out DIR's video.mp4: give --out DIR too" \
     "$sim" --quiet --no-progress --world kilobots.json --video "$elf"
@@ -67,11 +52,11 @@ expect 2 "--video records the run into --out DIR's video.mp4: give --out DIR too
 cp kilobots.json trajectories.csv
 expect 2 "--out \\.: its trajectories.csv is the world file trajectories.csv: the run would overwrite it; give another --out folder, or rename the world file" \
     "$sim" --quiet --no-progress --world trajectories.csv --out . "$elf"
-check "--out . overwrote the world file trajectories.csv" cmp -s kilobots.json trajectories.csv
+holds "--out . overwrote the world file trajectories.csv" cmp -s kilobots.json trajectories.csv
 mkdir -p sub
 expect 2 "--out sub/\\.\\./: its trajectories.csv is the world file \\./trajectories.csv" \
     "$sim" --quiet --no-progress --world ./trajectories.csv --out sub/../ "$elf"
-check "--out sub/../ overwrote the world file" cmp -s kilobots.json trajectories.csv
+holds "--out sub/../ overwrote the world file" cmp -s kilobots.json trajectories.csv
 cp "$elf" robot.elf
 ln -s robot.elf link.elf
 for option in --trace-csv --vcd; do
@@ -86,9 +71,9 @@ expect 2 "--trace-csv at.txt is the --positions file at.txt: the run would overw
 cp epucks.json objects.csv
 expect 2 "--out \\.: its objects.csv is the world file objects.csv: the run would overwrite it" \
     "$sim" --quiet --no-progress --world objects.csv --out . "$epuck"
-check "--out . overwrote the e-puck world file objects.csv" cmp -s epucks.json objects.csv
-check "an output overwrote robot.elf" cmp -s "$elf" robot.elf
-check "an output overwrote at.txt" grep -qx "0 0" at.txt
+holds "--out . overwrote the e-puck world file objects.csv" cmp -s epucks.json objects.csv
+holds "an output overwrote robot.elf" cmp -s "$elf" robot.elf
+holds "an output overwrote at.txt" grep -qx "0 0" at.txt
 
 # A run that would write more samples than the documented limit (50
 # million rows of trajectories.csv and objects.csv): refused at once, with
@@ -106,7 +91,7 @@ JSON
 sed 's/"arena"/"robot": "epuck", "arena"/' long.json > long-epucks.json
 expect 2 "--out long: 1 robot and 1 object sampled every 0.001 s for 1e\\+06 s make 2e\\+09 rows of trajectories.csv and objects.csv \\(about 65 GB\\); at most 50000000 are written: a sample_period_s of at least 0.0401 s in long.json, a shorter run \\(--time or duration_s\\), or no --out" \
     timeout 60 "$sim" --quiet --no-progress --world long.json --out long "$elf"
-check "a refused run made its --out folder" test ! -e long
+holds "a refused run made its --out folder" test ! -e long
 expect 2 "--out long: 1 robot and 1 object sampled every 0.001 s for 30000 s make 6e\\+07 rows" \
     timeout 60 "$sim" --quiet --no-progress --world long.json --time 30000 --out long "$elf"
 expect 2 "--out long: 1 e-puck and 1 object sampled every 0.001 s" \
@@ -146,7 +131,7 @@ expect 2 "--faults reset:0@5: at 5 s, after the end of the run \\(1 s\\): give a
     "$sim" --quiet --no-progress --time 1 --faults reset:0@5 "$elf"
 expect 2 "--faults brownout:0@0.5: at 0.5 s, after the end of the run \\(0.2 s\\)" \
     "$sim" --quiet --no-progress --world kilobots.json --faults brownout:0@0.5 "$elf"
-check "two resets at different times are two faults" \
+holds "two resets at different times are two faults" \
     "$sim" --quiet --no-progress --time 2 --faults reset:0@0.5,reset:0@1 "$elf"
 
 echo "$passed passed, $failed failed"
