@@ -78,6 +78,8 @@ for option in --trace-csv --vcd; do
     expect 2 "$option link.elf is robot 0's firmware robot.elf: the run would overwrite it; give $option another file" \
         "$sim" --quiet --no-progress --time 0.1 "$option" link.elf robot.elf
 done
+expect 2 "--console-csv link.elf is robot 0's firmware robot.elf: the run would overwrite it; give --console-csv another file" \
+    "$sim" --quiet --no-progress --time 0.1 --console-csv link.elf robot.elf
 expect 2 "--fault-log robot.elf is robot 0's firmware robot.elf: the run would overwrite it; give --fault-log another file" \
     "$sim" --quiet --no-progress --time 0.1 --faults reset=1 --fault-log robot.elf robot.elf
 printf '0 0\n' > at.txt
