@@ -138,6 +138,18 @@ fs::path attribution_dir(const fs::path &dir, const std::string &port) {
     return dir / "build" / (port + "-size");
 }
 
+// A path as one word of the shell command the build tool runs the link
+// with: CMAKE_EXE_LINKER_FLAGS goes in as it is, split at spaces. In
+// single quotes when it holds anything but the characters no shell reads.
+static std::string shell_word(const std::string &path) {
+    bool plain = !path.empty() && path.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                         "0123456789_./+-=,:@%") == std::string::npos;
+    if (plain) return path;
+    std::string quoted = "'";
+    for (char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
 std::optional<Attribution> attribute_app(const Paths &paths, const fs::path &dir,
                                          const std::string &port, std::string &why) {
     fs::path build_dir = attribution_dir(dir, port);
@@ -146,7 +158,7 @@ std::optional<Attribution> attribute_app(const Paths &paths, const fs::path &dir
     // One image, one map: the e-puck2's robot image would write its own
     // over it.
     configure.insert(configure.end(), {"-DOPENSWARM_LTO=OFF", "-DOPENSWARM_ROBOT_IMAGE=OFF",
-                                       "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + map.string()});
+                                       "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + shell_word(map.string())});
     std::vector<std::string> build = {"cmake", "--build", build_dir.string()};
     std::string output;
     bool configured = capture_program_and_errors(configure, output) == 0;

@@ -1,6 +1,8 @@
 #include "json_checks.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 
 #include "suggest.hpp"
 
@@ -84,6 +86,39 @@ size_t too_deep(const std::string &text, size_t max_depth) {
     return std::string::npos;
 }
 
+// In text, valid JSON, the second of a key given twice in one object (its
+// first byte, the key and the first one's byte), or npos: nlohmann keeps
+// the last silently, and a file that says a thing twice means one of them
+// by mistake. A key is a string in an object followed by ':'.
+size_t duplicate_key(const std::string &text, std::string &key, size_t &first) {
+    struct Level {
+        bool object;
+        std::map<std::string, size_t> keys; // each key and where it is
+    };
+    std::vector<Level> levels;
+    for (size_t i = 0; i < text.size(); i++) {
+        char c = text[i];
+        if (c == '"') {
+            size_t start = i++;
+            for (; i < text.size() && text[i] != '"'; i++)
+                if (text[i] == '\\') i++;
+            if (levels.empty() || !levels.back().object) continue;
+            size_t after = i + 1;
+            while (after < text.size() && std::isspace((unsigned char)text[after])) after++;
+            if (after >= text.size() || text[after] != ':') continue;
+            std::string name = json::parse(text.substr(start, i + 1 - start)).get<std::string>();
+            auto [at, fresh] = levels.back().keys.emplace(name, start);
+            if (fresh) continue;
+            key = name;
+            first = at->second;
+            return start;
+        }
+        if (c == '{' || c == '[') levels.push_back({c == '{', {}});
+        else if ((c == '}' || c == ']') && !levels.empty()) levels.pop_back();
+    }
+    return std::string::npos;
+}
+
 }  // namespace
 
 json parse_json_file(const fs::path &file, const std::string &text) {
@@ -96,7 +131,16 @@ json parse_json_file(const fs::path &file, const std::string &text) {
         throw ConfigError(located_message(file, text, deep, "nested more than " + std::to_string(max_json_depth) +
                                                                 " levels deep; the file needs a few at most"));
     try {
-        return json::parse(text);
+        json doc = json::parse(text);
+        std::string key;
+        size_t first = 0, twice = duplicate_key(text, key, first);
+        if (twice != std::string::npos)
+            throw ConfigError(located_message(
+                file, text, twice,
+                quoted_start(key) + " is given twice in this object (also on line " +
+                    std::to_string(std::count(text.begin(), text.begin() + (long)first, '\n') + 1) +
+                    "): keep one"));
+        return doc;
     } catch (const json::parse_error &e) {
         std::string what = e.what();
         size_t colon = what.rfind(": ");

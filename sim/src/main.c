@@ -217,12 +217,7 @@ static void run(const options *o) {
 static int run_main(int argc, char **argv) {
     options o;
     if (parse_options(argc, argv, &o) != 0) return EXIT_USAGE;
-    if (o.world != NULL && world_run_is_epuck()) {
-        if (o.faults != NULL) {
-            fprintf(stderr, "openswarm-sim: --faults injects faults into Kilobots' simulated MCUs and "
-                            "IR; %s holds e-pucks: drop --faults\n", o.world);
-            return EXIT_USAGE;
-        }
+    if (o.world != NULL && world_run_is_epuck()) { /* the Kilobot-only options refused (world_run.c) */
         if (o.console_csv != NULL) {
             fprintf(stderr, "openswarm-sim: --console-csv keeps Kilobots' consoles; %s holds e-pucks, "
                             "whose controllers print on the simulator's standard output: drop "

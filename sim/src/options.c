@@ -380,7 +380,8 @@ static int outputs_apart_from_inputs(const options *o) {
 #undef INPUT
     const struct {
         const char *option, *path;
-    } files[] = {{"--trace-csv", o->trace_csv}, {"--vcd", o->vcd}, {"--fault-log", o->fault_log}};
+    } files[] = {{"--trace-csv", o->trace_csv}, {"--vcd", o->vcd}, {"--fault-log", o->fault_log},
+                 {"--console-csv", o->console_csv}};
     for (size_t k = 0; status == 0 && k < sizeof files / sizeof files[0]; k++) {
         const input_file *in = files[k].path ? input_at(inputs, n, files[k].path) : NULL;
         if (in == NULL) continue;

@@ -36,6 +36,11 @@ err=$("$openswarm" build -C keep 2>&1 >/dev/null)
 printf '%s\n' "$err" | grep -q '^      "port": "kilobot",,$' && printf '%s\n' "$err" | grep -q '^                        \^$' \
     && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: no caret under the error:"; printf '%s\n' "$err"; }
 
+# A key given twice was last-wins, silently (world.json refuses it).
+printf '{\n  "name": "keep",\n  "port": "kilobot",\n  "kernel": {"max_threads": 4, "max_threads": 8}\n}\n' > keep/openswarm.json
+expect 2 "keep/openswarm.json:4:32: \"max_threads\" is given twice in this object \(also on line 4\): keep one" "$openswarm" build -C keep
+printf '{\n  "name": "keep",\n  "port": "kilobot",\n  "name": "other"\n}\n' > keep/openswarm.json
+expect 2 "keep/openswarm.json:4:3: \"name\" is given twice in this object \(also on line 2\): keep one" "$openswarm" config check -C keep
 printf '{"name": "keep", "port": "kilobott"}' > keep/openswarm.json
 expect 2 "\"port\": unknown port \"kilobott\".*did you mean \"kilobot\"" "$openswarm" build -C keep
 # A number beyond a double's range (found by fuzz.app_config: it crashed the tool).

@@ -90,5 +90,13 @@ done
 [ ! -e nan-results ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: --duration nan ran"; }
 expect 2 "--time: 'nan' is not seconds: give a finite number 0.001..3600, e.g. --time 5" "$openswarm" size --time nan
 
+# A key given twice was last-wins, silently (world.json refuses it).
+sed 's/"trials": 2,/"trials": 2,\n  "trials": 3,/' one.json > twice.json
+expect 2 "twice.json:8:3: \"trials\" is given twice in this object \(also on line 7\): keep one" \
+    "$openswarm" experiment twice.json --out twice-results
+sed 's/"arena": {"width_mm": 1000, "height_mm": 1000}/"arena": {"width_mm": 1000, "width_mm": 900, "height_mm": 1000}/' one.json > twice-nested.json
+expect 2 "twice-nested.json:2:31: \"width_mm\" is given twice in this object \(also on line 2\): keep one" \
+    "$openswarm" experiment twice-nested.json --out twice-results
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -63,6 +63,8 @@ for option in --trace-csv --vcd; do
     expect 2 "$option link.elf is robot 0's firmware robot.elf: the run would overwrite it; give $option another file" \
         "$sim" --quiet --no-progress --time 0.1 "$option" link.elf robot.elf
 done
+expect 2 "--console-csv link.elf is robot 0's firmware robot.elf: the run would overwrite it; give --console-csv another file" \
+    "$sim" --quiet --no-progress --time 0.1 --console-csv link.elf robot.elf
 expect 2 "--fault-log robot.elf is robot 0's firmware robot.elf: the run would overwrite it; give --fault-log another file" \
     "$sim" --quiet --no-progress --time 0.1 --faults reset=1 --fault-log robot.elf robot.elf
 printf '0 0\n' > at.txt
@@ -133,6 +135,32 @@ expect 2 "--faults brownout:0@0.5: at 0.5 s, after the end of the run \\(0.2 s\\
     "$sim" --quiet --no-progress --world kilobots.json --faults brownout:0@0.5 "$elf"
 holds "two resets at different times are two faults" \
     "$sim" --quiet --no-progress --time 2 --faults reset:0@0.5,reset:0@1 "$elf"
+
+# An e-puck world with options only a Kilobot's simulated MCU and IR
+# understand: refused by name (each was ignored, exit 0).
+kilobot_only() {
+    local name=$1
+    shift
+    expect 2 "$name: Kilobots only \\(their simulated MCU, IR or overhead controller\\), and epucks.json holds e-pucks: drop $name" \
+        "$sim" --quiet --no-progress --world epucks.json "$@" "$epuck"
+}
+kilobot_only --ohc --ohc run@0.1
+kilobot_only --counters --counters 0
+kilobot_only --ir-log --ir-log
+kilobot_only --clock-spread --clock-spread 1
+kilobot_only --ir-range --ir-range 50
+kilobot_only --ir-loss --ir-loss 5
+kilobot_only --trace --trace
+kilobot_only --trace-csv --trace-csv t.csv
+kilobot_only --vcd --vcd t.vcd
+kilobot_only --marks --marks
+kilobot_only --timestamps --timestamps
+kilobot_only --charging --charging
+kilobot_only --voltage --voltage 3000
+kilobot_only --faults --faults reset=1
+check "a refused e-puck run wrote t.csv or t.vcd" test ! -e t.csv -a ! -e t.vcd
+check "an e-puck world with its own options runs" \
+    "$sim" --quiet --no-progress --world epucks.json --time 0.1 "$epuck"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -39,8 +39,8 @@ typedef struct output_options {
 } output_options;
 
 /* At most this many rows of trajectories.csv and objects.csv together
- * (robots and objects x samples): about 2 GB of CSV, and as much memory
- * for viewer.html (docs/world.md). */
+ * (robots and objects x samples): about 2 GB of CSV (docs/world.md; the
+ * history kept for viewer.html is bounded apart, history_bytes). */
 #define OUTPUT_MAX_ROWS 50000000.0
 
 /* What can be checked before anything is opened (--video needs ffmpeg on

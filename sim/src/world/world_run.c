@@ -120,8 +120,31 @@ static int sample_count_check(const options *o) {
     return -1;
 }
 
+/* e-pucks are host processes, not simulated MCUs (epuck_run.c): the
+ * options that watch or drive a Kilobot's MCU, IR or overhead controller
+ * are refused by name, not ignored. Checked before the world's own values
+ * fill the options in. */
+static int refuse_kilobot_only(const options *o) {
+    const char *what = o->n_ohc ? "--ohc" : o->counters_period >= 0 ? "--counters"
+                     : o->ir_log ? "--ir-log" : (o->given & GIVEN_CLOCK_SPREAD) ? "--clock-spread"
+                     : (o->given & GIVEN_IR_RANGE) ? "--ir-range" : (o->given & GIVEN_IR_LOSS) ? "--ir-loss"
+                     : o->faults ? "--faults" : o->fault_log ? "--fault-log"
+                     : o->trace ? "--trace" : o->trace_csv ? "--trace-csv" : o->vcd ? "--vcd"
+                     : o->gdb_port ? "--gdb" : o->marks ? "--marks" : o->n_watched ? "--watch-irq"
+                     : o->profile ? "--profile" : o->main_stack ? "--main-stack"
+                     : o->timestamps ? "--timestamps" : o->charging ? "--charging"
+                     : o->voltage_mv >= 0 ? "--voltage" : o->temperature_mv >= 0 ? "--temperature"
+                     : o->expect_stop ? "--expect-stop" : NULL;
+    if (what == NULL) return 0;
+    fprintf(stderr, "openswarm-sim: %s: Kilobots only (their simulated MCU, IR or overhead controller), "
+                    "and %s holds e-pucks: drop %s (docs/world.md, \"e-pucks in the world\")\n",
+            what, o->world, what);
+    return -1;
+}
+
 int world_options_check(options *o) {
     if (refuse_beside_world(o) != 0 || world_spec_load(o->world, &spec) != 0) return -1;
+    if (spec.robot_kind == WORLD_ROBOT_EPUCK && refuse_kilobot_only(o) != 0) return -1;
     o->robots = spec.n_robots;
     if (!(o->given & GIVEN_TIME) && spec.duration_s > 0) o->seconds = spec.duration_s;
     if (!(o->given & GIVEN_IR_RANGE) && spec.ir_range_mm > 0) o->ir_range_mm = spec.ir_range_mm;
