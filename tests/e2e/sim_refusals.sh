@@ -158,8 +158,8 @@ kilobot_only --timestamps --timestamps
 kilobot_only --charging --charging
 kilobot_only --voltage --voltage 3000
 kilobot_only --faults --faults reset=1
-check "a refused e-puck run wrote t.csv or t.vcd" test ! -e t.csv -a ! -e t.vcd
-check "an e-puck world with its own options runs" \
+holds "a refused e-puck run wrote t.csv or t.vcd" test ! -e t.csv -a ! -e t.vcd
+holds "an e-puck world with its own options runs" \
     "$sim" --quiet --no-progress --world epucks.json --time 0.1 "$epuck"
 
 echo "$passed passed, $failed failed"
