@@ -88,6 +88,10 @@ void Ranks::gather(std::vector<TrialOutcome> &outcomes) const {
     for (int from = 1; from < size_; from++) receive(outcomes, from);
 }
 
+void Ranks::barrier() const {
+    if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
+}
+
 int Ranks::agree(int status) const {
     if (mpi_) MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
     return status;

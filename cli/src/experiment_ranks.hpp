@@ -33,6 +33,9 @@ class Ranks {
     // Every job's outcome on rank 0, from the rank that ran it (its
     // outcome marked here); other ranks' vectors are left as they are.
     void gather(std::vector<TrialOutcome> &outcomes) const;
+    // Returns when every rank has come here (a sweep's trials are on a
+    // shared disk: rank 0 reads them after).
+    void barrier() const;
     // Rank 0's exit status, for every rank to return.
     int agree(int status) const;
 

@@ -12,11 +12,15 @@
 #include <thread>
 
 #include "../app_config.hpp"
+#include "../duration_text.hpp"
 #include "../metrics/object_clusters.hpp"
 #include "../experiment_plot.hpp"
 #include "../experiment_ranks.hpp"
 #include "../experiment_spec.hpp"
 #include "../process.hpp"
+#include "../results_folder.hpp"
+#include "../sweep/sweep_run.hpp"
+#include "../sweep/sweep_spec.hpp"
 #include "../suggest.hpp"
 #include "commands.hpp"
 
@@ -28,6 +32,7 @@ namespace {
 
 struct ExperimentOptions {
     std::string file;
+    std::string shard; // sweeps only
     std::string out; // default: <file's folder>/<file's stem>-results
     unsigned jobs = 0;
     int trials = 0;         // 0: the file's
@@ -92,13 +97,6 @@ void run_job(const Experiment &e, const Paths &paths, Job &job) {
     }
     job.samples = metrics_of(job.dir / "objects.csv", e.object_radius_mm);
     if (job.samples.empty()) job.failure = "no objects.csv samples in " + job.dir.string();
-}
-
-std::string duration_text(double seconds) {
-    char text[32];
-    if (seconds < 60) std::snprintf(text, sizeof text, "%.0f s", seconds);
-    else std::snprintf(text, sizeof text, "%dm %02ds", (int)seconds / 60, (int)seconds % 60);
-    return text;
 }
 
 // Which rank runs a job: trial and controller both rotate the ranks, so
@@ -245,30 +243,6 @@ bool programs_present(const Experiment &e) {
     return true;
 }
 
-// The results' folder, made before any trial runs (by every rank, as each
-// writes its trials there); false after a message naming it, why, and the
-// fix (from rank 0 only: the others find the same).
-bool prepare_out(const fs::path &out, const Ranks &ranks) {
-    auto report = [&](const std::string &message) {
-        if (ranks.rank() == 0) openswarm::report(message);
-    };
-    std::error_code ec;
-    fs::file_status st = fs::status(out, ec);
-    if (fs::exists(st) && !fs::is_directory(st)) {
-        report("--out " + out.string() + ": it is a file, not a folder; the results go into a folder: "
-               "give another --out (a folder, new or existing)");
-        return false;
-    }
-    ec.clear();
-    fs::create_directories(out, ec);
-    if (ec) {
-        report("--out " + out.string() + ": cannot create the results' folder: " + ec.message() +
-               "; give an --out folder you can write to");
-        return false;
-    }
-    return true;
-}
-
 int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &ranks) {
     Experiment e;
     try {
@@ -293,7 +267,7 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     }
     fs::path file(o.file);
     fs::path out = o.out.empty() ? file.parent_path() / (file.stem().string() + "-results") : fs::path(o.out);
-    if (!prepare_out(out, ranks)) return EXIT_USAGE;
+    if (!prepare_results_folder(out, ranks)) return EXIT_USAGE;
     std::vector<Job> jobs;
     for (int t = 0; t < e.trials; t++)
         for (size_t c = 0; c < e.controllers.size(); c++) {
@@ -351,11 +325,22 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
         ->check(finite_seconds("--duration", 1, 86400, "600"));
+    cmd->add_option("--shard", o->shard,
+                    "a sweep's K-th share of N (0-based), as a Slurm array task runs it: "
+                    "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
+        ->type_name("K/N");
     cmd->callback([o, &paths] {
         Ranks ranks;
         int status;
         try {
-            status = run_experiment(*o, paths, ranks);
+            if (is_sweep_file(o->file))
+                status = run_sweep({o->file, o->out, o->jobs, o->trials, o->duration_s, o->shard}, paths, ranks);
+            else if (!o->shard.empty()) {
+                report("--shard: for sweep files (a \"world\" and what to vary in it); " + o->file +
+                       " is a clustering experiment: spread it with mpirun instead (docs/case-study.md)");
+                status = EXIT_USAGE;
+            } else
+                status = run_experiment(*o, paths, ranks);
         } catch (const fs::filesystem_error &err) { // a last resort: each place above says more
             report(std::string("experiment: ") + err.what() + "; check the --out folder and the disk");
             status = EXIT_FAILED;

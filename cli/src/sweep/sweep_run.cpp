@@ -1,0 +1,256 @@
+#include "sweep_run.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include "../app_config.hpp"
+#include "../duration_text.hpp"
+#include "../commands/build.hpp"
+#include "../commands/commands.hpp"
+#include "../results_folder.hpp"
+#include "sweep_plot.hpp"
+#include "sweep_results.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace openswarm {
+
+namespace {
+
+// "K/N" into which trials are this shard's; false after a message.
+bool parse_shard(const std::string &text, size_t &k, size_t &n) {
+    k = 0;
+    n = 1;
+    if (text.empty()) return true;
+    unsigned long a = 0, b = 0;
+    char end = 0;
+    if (std::sscanf(text.c_str(), "%lu/%lu%c", &a, &b, &end) == 2 && b >= 1 && b <= 100000 && a < b) {
+        k = a;
+        n = b;
+        return true;
+    }
+    report("--shard " + text + ": give K/N, this shard's number K from 0 and the number of shards N, "
+           "e.g. --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT with --array=0-(N-1)");
+    return false;
+}
+
+bool wants_native(const Sweep &s, size_t point) {
+    json world = point_world(s, point, 0);
+    return world.contains("fidelity") && world["fidelity"] == "native";
+}
+
+// The app built once for each fidelity its points run in; false after the
+// build said why.
+bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &trials) {
+    AppConfig config = load_app_config(s.app);
+    if (config.port != "kilobot") {
+        report(s.app.string() + ": a " + config.port + " app; a sweep runs Kilobot apps (the e-puck case study "
+               "runs as its clustering experiment file, docs/case-study.md): give a Kilobot app's \"app\"");
+        exit_code = EXIT_USAGE;
+        return false;
+    }
+    std::optional<BuildResult> image[2];
+    for (SweepTrial &t : trials) {
+        bool native = wants_native(s, t.point);
+        if (!image[native]) {
+            image[native] = build_app(paths, s.app, "", Progress::brief, native ? Variant::native : Variant::release);
+            if (!image[native]) return false;
+        }
+        t.firmware = image[native]->image;
+    }
+    std::string print[2];
+    for (SweepTrial &t : trials) {
+        bool native = t.firmware.extension() == ".so";
+        if (print[native].empty()) print[native] = file_fingerprint(t.firmware);
+        t.firmware_hash = print[native];
+    }
+    return true;
+}
+
+// What ran, with what, when: beside the results, for whoever reads them.
+void write_provenance(const Sweep &s, const Paths &paths, const std::vector<SweepTrial> &trials,
+                      const fs::path &out, const std::string &command) {
+    std::ofstream f(out / "command.txt");
+    std::time_t now = std::time(nullptr);
+    char when[64];
+    std::strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&now));
+    f << "command: " << command << "\n"
+      << "started: " << when << "\n"
+      << "openswarm: " << OPENSWARM_VERSION << " (" << paths.root.string() << ")\n"
+      << "simulator: " << paths.simulator.string() << "\n"
+      << "sweep: " << fs::absolute(s.file).string() << " (" << file_fingerprint(s.file) << ")\n"
+      << "world: " << s.world.string() << " (" << file_fingerprint(s.world) << ")\n";
+    std::vector<fs::path> seen;
+    for (const SweepTrial &t : trials)
+        if (std::find(seen.begin(), seen.end(), t.firmware) == seen.end()) {
+            seen.push_back(t.firmware);
+            f << "firmware: " << t.firmware.string() << " (" << t.firmware_hash << ")\n";
+        }
+}
+
+struct Tally {
+    size_t done = 0, reused = 0, failed = 0;
+    bool refused = false;
+};
+
+std::string first_metric(const SweepTrial &t) {
+    auto series = read_trial_metrics(t.dir);
+    for (const auto &m : series)
+        if (!m.values.empty()) {
+            char text[96];
+            std::snprintf(text, sizeof text, "%s %.4g", m.metric.c_str(), m.values.back().second);
+            return text;
+        }
+    return "measured";
+}
+
+// This process's trials on `workers` threads, a line as each ends; stops
+// starting trials once the simulator refused a world (it will refuse the
+// others alike).
+Tally run_trials(const Sweep &s, const Paths &paths, std::vector<SweepTrial *> &mine, unsigned workers,
+                 const std::string &who) {
+    std::atomic<size_t> next{0};
+    std::atomic<bool> stop{false};
+    std::mutex print;
+    Tally tally;
+    auto began = std::chrono::steady_clock::now();
+    auto work = [&] {
+        for (size_t i; !stop && (i = next++) < mine.size();) {
+            SweepTrial &t = *mine[i];
+            run_sweep_trial(s, paths.simulator, t);
+            std::lock_guard<std::mutex> lock(print);
+            tally.done++;
+            tally.reused += t.reused;
+            tally.failed += !t.failure.empty();
+            if (t.refused && !stop.exchange(true)) tally.refused = true;
+            double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+            size_t ran = tally.done - tally.reused;
+            std::string left = ran ? "about " + duration_text(spent / (double)ran * (double)(mine.size() - tally.done)) + " left"
+                                   : "";
+            std::printf("[%s%zu/%zu] point %zu, trial %d: %s; %zu failed, %s so far%s%s\n", who.c_str(), tally.done,
+                        mine.size(), t.point + 1, t.trial + 1,
+                        !t.failure.empty() ? "FAILED"
+                        : t.remeasured     ? ("simulated before, measured again: " + first_metric(t)).c_str()
+                        : t.reused         ? "done before"
+                                           : first_metric(t).c_str(),
+                        tally.failed, duration_text(spent).c_str(), left.empty() ? "" : ", ", left.c_str());
+            if (!t.failure.empty()) std::printf("    %s: %s\n", t.dir.string().c_str(), t.failure.c_str());
+            std::fflush(stdout);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < std::max(1u, std::min<unsigned>(workers, (unsigned)mine.size())); w++)
+        pool.emplace_back(work);
+    for (auto &t : pool) t.join();
+    return tally;
+}
+
+}  // namespace
+
+int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
+    Sweep s;
+    try {
+        s = load_sweep(o.file);
+    } catch (const ConfigError &err) {
+        report(err.what());
+        return EXIT_USAGE;
+    }
+    if (o.trials) s.trials = o.trials;
+    if (o.duration_s > 0) s.duration_s = o.duration_s;
+    size_t shard = 0, shards = 1;
+    if (!parse_shard(o.shard, shard, shards)) return EXIT_USAGE;
+    fs::path file(o.file);
+    fs::path out = o.out.empty() ? file.parent_path() / (file.stem().string() + "-results") : fs::path(o.out);
+    if (!prepare_results_folder(out, ranks)) return EXIT_USAGE;
+
+    // Trial-major: every point's first trial before any second one, so a
+    // world the simulator refuses shows at once, and an early stop leaves
+    // every point measured.
+    std::vector<SweepTrial> trials;
+    int width_p = s.points.size() > 99 ? (int)std::to_string(s.points.size()).size() : 2;
+    int width_t = s.trials > 99 ? (int)std::to_string(s.trials).size() : 2;
+    for (int t = 0; t < s.trials; t++)
+        for (size_t p = 0; p < s.points.size(); p++) {
+            char name[64];
+            std::snprintf(name, sizeof name, "point-%0*zu/trial-%0*d", width_p, p + 1, width_t, t + 1);
+            SweepTrial trial;
+            trial.point = p;
+            trial.trial = t;
+            trial.seed = s.seed + (uint32_t)t;
+            trial.dir = out / name;
+            trials.push_back(trial);
+        }
+    if (paths.simulator.empty()) {
+        report("openswarm-sim was not found next to this tool; build it with "
+               "`cmake --build <openswarm>/build --target openswarm-sim`");
+        return EXIT_FAILED;
+    }
+    // Rank 0 builds first: ranks building at once would share the build folder.
+    if (ranks.rank() == 0 && !build_images(s, paths, trials)) return exit_code ? exit_code : EXIT_FAILED;
+    ranks.barrier();
+    if (ranks.rank() != 0 && !build_images(s, paths, trials)) return exit_code ? exit_code : EXIT_FAILED;
+
+    std::vector<SweepTrial *> mine;
+    for (size_t k = 0; k < trials.size(); k++)
+        if (k % shards == shard && ranks.mine(k / shards)) mine.push_back(&trials[k]);
+    unsigned cores = std::max(1u, std::thread::hardware_concurrency() / (unsigned)ranks.local_size());
+    unsigned workers = o.jobs ? o.jobs : cores;
+    if (ranks.rank() == 0) {
+        write_provenance(s, paths, trials, out, o.file);
+        std::printf("Sweeping %zu point%s x %d trial%s = %zu trials of %s%s, %u at a time%s, into %s\n",
+                    s.points.size(), s.points.size() == 1 ? "" : "s", s.trials, s.trials == 1 ? "" : "s",
+                    trials.size(), s.world.filename().string().c_str(),
+                    shards > 1 ? (" (shard " + std::to_string(shard) + " of " + std::to_string(shards) + ": " +
+                                  std::to_string(mine.size()) + " of them)").c_str() : "",
+                    workers,
+                    ranks.size() > 1 ? (" on each of " + std::to_string(ranks.size()) + " ranks").c_str() : "",
+                    out.string().c_str());
+        std::fflush(stdout);
+    }
+    auto began = std::chrono::steady_clock::now();
+    Tally tally = run_trials(s, paths, mine, workers,
+                             ranks.size() > 1 ? "rank " + std::to_string(ranks.rank()) + " " : "");
+    ranks.barrier();
+    if (ranks.rank() != 0) return tally.refused ? EXIT_USAGE : tally.failed ? EXIT_FAILED : EXIT_OK;
+
+    // Every trial as its folder tells, wherever it ran.
+    size_t pending = 0, failed = 0;
+    for (SweepTrial &t : trials) {
+        if (!t.attempted) read_sweep_trial(t);
+        pending += t.pending;
+        failed += !t.pending && !t.failure.empty();
+    }
+    std::string why;
+    std::vector<fs::path> plots;
+    bool written = write_sweep_results(s, trials, out, why) && write_sweep_plots(s, trials, out, plots, why);
+    std::printf("\n");
+    print_sweep_summary(s, trials, stdout);
+    if (!written) report("cannot write the results into " + out.string() + ": " + why);
+    double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    std::printf("\n%zu of %zu trials done (%zu by an earlier run), %zu failed%s, in %s: %s, %s, %s, %zu plot%s in "
+                "%s; each trial's folder under %s\n",
+                trials.size() - pending - failed, trials.size(), tally.reused, failed,
+                pending ? (", " + std::to_string(pending) + " not run yet").c_str() : "",
+                duration_text(spent).c_str(), (out / "results.csv").string().c_str(),
+                (out / "summary.csv").string().c_str(), (out / "trials.csv").string().c_str(), plots.size(),
+                plots.size() == 1 ? "" : "s", (out / "plots").string().c_str(), out.string().c_str());
+    if (tally.refused) {
+        report("the simulator refused a trial's world (its message is above): fix the sweep's parameters or the "
+               "world, then run the same command again; finished trials are kept");
+        return EXIT_USAGE;
+    }
+    if (failed) {
+        report(std::to_string(failed) + " trial" + (failed == 1 ? "" : "s") + " failed (trials.csv says why); the " +
+               "others are kept: run the same command again to retry only those");
+        return EXIT_FAILED;
+    }
+    return written ? EXIT_OK : EXIT_FAILED;
+}
+
+}  // namespace openswarm

@@ -1,0 +1,176 @@
+#include "sweep_trial.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "../metrics/metrics_error.hpp"
+#include "../metrics/run_metrics.hpp"
+#include "../process.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace openswarm {
+
+namespace {
+
+std::string text_of(const fs::path &file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// FNV-1a, 64 bits: enough to tell two builds or two worlds apart.
+std::string fingerprint(const std::string &bytes) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
+    return text;
+}
+
+// The last lines of what the simulator said: why it failed.
+std::string tail(const std::string &output, int lines) {
+    size_t at = output.size();
+    while (at > 0 && output[at - 1] == '\n') at--;
+    size_t end = at;
+    for (int n = 0; n < lines && at > 0; n++) {
+        at = output.rfind('\n', at - 1);
+        if (at == std::string::npos) { at = 0; break; }
+    }
+    return output.substr(at == 0 ? 0 : at + 1, end - (at == 0 ? 0 : at + 1));
+}
+
+bool write_text(const fs::path &file, const std::string &text) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    return (bool)out;
+}
+
+// What the metrics of a trial depend on besides its outputs: the metrics
+// asked for, the scripts' text, the spacing of values.
+std::string measures_fingerprint(const Sweep &s) {
+    std::string all;
+    for (const auto &m : s.metrics) all += m + "\n";
+    for (const auto &script : s.scripts) all += script.string() + " " + fingerprint(text_of(script)) + "\n";
+    return fingerprint(all + std::to_string(s.every_s));
+}
+
+struct Fingerprints {
+    std::string world, measures;
+};
+
+// Written last, through a temporary name: whole or absent. simulated: the
+// simulator's part went well (a failure was the measuring's).
+void write_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
+    json outcome = {{"status", t.failure.empty() ? "done" : "failed"},
+                    {"simulated", simulated},
+                    {"seed", t.seed},
+                    {"world", f.world},
+                    {"firmware", t.firmware_hash},
+                    {"measures", f.measures}};
+    if (!t.failure.empty()) outcome["reason"] = t.failure;
+    fs::path temporary = t.dir / "outcome.json.part";
+    std::error_code ec;
+    if (write_text(temporary, outcome.dump(2) + "\n")) fs::rename(temporary, t.dir / "outcome.json", ec);
+}
+
+json outcome_of(const fs::path &dir) {
+    std::ifstream in(dir / "outcome.json");
+    json outcome = json::parse(in, nullptr, false);
+    return !outcome.is_discarded() && outcome.is_object() ? outcome : json::object();
+}
+
+// The simulator ran this world with this firmware before, and its outputs
+// are there to measure.
+bool simulated_before(const SweepTrial &t, const json &outcome, const Fingerprints &f) {
+    return outcome.value("simulated", false) && outcome.value("world", "") == f.world &&
+           outcome.value("firmware", "") == t.firmware_hash;
+}
+
+void measure(const Sweep &s, SweepTrial &t) {
+    MetricsRequest request{t.dir, {}, s.metrics, s.scripts, s.every_s};
+    try {
+        MetricsOutcome outcome = measure_run(request);
+        write_metrics_csv(outcome.results, t.dir / "metrics.csv");
+    } catch (const MetricsError &e) {
+        t.failure = std::string("measuring it: ") + e.what();
+    }
+}
+
+}  // namespace
+
+std::string file_fingerprint(const fs::path &file) {
+    std::error_code ec;
+    return fs::is_regular_file(file, ec) ? fingerprint(text_of(file)) : "";
+}
+
+void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
+    t.attempted = true;
+    const std::string world = point_world(s, t.point, t.trial).dump(2) + "\n";
+    const Fingerprints f{fingerprint(world), measures_fingerprint(s)};
+    const json before = outcome_of(t.dir);
+    std::error_code ec;
+    if (simulated_before(t, before, f)) {
+        t.reused = true;
+        if (before.value("status", "") == "done" && before.value("measures", "") == f.measures &&
+            fs::is_regular_file(t.dir / "metrics.csv", ec))
+            return;
+        t.remeasured = true;
+        measure(s, t);
+        write_outcome(t, f, true);
+        return;
+    }
+    fs::remove(t.dir / "outcome.json", ec);
+    fs::create_directories(t.dir, ec);
+    if (ec) {
+        t.failure = "cannot create the trial's folder " + t.dir.string() + ": " + ec.message();
+        return;
+    }
+    if (!write_text(t.dir / "world.json", world)) {
+        t.failure = "cannot write " + (t.dir / "world.json").string() + " (the disk full?)";
+        return;
+    }
+    std::string output;
+    int status = capture_program_and_errors(
+        {simulator.string(), "--quiet", "--no-progress", "--world", (t.dir / "world.json").string(), "--out",
+         t.dir.string(), "--console-csv", (t.dir / "console.csv").string(), t.firmware.string()},
+        output);
+    if (status != 0) {
+        t.refused = status == 2;
+        std::string said = tail(output, 12);
+        t.failure = (status == 2 ? "the simulator refused the trial's world.json" : simulator_failure(status)) +
+                    (said.empty() ? "" : ":\n" + said);
+    } else {
+        measure(s, t);
+    }
+    write_outcome(t, f, status == 0);
+}
+
+void read_sweep_trial(SweepTrial &t) {
+    json outcome = outcome_of(t.dir);
+    std::string status = outcome.value("status", "");
+    t.pending = status != "done" && status != "failed";
+    t.failure = status == "done" ? "" : t.pending ? "not run yet" : outcome.value("reason", "failed");
+}
+
+std::vector<TrialSeries> read_trial_metrics(const fs::path &dir) {
+    std::ifstream in(dir / "metrics.csv");
+    std::string line;
+    std::getline(in, line); // time_s,metric,robot,value
+    std::vector<TrialSeries> series;
+    while (std::getline(in, line)) {
+        size_t a = line.find(','), b = line.find(',', a + 1), c = line.find(',', b + 1);
+        if (c == std::string::npos || c != b + 1) continue; // a robot's own report
+        std::string name = line.substr(a + 1, b - a - 1);
+        size_t k = 0;
+        while (k < series.size() && series[k].metric != name) k++;
+        if (k == series.size()) series.push_back({name, {}});
+        series[k].values.push_back({std::strtod(line.c_str(), nullptr), std::strtod(line.c_str() + c + 1, nullptr)});
+    }
+    return series;
+}
+
+}  // namespace openswarm

@@ -1,0 +1,75 @@
+// A sweep's parts that need no simulator: places in a world and the
+// statistics of its summary (cli/src/sweep/).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../../cli/src/sweep/sweep_stats.hpp"
+#include "../../cli/src/sweep/world_paths.hpp"
+
+using nlohmann::json;
+using namespace openswarm;
+
+namespace {
+
+json world() {
+    return json::parse(R"({"arena": {"width_mm": 500}, "robots": [{"count": 3, "poses": [{"x_mm": 1}]}]})");
+}
+
+}  // namespace
+
+TEST(WorldPaths, SetsKeysAndListItems) {
+    json w = world();
+    ASSERT_EQ(world_path_problem(w, "robots[0].count"), "");
+    set_world_path(w, "robots[0].count", 7);
+    set_world_path(w, "robots[0].poses[0].x_mm", 12.5);
+    EXPECT_EQ(w["robots"][0]["count"], 7);
+    EXPECT_EQ(w["robots"][0]["poses"][0]["x_mm"], 12.5);
+}
+
+TEST(WorldPaths, MakesMissingObjectsOnTheWay) {
+    json w = world();
+    ASSERT_EQ(world_path_problem(w, "ir.loss_pct"), "");
+    set_world_path(w, "ir.loss_pct", 20);
+    EXPECT_EQ(w["ir"]["loss_pct"], 20);
+    EXPECT_EQ(w["arena"]["width_mm"], 500); // the rest untouched
+}
+
+TEST(WorldPaths, RefusesWhatTheWorldCannotHold) {
+    json w = world();
+    EXPECT_EQ(world_path_problem(w, "robots[1].count"), "the world's robots has no item [1] (it holds 1)");
+    EXPECT_EQ(world_path_problem(w, "arena.width_mm.x"), "the world's arena.width_mm is not an object, so it has no \"x\"");
+    EXPECT_EQ(world_path_problem(w, "arena[0].x"), "the world's arena has no item [0] (it is not a list)");
+    for (const char *bad : {"", "robots[0]", ".arena", "arena..width_mm", "arena.", "[0].x",
+                            "robots[0]count", "arena width"})
+        EXPECT_NE(world_path_problem(w, bad).find("is not a place in a world"), std::string::npos) << bad;
+    EXPECT_NE(world_path_problem(w, "robots[x].count").find("a list item is [N]"), std::string::npos);
+}
+
+TEST(SweepStats, MeanSdAndStudentsInterval) {
+    // 2, 4, 4, 4, 5, 5, 7, 9: mean 5, sample sd sqrt(32/7); t(7) = 2.365.
+    Summary s = summarise({2, 4, 4, 4, 5, 5, 7, 9});
+    EXPECT_EQ(s.n, 8u);
+    EXPECT_DOUBLE_EQ(s.mean, 5);
+    EXPECT_NEAR(s.sd, std::sqrt(32.0 / 7), 1e-12);
+    EXPECT_NEAR(s.high - s.mean, 2.365 * std::sqrt(32.0 / 7) / std::sqrt(8.0), 1e-9);
+    EXPECT_NEAR(s.mean - s.low, s.high - s.mean, 1e-12);
+}
+
+TEST(SweepStats, OneValueHasNoInterval) {
+    Summary s = summarise({3});
+    EXPECT_EQ(s.n, 1u);
+    EXPECT_EQ(s.sd, 0);
+    EXPECT_EQ(s.low, 3);
+    EXPECT_EQ(s.high, 3);
+    EXPECT_EQ(summarise({}).n, 0u);
+}
+
+TEST(SweepStats, StudentsQuantiles) {
+    EXPECT_DOUBLE_EQ(student_t975(1), 12.706);
+    EXPECT_DOUBLE_EQ(student_t975(30), 2.042);
+    EXPECT_NEAR(student_t975(50), 2.009, 0.002); // tables: 2.009
+    EXPECT_NEAR(student_t975(100), 1.984, 0.002); // tables: 1.984
+    EXPECT_DOUBLE_EQ(student_t975(5000), 1.96);
+    for (size_t df = 2; df < 2000; df++) EXPECT_LE(student_t975(df), student_t975(df - 1)) << df;
+}
