@@ -148,7 +148,10 @@ static void print_faults(int index, const native_robot *r) {
 }
 
 static void after_window(void) {
-    for (int i = 0; i < n_robots; i++) {
+    unsigned n_ran;
+    const int *ran = native_swarm_ran(&n_ran);
+    for (unsigned at = 0; at < n_ran; at++) {
+        int i = ran[at];
         native_robot *r = native_swarm_robot(i);
         print_console(i, r);
         print_faults(i, r);
