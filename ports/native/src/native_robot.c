@@ -33,6 +33,7 @@ static void run(uint64_t until) {
     native_window(until); /* the inbox may hold new frames */
     native_switch(&simulator_sp, robot_sp);
     io->now = native_now;
+    io->resume_sp = robot_sp;
 }
 
 /* Outputs changed with interrupts masked are told now, at the latest. */

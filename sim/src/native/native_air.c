@@ -48,6 +48,8 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
  * it. A counting sort: cell_first[c] .. cell_first[c + 1] index in_cell. */
 static int grid_on, grid_cols, grid_rows;
 static double grid_x0, grid_y0, grid_cell;
+static const double *where; /* the positions the grid holds */
+static double beyond_squared; /* past this square of a distance, out of range for sure */
 static int *cell_first, *in_cell, *cell_of;
 static int grid_room;
 
@@ -95,6 +97,10 @@ void native_air_place(ir_distance_fn distance, void *ctx, const double *xy) {
     distance_ctx = ctx;
     grid_on = xy != NULL && n_robots > 0;
     if (!grid_on) return;
+    where = xy;
+    /* The world's distance is hypot's, exactly rounded: a margin far
+     * above the sum of squares' rounding keeps every pair it puts in range. */
+    beyond_squared = range_mm * range_mm * (1.0 + 1e-9);
     if (in_cell == NULL) {
         in_cell = malloc((size_t)n_robots * sizeof *in_cell);
         cell_of = malloc((size_t)n_robots * sizeof *cell_of);
@@ -109,6 +115,10 @@ typedef void (*in_range_fn)(int j, double mm, void *ctx);
 
 static void visit(int i, int j, in_range_fn each, void *ctx) {
     if (j == i) return;
+    if (grid_on) { /* most of the cells round a robot are out of its range: no hypot for them */
+        double dx = where[2 * i] - where[2 * j], dy = where[2 * i + 1] - where[2 * j + 1];
+        if (dx * dx + dy * dy > beyond_squared) return;
+    }
     double mm = distance_of(i, j, distance_ctx);
     if (mm <= range_mm) each(j, mm, ctx);
 }
@@ -247,8 +257,10 @@ static void enqueue(native_io *io, native_frame f) {
 void native_air_hand_over(void) {
     if (n_pending == 0) return;
     qsort(pending, n_pending, sizeof *pending, by_receiver_then_start);
-    for (size_t k = 0; k < n_pending; k++)
+    for (size_t k = 0; k < n_pending; k++) {
         enqueue(native_swarm_robot(pending[k].receiver)->io, pending[k].frame);
+        native_swarm_woken(pending[k].receiver);
+    }
     n_pending = 0;
 }
 

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "native/native_air.h"
 #include "native/native_swarm.h"
@@ -148,7 +149,10 @@ static void print_faults(int index, const native_robot *r) {
 }
 
 static void after_window(void) {
-    for (int i = 0; i < n_robots; i++) {
+    unsigned n_ran;
+    const int *ran = native_swarm_ran(&n_ran);
+    for (unsigned at = 0; at < n_ran; at++) {
+        int i = ran[at];
         native_robot *r = native_swarm_robot(i);
         print_console(i, r);
         print_faults(i, r);
@@ -164,8 +168,16 @@ static void after_window(void) {
 
 /* ---- the run ---- */
 
+/* With two threads or more in a world, one steps the physics while the
+ * others run the robots (world_stepper.h): at a thousand packed robots a
+ * step costs about what the robots do between two steps. */
+static int physics_thread(const options *o) {
+    return o->world != NULL && (o->threads >= 2 || (o->threads == 0 && sysconf(_SC_NPROCESSORS_ONLN) >= 2));
+}
+
 static int start(const options *o, const char *path) {
-    int threads = native_swarm_threads_for(o->threads, o->robots);
+    int on_own = physics_thread(o);
+    int threads = native_swarm_threads_for(on_own && o->threads >= 2 ? o->threads - 1 : o->threads, o->robots);
     native_copy *copies = calloc((size_t)threads, sizeof *copies);
     if (copies == NULL || native_load(path, threads, copies) != 0) return -1;
     nominal_hz = copies[0].entry.cpu_hz;
@@ -177,7 +189,7 @@ static int start(const options *o, const char *path) {
     for (int i = 0; i < o->robots; i++) configure(i, o);
     if (o->world != NULL) {
         positions = malloc((size_t)o->robots * 2 * sizeof *positions);
-        if (positions == NULL || world_run_start(o->robots, o, &native_robots, nominal_hz) != 0) return -1;
+        if (positions == NULL || world_run_start(o->robots, o, &native_robots, nominal_hz, on_own) != 0) return -1;
     } else {
         native_air_place(placement_distance_of, (void *)&o->place, NULL);
     }

@@ -8,8 +8,9 @@
  * while it was not running - another robot's stray pointer - is found and
  * reported, never silently run. Stacks sit apart from images, with guard
  * pages between robots. A robot asleep past the window's end, with no
- * frame arriving before it, is not run at all: a sleeping swarm costs a
- * comparison per robot per window. */
+ * frame arriving before it, is not run at all: each robot's next wake is
+ * kept in one small array, so a sleeping swarm costs a comparison per
+ * robot per window, and the next robot that runs is known ahead. */
 #include "native/native_swarm.h"
 
 #include <stdio.h>
@@ -32,32 +33,72 @@ static int n_robots;
 static int *loaded;           /* per copy: whose image it holds (-1: the pristine one) */
 static uint64_t window_end;   /* nominal cycles */
 static uint32_t nominal;
+/* When each robot runs next: in the first window whose end (its own
+ * cycles) reaches wake (UINT64_MAX: it has stopped); and where its stack
+ * resumes, fetched ahead of it. */
+typedef struct wake_time {
+    uint64_t wake;
+    const char *resume_sp;
+    uint32_t hz;
+} wake_time;
+static wake_time *schedule;
+static int *running;          /* per thread: its robots that have not stopped */
+/* The robots that ran in a window (the only ones whose logs hold
+ * anything): each thread notes its own, once each. */
+typedef struct index_list {
+    int *index;
+    unsigned n, room;
+} index_list;
+static index_list *ran, ran_all;
+static unsigned *taken; /* merging them: how far into each */
+static uint8_t *has_run;
 
 native_robot *native_swarm_robot(int index) { return &robots[index]; }
 
-/* Word by word in four lanes (they do not wait for each other's
- * multiplies): it runs twice per switch of robots. */
-static uint64_t image_sum(const uint8_t *bytes, size_t n) {
-    uint64_t lane[4] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull, 0x27D4EB2F165667C5ull};
-    uint64_t w[4];
-    size_t i = 0;
-    for (; i + 32 <= n; i += 32) {
-        memcpy(w, bytes + i, 32);
-        for (int k = 0; k < 4; k++) lane[k] = (lane[k] ^ w[k]) * 0x100000001B3ull;
+static uint64_t swap_halves(uint64_t x) { return x << 32 | x >> 32; }
+
+static uint64_t word_at(const uint8_t *p) {
+    uint64_t w;
+    memcpy(&w, p, sizeof w);
+    return w;
+}
+
+/* dst = src (n bytes), and what they sum to. It runs twice per switch of
+ * robots, about a hundred times a robot a simulated second in a packed
+ * swarm: four lanes of word sums and sums of those (Fletcher's pair: a
+ * changed word changes the first, words moved or swapped the second),
+ * only additions, so no lane waits on a multiply (a multiply a word cost
+ * 15% of a thousand robots' run). */
+
+static uint64_t copy_summed(uint8_t *restrict dst, const uint8_t *restrict src, size_t n) {
+    uint64_t a0 = 0, a1 = 0, a2 = 0, a3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0;
+    size_t whole = n / 32 * 32;
+    memcpy(dst, src, n);
+    for (size_t i = 0; i < whole; i += 32) {
+        b0 += a0 += word_at(src + i);
+        b1 += a1 += word_at(src + i + 8);
+        b2 += a2 += word_at(src + i + 16);
+        b3 += a3 += word_at(src + i + 24);
     }
-    uint64_t h = lane[0] ^ (lane[1] << 1) ^ (lane[2] << 2) ^ (lane[3] << 3);
-    for (; i < n; i++) h = (h ^ bytes[i]) * 0x100000001B3ull;
+    uint8_t last[32] = {0}; /* the last bytes, zero-padded */
+    memcpy(last, src + whole, n - whole);
+    b0 += a0 += word_at(last);
+    b1 += a1 += word_at(last + 8);
+    b2 += a2 += word_at(last + 16);
+    b3 += a3 += word_at(last + 24);
+    uint64_t h = (a0 ^ swap_halves(b0)) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ a1 ^ swap_halves(b1)) * 0xC2B2AE3D27D4EB4Full;
+    h = (h ^ a2 ^ swap_halves(b2)) * 0x165667B19E3779F9ull;
+    h = (h ^ a3 ^ swap_halves(b3)) * 0x27D4EB2F165667C5ull;
     return h ^ (h >> 29);
 }
 
 static void save(native_robot *r, const native_copy *c) {
-    memcpy(r->image, c->image, c->image_bytes);
-    r->image_sum = image_sum(r->image, c->image_bytes);
+    r->image_sum = copy_summed(r->image, c->image, c->image_bytes);
 }
 
 static void restore(native_robot *r, native_copy *c) {
-    if (image_sum(r->image, c->image_bytes) != r->image_sum) r->image_changed = 1;
-    memcpy(c->image, r->image, c->image_bytes);
+    if (copy_summed(c->image, r->image, c->image_bytes) != r->image_sum) r->image_changed = 1;
 }
 
 /* Robot i's image into its copy, the one there saved first. */
@@ -119,27 +160,24 @@ static void boot(native_robot *r, native_copy *c, uint64_t now) {
     c->entry.boot(r->io, r->main_stack, c->entry.main_stack_bytes, r->pool, now);
 }
 
-/* Asleep past the window with no frame coming before its end; or ahead of
- * it: a robot that spends time with interrupts masked (receiving or
- * sending a frame) runs on past the window's end, as nothing reaches it
- * until then. */
-static int dozing(const native_robot *r, uint64_t own_end) {
-    const native_io *io = r->io;
-    if (io->now >= own_end) return 1;
-    if (io->asleep_until == 0 || io->asleep_until <= own_end) return 0;
-    return io->inbox_count == 0 || io->inbox[io->inbox_head].start > own_end;
+/* The first end of a window a robot runs in: one past its clock (a robot
+ * that spends time with interrupts masked, receiving or sending a frame,
+ * runs on past the window's end, as nothing reaches it until then); if it
+ * is asleep, not before it wakes or its next frame's first pulse. */
+static uint64_t wake_of(const native_io *io) {
+    if (io->state != NATIVE_RUNNING) return UINT64_MAX;
+    uint64_t w = io->asleep_until;
+    if (w != 0 && io->inbox_count != 0 && io->inbox[io->inbox_head].start < w) w = io->inbox[io->inbox_head].start;
+    return w > io->now + 1 ? w : io->now + 1;
 }
+
+void native_swarm_woken(int index) { schedule[index].wake = wake_of(robots[index].io); }
 
 /* The robots waiting for carrier sense: each thread notes its own as they
  * ask (asking[t]), the main thread the ones it runs on (asking[0]). */
-typedef struct asker_list {
-    int *index;
-    unsigned n, room;
-} asker_list;
-static asker_list *asking;
+static index_list *asking;
 
-static void note_asking(int t, int i) {
-    asker_list *l = &asking[t];
+static void note(index_list *l, int i) {
     l->index = grow(l->index, &l->room, l->n + 1, sizeof *l->index);
     l->index[l->n++] = i;
 }
@@ -147,6 +185,10 @@ static void note_asking(int t, int i) {
 static void run_robot(int t, int i, uint64_t own_end) {
     native_robot *r = &robots[i];
     native_copy *c = load(i);
+    if (!has_run[i]) {
+        has_run[i] = 1;
+        note(&ran[t], i);
+    }
     for (;;) {
         c->entry.run(own_end);
         take_outbound(r);
@@ -155,38 +197,49 @@ static void run_robot(int t, int i, uint64_t own_end) {
             continue;
         }
         if (r->io->transmit == NATIVE_TRANSMIT_ASKED) {
-            note_asking(t, i);
-            return;
+            note(&asking[t], i);
+            break;
         }
-        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0) return;
+        if (r->io->state != NATIVE_RUNNING || r->io->now >= own_end || r->io->asleep_until != 0) break;
     }
+    schedule[i].wake = wake_of(r->io);
+    schedule[i].resume_sp = r->io->resume_sp;
+    if (r->io->state != NATIVE_RUNNING) running[i % n_threads]--;
 }
 
-static uint64_t own_end_of(const native_robot *r) {
-    return r->hz == nominal ? window_end : window_end * r->hz / nominal;
+static uint64_t own_end_of(uint32_t hz) { return hz == nominal ? window_end : window_end * hz / nominal; }
+
+static int due(int i) { return schedule[i].wake <= own_end_of(schedule[i].hz); }
+
+/* Thread t's first robot from i on that runs in this window; n_robots:
+ * none. */
+static int next_due(int i) {
+    while (i < n_robots && !due(i)) i += n_threads;
+    return i;
 }
 
-/* A swarm's images are beyond the caches: the thread's next robot's image
- * is fetched while robot i runs (unless it dozes), and the state saying
- * whether the one after it runs at all. */
-static void prefetch_next(int i) {
-    if (i + 2 * n_threads < n_robots) __builtin_prefetch(robots[i + 2 * n_threads].io);
-    if (i + n_threads >= n_robots) return;
-    const native_robot *next = &robots[i + n_threads];
-    if (dozing(next, own_end_of(next))) return;
-    size_t bytes = copies[i % n_threads].image_bytes; /* the next one's copy too */
-    for (size_t at = 0; at < bytes; at += 64) __builtin_prefetch(next->image + at);
+/* How deep into its stack a robot's resumption reads: the switch frame
+ * and the frames of the calls that yielded. */
+#define RESUME_BYTES 512
+
+/* A swarm's images and stacks are beyond the caches: the image of the
+ * robot that runs next, the top of the stack it resumes on and the state
+ * it starts from are fetched while the one before it runs. */
+static void prefetch(int i, size_t image_bytes) {
+    const native_robot *r = &robots[i];
+    for (size_t at = 0; at < image_bytes; at += 64) __builtin_prefetch(r->image + at);
+    const char *sp = schedule[i].resume_sp;
+    for (size_t at = 0; sp != NULL && at < RESUME_BYTES; at += 64) __builtin_prefetch(sp + at);
+    __builtin_prefetch(&r->io->inbox_count);
 }
 
 static int run_share(int t) {
-    int all_stopped = 1;
-    for (int i = t; i < n_robots; i += n_threads) {
-        native_robot *r = &robots[i];
-        prefetch_next(i);
-        if (r->io->state != NATIVE_RUNNING) continue;
-        all_stopped = 0;
-        uint64_t own_end = own_end_of(r);
-        if (!dozing(r, own_end)) run_robot(t, i, own_end);
+    int all_stopped = running[t] == 0; /* as the window began */
+    for (int i = next_due(t); i < n_robots;) {
+        int after = next_due(i + n_threads);
+        if (after < n_robots) prefetch(after, copies[t].image_bytes);
+        run_robot(t, i, own_end_of(schedule[i].hz));
+        i = after;
     }
     return all_stopped;
 }
@@ -194,6 +247,19 @@ static int run_share(int t) {
 static size_t page_round(size_t n) {
     size_t page = (size_t)sysconf(_SC_PAGESIZE);
     return (n + page - 1) / page * page;
+}
+
+/* n items of size bytes each, cache-line apart, in memory the kernel may
+ * back with huge pages: a robot's run touches its image and its native_io,
+ * and a thousand robots' small pages are more than the TLB holds (measured:
+ * the misses cost as much as copying the images). */
+static void *arena(size_t n, size_t size, size_t *stride) {
+    *stride = (size + 63) / 64 * 64;
+    size_t bytes = page_round(n * *stride);
+    void *p = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+    if (p == MAP_FAILED) return NULL;
+    madvise(p, bytes, MADV_HUGEPAGE); /* a hint: without it, small pages */
+    return p;
 }
 
 /* [guard][pool][guard][main stack]: an overflow of either faults. */
@@ -214,16 +280,27 @@ int native_swarm_create(native_copy *all_copies, int n_copies, int n) {
     n_threads = n_copies;
     n_robots = n;
     robots = calloc((size_t)n, sizeof *robots);
+    schedule = calloc((size_t)n, sizeof *schedule);
     loaded = malloc((size_t)n_copies * sizeof *loaded);
+    running = calloc((size_t)n_copies, sizeof *running);
     asking = calloc((size_t)n_copies, sizeof *asking);
-    if (robots == NULL || loaded == NULL || asking == NULL) return -1;
+    ran = calloc((size_t)n_copies, sizeof *ran);
+    taken = calloc((size_t)n_copies, sizeof *taken);
+    has_run = calloc((size_t)n, 1);
+    if (robots == NULL || schedule == NULL || loaded == NULL || running == NULL || asking == NULL ||
+        ran == NULL || taken == NULL || has_run == NULL)
+        return -1;
     for (int t = 0; t < n_copies; t++) loaded[t] = -1;
+    size_t io_stride, image_stride;
+    uint8_t *ios = arena((size_t)n, sizeof(native_io), &io_stride);
+    uint8_t *images = arena((size_t)n, copies[0].image_bytes, &image_stride);
+    if (ios == NULL || images == NULL) return -1;
     for (int i = 0; i < n; i++) {
         native_robot *r = &robots[i];
         const native_copy *c = &copies[i % n_copies];
-        r->io = calloc(1, sizeof *r->io);
-        r->image = malloc(c->image_bytes);
-        if (r->io == NULL || r->image == NULL || allocate_stacks(r, &c->entry) != 0) {
+        r->io = (native_io *)(ios + (size_t)i * io_stride); /* zeroed, as mapped */
+        r->image = images + (size_t)i * image_stride;
+        if (allocate_stacks(r, &c->entry) != 0) {
             fprintf(stderr, "openswarm-sim: out of memory for native robot %d of %d\n", i, n);
             return -1;
         }
@@ -236,6 +313,8 @@ void native_swarm_boot(void) {
         native_copy *c = &copies[i % n_threads];
         boot(&robots[i], c, 0);
         save(&robots[i], c);
+        schedule[i] = (wake_time){wake_of(robots[i].io), NULL, robots[i].hz};
+        running[i % n_threads]++;
     }
     window_workers_begin(n_threads, run_share);
 }
@@ -278,9 +357,29 @@ int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn cle
             r->io->transmit = NATIVE_TRANSMIT_BUSY;
             r->log.n_sent--; /* it never went out */
         }
-        run_robot(0, i, own_end_of(r));
+        run_robot(0, i, own_end_of(r->hz));
     }
     return all_stopped;
+}
+
+/* Each thread's list is in index order (a robot that asked to transmit
+ * runs again after the others, but was noted as it first ran): merged. */
+const int *native_swarm_ran(unsigned *n) {
+    ran_all.n = 0;
+    for (int t = 0; t < n_threads; t++) taken[t] = 0;
+    for (;;) {
+        int from = -1;
+        for (int t = 0; t < n_threads; t++)
+            if (taken[t] < ran[t].n && (from < 0 || ran[t].index[taken[t]] < ran[from].index[taken[from]]))
+                from = t;
+        if (from < 0) break;
+        int i = ran[from].index[taken[from]++];
+        has_run[i] = 0;
+        note(&ran_all, i);
+    }
+    for (int t = 0; t < n_threads; t++) ran[t].n = 0;
+    *n = ran_all.n;
+    return ran_all.index;
 }
 
 void native_swarm_end(void) { window_workers_end(); }

@@ -58,6 +58,11 @@ typedef int (*native_carrier_fn)(int index, uint64_t at);
  * stopped. */
 int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn clear);
 void native_swarm_end(void);
+/* The robots that ran in the last window, in index order, n of them: the
+ * only ones whose logs hold anything. Then none, until the next window. */
+const int *native_swarm_ran(unsigned *n);
+/* Robot index's inbox changed between windows: it may run sooner. */
+void native_swarm_woken(int index);
 /* The log emptied (its room kept). */
 void native_log_clear(native_log *log);
 

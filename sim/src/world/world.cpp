@@ -57,6 +57,10 @@ struct world {
     const world_spec *spec = nullptr;
     b2World physics{b2Vec2(0.0f, 0.0f)};
     b2Body *ground = nullptr;
+    /* The same walls and obstacles alone, for IR's rays: they are cast
+     * while the physics steps on another thread (world_stepper.c), and a
+     * static shape answers a ray the same in either world. */
+    b2World walls{b2Vec2(0.0f, 0.0f)};
     std::vector<Robot> robots;
     std::vector<b2Body *> objects;
 };
@@ -75,13 +79,13 @@ void add_outline(b2Body *ground, const world_point *v, int n) {
     }
 }
 
-void build_walls(world &w) {
+b2Body *build_walls(b2World &in, const world_spec &s) {
     b2BodyDef def;
-    w.ground = w.physics.CreateBody(&def);
-    const world_spec &s = *w.spec;
+    b2Body *ground = in.CreateBody(&def);
     world_point arena[4] = {{0, 0}, {s.width_mm, 0}, {s.width_mm, s.height_mm}, {0, s.height_mm}};
-    add_outline(w.ground, arena, 4);
-    for (int i = 0; i < s.n_obstacles; i++) add_outline(w.ground, s.obstacles[i].v, s.obstacles[i].n);
+    add_outline(ground, arena, 4);
+    for (int i = 0; i < s.n_obstacles; i++) add_outline(ground, s.obstacles[i].v, s.obstacles[i].n);
+    return ground;
 }
 
 b2Body *add_disc(world &w, world_point at, double angle_deg, double radius_mm, double mass_kg) {
@@ -173,13 +177,13 @@ class NearestOnRay : public b2RayCastCallback {
     const b2Body *self_;
 };
 
-/* Stops at the first fixed shape on the ray: robots and objects are low
- * enough for IR to pass over or around, walls and obstacles are not. */
+/* Stops at the first shape on the ray in the world of walls alone: robots
+ * and objects are low enough for IR to pass over or around, walls and
+ * obstacles are not. */
 class WallOnRay : public b2RayCastCallback {
   public:
     bool hit = false;
-    float ReportFixture(b2Fixture *fixture, const b2Vec2 &, const b2Vec2 &, float) override {
-        if (fixture->GetBody()->GetType() != b2_staticBody) return -1.0f; /* ignore it */
+    float ReportFixture(b2Fixture *, const b2Vec2 &, const b2Vec2 &, float) override {
         hit = true;
         return 0.0f; /* one is enough */
     }
@@ -192,7 +196,8 @@ extern "C" {
 world *world_create(const world_spec *spec) {
     auto w = std::make_unique<world>();
     w->spec = spec;
-    build_walls(*w);
+    w->ground = build_walls(w->physics, *spec);
+    build_walls(w->walls, *spec);
     for (int k = 0; k < spec->n_objects; k++) add_object(*w, spec->objects[k]);
     uint64_t seed = spec->seed;
     w->robots.resize(size_t(spec->n_robots));
@@ -258,7 +263,7 @@ int world_blocks_ir(const world *w, double ax_mm, double ay_mm, double bx_mm, do
     b2Vec2 a = to_units({ax_mm, ay_mm}), b = to_units({bx_mm, by_mm});
     if ((b - a).LengthSquared() == 0.0f) return 0;
     WallOnRay ray;
-    w->physics.RayCast(&ray, a, b);
+    w->walls.RayCast(&ray, a, b);
     return ray.hit;
 }
 

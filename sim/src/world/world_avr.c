@@ -31,5 +31,5 @@ void world_avr_robot_noise(robot *r, int index) {
 int world_avr_start(robot *all, int n, const options *o, uint32_t nominal_hz) {
     robots = all;
     for (int i = 0; i < n; i++) all[i].trace.on_motors = motors_changed;
-    return world_run_start(n, o, &avr_robots, nominal_hz);
+    return world_run_start(n, o, &avr_robots, nominal_hz, 0);
 }

@@ -1,9 +1,12 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* A run in a world (world_run.h). The physics steps every WORLD_STEP_S of
- * simulated time, between two lockstep windows; the firmware's motor
- * changes reach it at their exact time, so a 15 ms spin-up pulse counts
- * as 15 ms. After each step the IR channel learns the new distances and
- * the light sensors the new light. */
+ * simulated time, begun when the robots' lockstep windows reach it; the
+ * firmware's motor changes reach it at their exact time, so a 15 ms
+ * spin-up pulse counts as 15 ms. The step runs while the robots go on to
+ * the next step's time (world_stepper.h); then the IR channel learns the
+ * distances and the light sensors the light it left: what the robots
+ * sense is one step (10 ms, 0.1 mm of a Kilobot's walk) older than their
+ * clock, and a sample shows the world as it was at its own time. */
 #include "world/world_run.h"
 
 #include <math.h>
@@ -13,6 +16,7 @@
 #include "output/output.h"
 #include "world/epuck_run.h"
 #include "world/world.h"
+#include "world/world_stepper.h"
 
 #define ROOM_TEMPERATURE_MV 314   /* the ATmega328P's sensor at 25 C (datasheet) */
 #define LIGHT_REFERENCE_MM 100.0 /* a source adds its intensity at this distance */
@@ -24,6 +28,9 @@ static world *physics;
 static const world_robots *robots; /* how to reach them */
 static int n_robots;
 static avr_cycle_count_t step_cycles, next_step;
+static int step_begun;   /* a step is begun that the robots do not see yet */
+static double step_t;    /* its time */
+static int sample_due;   /* at its time: the LEDs are noted, the rest follows it */
 static double next_sample_s;
 static int recording;
 static int sample_failed; /* a sample could not be written (reported) */
@@ -183,8 +190,8 @@ void world_robot_identity(int index, int *uid, int calibration[4]) {
 }
 
 void world_run_motors(int index, uint8_t left, uint8_t right, double t) {
-    world_motor_duty(physics, index, 0, left, t);
-    world_motor_duty(physics, index, 1, right, t);
+    world_stepper_motor(index, 0, left, t);
+    world_stepper_motor(index, 1, right, t);
 }
 
 /* As the IR channel sees it: an obstacle between two robots in range puts
@@ -251,7 +258,8 @@ static int collect_links(void) {
     return n_links;
 }
 
-static int sample(double t) {
+/* The LEDs as they show now, for the sample of now. */
+static void note_leds(void) {
     for (int i = 0; i < n_robots; i++) {
         uint8_t rgb[3];
         robots->led(i, rgb);
@@ -259,6 +267,10 @@ static int sample(double t) {
         poses[i].led_g = rgb[1];
         poses[i].led_b = rgb[2];
     }
+}
+
+/* Where everything was at t (the LEDs noted then). */
+static int sample(double t) {
     for (int k = 0; k < spec.n_objects; k++)
         world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
     int n_links = collect_links();
@@ -266,7 +278,8 @@ static int sample(double t) {
     return output_sample_add(&s);
 }
 
-int world_run_start(int n, const options *o, const world_robots *all, uint32_t nominal_hz) {
+int world_run_start(int n, const options *o, const world_robots *all, uint32_t nominal_hz,
+                    int physics_thread) {
     robots = all;
     n_robots = n;
     ir_range_mm = o->ir_range_mm;
@@ -279,25 +292,43 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
      * may run fast or slow). */
     step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * nominal_hz);
     next_step = step_cycles;
+    step_begun = sample_due = 0;
+    world_stepper_start(physics, n, physics_thread);
     observe();
     if (o->out_dir == NULL) return 0;
     output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet};
     if (output_open(&out, &spec) != 0) return -1;
     recording = 1;
     next_sample_s = spec.sample_period_s;
+    note_leds();
     return sample(0.0);
+}
+
+/* The step begun is over: the robots sense where it left them, and its
+ * sample is taken. */
+static void step_over(void) {
+    world_stepper_wait();
+    if (!step_begun) return;
+    step_begun = 0;
+    observe();
+    if (!sample_due) return;
+    sample_due = 0;
+    if (sample(step_t) != 0) sample_failed = 1;
 }
 
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
     while (end >= next_step) {
         double t = (double)next_step / nominal_hz;
-        world_step(physics, t);
-        next_step += step_cycles;
-        observe();
+        step_over();
         if (recording && t + 1e-9 >= next_sample_s) {
-            if (sample(t) != 0) sample_failed = 1;
+            note_leds();
+            sample_due = 1;
             next_sample_s += spec.sample_period_s;
         }
+        world_stepper_begin(t);
+        step_begun = 1;
+        step_t = t;
+        next_step += step_cycles;
     }
 }
 
@@ -318,6 +349,8 @@ int world_run_epucks(const options *o) {
 }
 
 int world_run_finish(void) {
+    step_over();
+    world_stepper_stop();
     int status = recording ? output_close() : 0;
     if (sample_failed) status = -1;
     world_destroy(physics);

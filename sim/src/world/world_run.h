@@ -26,9 +26,11 @@ typedef struct world_robots {
     int (*links)(int sender, int *receivers, int room); /* whom sender reaches now */
 } world_robots;
 /* The robots are loaded: place them on the IR channel, open the outputs;
- * -1 after a message. */
-int world_run_start(int n, const options *o, const world_robots *robots, uint32_t nominal_hz);
-/* Where robot index is now (as of the last physics step). */
+ * -1 after a message. physics_thread: step the physics on a thread of its
+ * own (world_stepper.h: the same results either way). */
+int world_run_start(int n, const options *o, const world_robots *robots, uint32_t nominal_hz,
+                    int physics_thread);
+/* Where robot index is now (as the robots see it: world_run.c). */
 void world_run_position(int index, double *x_mm, double *y_mm);
 /* Robot index set its motors' duties at time t (s). */
 void world_run_motors(int index, uint8_t left, uint8_t right, double t);

@@ -30,7 +30,7 @@ extern "C" {
 
 /* Changes whenever native_io changes shape: the simulator refuses a robot
  * built against another. */
-#define NATIVE_ROBOT_ABI 2
+#define NATIVE_ROBOT_ABI 3
 
 #define NATIVE_FRAME_BYTES 12
 #define NATIVE_EEPROM_BYTES 1024
@@ -117,6 +117,7 @@ typedef struct native_io {
     uint8_t status;                     /* NATIVE_STOPPED's exit code */
     uint64_t now;                       /* its clock after the window */
     uint64_t asleep_until;              /* 0: busy; else idle until this (UINT64_MAX: no interrupt due) */
+    const void *resume_sp;              /* where its stack resumes: the simulator fetches it ahead */
     uint64_t frames_lost_inbox_full;    /* frames the inbox had no room for (the simulator counts) */
     char thread_name[NATIVE_THREAD_NAMES][24]; /* by pid slot, from sim_thread_name */
 } native_io;

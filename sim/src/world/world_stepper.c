@@ -1,0 +1,120 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* The physics beside the robots (world_stepper.h). A step of a thousand
+ * packed robots costs about as much as the robots' own work between two
+ * steps: on a thread of its own it costs the run nothing it waits for.
+ * Handing a step over is rare (100 times a simulated second): a mutex and
+ * a condition, and the thread sleeps between steps. */
+#include "world/world_stepper.h"
+
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "sim.h"
+
+typedef struct motor_change {
+    double t;
+    uint8_t side, duty;
+} motor_change;
+
+typedef struct motor_changes {
+    motor_change *at;
+    unsigned n, room;
+} motor_changes;
+
+static world *physics;
+static int n_robots;
+static motor_changes *kept; /* by robot: each robot's own thread appends */
+static int threaded;
+static pthread_t thread;
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_cond_t turn = PTHREAD_COND_INITIALIZER;
+static int stepping; /* a step is begun and not over */
+static int stopping;
+static double step_end;
+
+static void *step_on_thread(void *unused) {
+    (void)unused;
+    pthread_mutex_lock(&lock);
+    for (;;) {
+        while (!stepping && !stopping) pthread_cond_wait(&turn, &lock);
+        if (!stepping) break;
+        double t = step_end;
+        pthread_mutex_unlock(&lock);
+        world_step(physics, t);
+        pthread_mutex_lock(&lock);
+        stepping = 0;
+        pthread_cond_broadcast(&turn);
+    }
+    pthread_mutex_unlock(&lock);
+    return NULL;
+}
+
+void world_stepper_start(world *w, int n, int on_thread) {
+    physics = w;
+    n_robots = n;
+    kept = calloc(n > 0 ? (size_t)n : 1, sizeof *kept);
+    if (kept == NULL) {
+        fprintf(stderr, "openswarm-sim: out of memory for %d robots' motors\n", n);
+        exit(EXIT_CRASH);
+    }
+    threaded = on_thread;
+    stepping = stopping = 0;
+    if (threaded && pthread_create(&thread, NULL, step_on_thread, NULL) != 0) {
+        fprintf(stderr, "openswarm-sim: cannot start the physics' thread; give --threads 1\n");
+        exit(EXIT_CRASH);
+    }
+}
+
+void world_stepper_motor(int index, int side, uint8_t duty, double t) {
+    motor_changes *c = &kept[index];
+    if (c->n == c->room) {
+        c->room = c->room ? 2 * c->room : 8;
+        c->at = realloc(c->at, c->room * sizeof *c->at);
+        if (c->at == NULL) {
+            fprintf(stderr, "openswarm-sim: out of memory for robot %d's motors\n", index);
+            exit(EXIT_CRASH);
+        }
+    }
+    c->at[c->n++] = (motor_change){t, (uint8_t)side, duty};
+}
+
+void world_stepper_begin(double t) {
+    world_stepper_wait();
+    for (int i = 0; i < n_robots; i++) {
+        motor_changes *c = &kept[i];
+        for (unsigned k = 0; k < c->n; k++) world_motor_duty(physics, i, c->at[k].side, c->at[k].duty, c->at[k].t);
+        c->n = 0;
+    }
+    if (!threaded) {
+        world_step(physics, t);
+        return;
+    }
+    pthread_mutex_lock(&lock);
+    step_end = t;
+    stepping = 1;
+    pthread_cond_broadcast(&turn);
+    pthread_mutex_unlock(&lock);
+}
+
+void world_stepper_wait(void) {
+    if (!threaded) return;
+    pthread_mutex_lock(&lock);
+    while (stepping) pthread_cond_wait(&turn, &lock);
+    pthread_mutex_unlock(&lock);
+}
+
+void world_stepper_stop(void) {
+    if (threaded) {
+        world_stepper_wait();
+        pthread_mutex_lock(&lock);
+        stopping = 1;
+        pthread_cond_broadcast(&turn);
+        pthread_mutex_unlock(&lock);
+        pthread_join(thread, NULL);
+        threaded = 0;
+    }
+    for (int i = 0; i < n_robots; i++) free(kept[i].at);
+    free(kept);
+    kept = NULL;
+}
