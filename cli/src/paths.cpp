@@ -60,4 +60,10 @@ std::optional<fs::path> find_program(const std::string &name) {
     return std::nullopt;
 }
 
+std::string simulator_problem(const Paths &paths) {
+    if (!paths.simulator.empty()) return "";
+    return "openswarm-sim was not found next to this tool; build it with "
+           "`cmake --build <openswarm>/build --target openswarm-sim`";
+}
+
 }  // namespace openswarm

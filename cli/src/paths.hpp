@@ -18,6 +18,10 @@ struct Paths {
 // Throws std::runtime_error saying what is missing and what to do.
 Paths locate_paths(const char *argv0);
 
+// Why the tool cannot run its simulator ("" when openswarm-sim was found):
+// what to build.
+std::string simulator_problem(const Paths &paths);
+
 // The full path of a program on PATH, if any.
 std::optional<std::filesystem::path> find_program(const std::string &name);
 

@@ -115,6 +115,9 @@ expect 2 'bad.json: "grid.robots\[0\].poses\[5\].x_mm": the world.s robots\[0\].
     "$openswarm" experiment bad.json --out x
 bad 's/"duration_s": \[2, 3\]/"seed": [1, 2]/'
 expect 2 '"grid.seed": the seed is not swept: each trial t of a point runs with "seed" \+ t' "$openswarm" experiment bad.json --out x
+mkdir -p broken && echo '{"name": 1, "port": "kilobot"}' >broken/openswarm.json
+bad 's/"app": "app"/"app": "broken"/'
+expect 2 'broken/openswarm.json: "name": expected the app.s name, found number 1' "$openswarm" experiment bad.json --out x
 bad 's/"trials": 2/"trails": 2/'
 expect 2 'bad.json: "trails": unknown key; expected one of .* \(did you mean "trials"\?\)' "$openswarm" experiment bad.json --out x
 bad 's/\[2, 3\]/[2, 2]/'

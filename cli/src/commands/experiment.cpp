@@ -260,9 +260,8 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
         return EXIT_USAGE;
     }
     if (!programs_present(e)) return EXIT_USAGE;
-    if (paths.simulator.empty()) {
-        report("openswarm-sim was not found next to this tool; build it with "
-               "`cmake --build <openswarm>/build --target openswarm-sim`");
+    if (std::string why = simulator_problem(paths); !why.empty()) {
+        report(why);
         return EXIT_FAILED;
     }
     fs::path file(o.file);

@@ -255,9 +255,8 @@ int run_app(RunOptions o, const Paths &paths) {
     auto built = build_app(paths, o.dir, o.port, Progress::brief,
                            o.debug ? Variant::debug : o.native ? Variant::native : Variant::release);
     if (!built) return exit_code;
-    if (paths.simulator.empty()) {
-        report("openswarm-sim was not found next to this tool; build it with "
-               "`cmake --build <openswarm>/build --target openswarm-sim`");
+    if (std::string why = simulator_problem(paths); !why.empty()) {
+        report(why);
         return EXIT_FAILED;
     }
     const bool world = !o.world.empty();

@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../last_lines.hpp"
 #include "metrics_error.hpp"
 
 namespace fs = std::filesystem;
@@ -42,11 +43,8 @@ std::string trim(const std::string &s) {
 
 // The last lines of text, each indented, at most lines of them.
 std::string tail(const std::string &text, size_t lines) {
-    std::vector<std::string> all;
-    std::istringstream in(text);
-    for (std::string l; std::getline(in, l);) all.push_back(l);
     std::string out;
-    for (size_t k = all.size() > lines ? all.size() - lines : 0; k < all.size(); k++) out += "\n    " + all[k];
+    for (const std::string &line : last_lines(text, lines)) out += "\n    " + line;
     return out;
 }
 

@@ -29,7 +29,7 @@ std::map<size_t, PointCurve> curves_of(const std::vector<SweepTrial> &trials, co
     std::map<size_t, std::vector<std::vector<std::pair<double, double>>>> runs;
     for (const SweepTrial &t : trials) {
         if (!t.failure.empty()) continue;
-        for (const TrialSeries &series : read_trial_metrics(t.dir))
+        for (const TrialSeries &series : t.series)
             if (series.metric == metric && !series.values.empty()) runs[t.point].push_back(series.values);
     }
     std::map<size_t, PointCurve> curves;
@@ -205,7 +205,7 @@ bool write_sweep_plots(const Sweep &s, const std::vector<SweepTrial> &trials, co
     std::vector<std::string> metrics;
     for (const SweepTrial &t : trials) {
         if (!t.failure.empty()) continue;
-        for (const TrialSeries &series : read_trial_metrics(t.dir))
+        for (const TrialSeries &series : t.series)
             if (std::find(metrics.begin(), metrics.end(), series.metric) == metrics.end())
                 metrics.push_back(series.metric);
     }

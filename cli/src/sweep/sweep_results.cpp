@@ -59,7 +59,7 @@ Finals finals_of(const std::vector<SweepTrial> &trials) {
     Finals f;
     for (const SweepTrial &t : trials) {
         if (!t.failure.empty()) continue;
-        for (const TrialSeries &series : read_trial_metrics(t.dir)) {
+        for (const TrialSeries &series : t.series) {
             if (series.values.empty()) continue;
             f.at[t.point][series.metric].push_back(series.values.back().second);
             if (std::find(f.order.begin(), f.order.end(), series.metric) == f.order.end())
@@ -94,7 +94,7 @@ bool write_sweep_results(const Sweep &s, const std::vector<SweepTrial> &trials, 
         list << key_fields(s, t) << "," << (t.pending ? "pending" : t.failure.empty() ? "done" : "failed") << ","
              << csv_field(t.failure) << "," << csv_field(folder) << "\n";
         if (!t.failure.empty()) continue;
-        for (const TrialSeries &series : read_trial_metrics(t.dir))
+        for (const TrialSeries &series : t.series)
             for (const auto &[time, value] : series.values)
                 results << key_fields(s, t) << "," << number(time) << "," << series.metric << "," << number(value)
                         << "\n";

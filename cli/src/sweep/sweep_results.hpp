@@ -1,4 +1,4 @@
-// A sweep's results, gathered from its trials' folders into tidy files:
+// A sweep's results, gathered from its trials' metrics into tidy files:
 // trials.csv (a row per trial: its point, seed, whether it ran and why
 // not), results.csv (a row per trial, time and metric) and summary.csv (a
 // row per point and metric: the trials' values at their end, mean, sd,

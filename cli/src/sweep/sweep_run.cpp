@@ -40,35 +40,40 @@ bool parse_shard(const std::string &text, size_t &k, size_t &n) {
     return false;
 }
 
-bool wants_native(const Sweep &s, size_t point) {
-    json world = point_world(s, point, 0);
-    return world.contains("fidelity") && world["fidelity"] == "native";
-}
-
-// The app built once for each fidelity its points run in; false after the
-// build said why.
+// The app built once for each fidelity its points run in (the exact
+// mode's image, the native mode's shared object), each trial given its
+// image and the image's fingerprint; false after the build said why.
 bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &trials) {
-    AppConfig config = load_app_config(s.app);
+    AppConfig config;
+    try {
+        config = load_app_config(s.app);
+    } catch (const ConfigError &err) {
+        report(err.what());
+        exit_code = EXIT_USAGE;
+        return false;
+    }
     if (config.port != "kilobot") {
         report(s.app.string() + ": a " + config.port + " app; a sweep runs Kilobot apps (the e-puck case study "
                "runs as its clustering experiment file, docs/case-study.md): give a Kilobot app's \"app\"");
         exit_code = EXIT_USAGE;
         return false;
     }
-    std::optional<BuildResult> image[2];
-    for (SweepTrial &t : trials) {
-        bool native = wants_native(s, t.point);
-        if (!image[native]) {
-            image[native] = build_app(paths, s.app, "", Progress::brief, native ? Variant::native : Variant::release);
-            if (!image[native]) return false;
-        }
-        t.firmware = image[native]->image;
+    std::vector<bool> native(s.points.size());
+    for (size_t p = 0; p < s.points.size(); p++) {
+        json world = point_world(s, p, 0);
+        native[p] = world.contains("fidelity") && world["fidelity"] == "native";
     }
+    std::optional<BuildResult> image[2];
     std::string print[2];
     for (SweepTrial &t : trials) {
-        bool native = t.firmware.extension() == ".so";
-        if (print[native].empty()) print[native] = file_fingerprint(t.firmware);
-        t.firmware_hash = print[native];
+        bool mode = native[t.point];
+        if (!image[mode]) {
+            image[mode] = build_app(paths, s.app, "", Progress::brief, mode ? Variant::native : Variant::release);
+            if (!image[mode]) return false;
+            print[mode] = file_fingerprint(image[mode]->image);
+        }
+        t.firmware = image[mode]->image;
+        t.firmware_hash = print[mode];
     }
     return true;
 }
@@ -186,9 +191,8 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
             trial.dir = out / name;
             trials.push_back(trial);
         }
-    if (paths.simulator.empty()) {
-        report("openswarm-sim was not found next to this tool; build it with "
-               "`cmake --build <openswarm>/build --target openswarm-sim`");
+    if (std::string why = simulator_problem(paths); !why.empty()) {
+        report(why);
         return EXIT_FAILED;
     }
     // Rank 0 builds first: ranks building at once would share the build folder.
@@ -223,6 +227,7 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
     size_t pending = 0, failed = 0;
     for (SweepTrial &t : trials) {
         if (!t.attempted) read_sweep_trial(t);
+        if (t.failure.empty()) t.series = read_trial_metrics(t.dir);
         pending += t.pending;
         failed += !t.pending && !t.failure.empty();
     }

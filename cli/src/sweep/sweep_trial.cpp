@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../last_lines.hpp"
 #include "../metrics/metrics_error.hpp"
 #include "../metrics/run_metrics.hpp"
 #include "../process.hpp"
@@ -31,15 +32,10 @@ std::string fingerprint(const std::string &bytes) {
 }
 
 // The last lines of what the simulator said: why it failed.
-std::string tail(const std::string &output, int lines) {
-    size_t at = output.size();
-    while (at > 0 && output[at - 1] == '\n') at--;
-    size_t end = at;
-    for (int n = 0; n < lines && at > 0; n++) {
-        at = output.rfind('\n', at - 1);
-        if (at == std::string::npos) { at = 0; break; }
-    }
-    return output.substr(at == 0 ? 0 : at + 1, end - (at == 0 ? 0 : at + 1));
+std::string tail(const std::string &output, size_t lines) {
+    std::string said;
+    for (const std::string &line : last_lines(output, lines)) said += (said.empty() ? "" : "\n") + line;
+    return said;
 }
 
 bool write_text(const fs::path &file, const std::string &text) {

@@ -14,6 +14,12 @@
 
 namespace openswarm {
 
+// One metric's swarm values over a trial: (time_s, value).
+struct TrialSeries {
+    std::string metric;
+    std::vector<std::pair<double, double>> values;
+};
+
 struct SweepTrial {
     size_t point = 0;
     int trial = 0;
@@ -28,6 +34,9 @@ struct SweepTrial {
     bool remeasured = false; // reused, and measured again: the metrics changed
     bool refused = false; // the simulator refused the world (bad input: the sweep stops)
     std::string failure;  // empty when it ran and was measured
+    // Its metrics, read once from its folder when the sweep gathers them
+    // (empty for a failed or pending trial).
+    std::vector<TrialSeries> series;
 };
 
 // A short fingerprint of a file's bytes ("" when it cannot be read).
@@ -42,10 +51,6 @@ void read_sweep_trial(SweepTrial &t);
 
 // The swarm's values over time from a trial's metrics.csv, by metric name
 // in the order they come (time_s, value).
-struct TrialSeries {
-    std::string metric;
-    std::vector<std::pair<double, double>> values;
-};
 std::vector<TrialSeries> read_trial_metrics(const std::filesystem::path &dir);
 
 }  // namespace openswarm
