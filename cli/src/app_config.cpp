@@ -12,6 +12,7 @@
 #include "json_checks.hpp"
 #include "names.hpp"
 #include "ports.hpp"
+#include "regular_file.hpp"
 #include "suggest.hpp"
 
 namespace fs = std::filesystem;
@@ -343,9 +344,10 @@ AppConfig load_app_config(const fs::path &dir) {
     AppConfig config;
     config.file = dir / "openswarm.json";
     std::error_code error;
-    if (fs::is_directory(config.file, error))
-        throw ConfigError(config.file.string() + ": a folder, not a file; the app's configuration is a JSON "
-                          "file of that name (move the folder away; `openswarm new` shows one)");
+    std::string kind = not_a_regular_file(config.file);
+    if (!kind.empty())
+        throw ConfigError(config.file.string() + ": " + kind + ", not a file; the app's configuration is a "
+                          "JSON file of that name (move it away; `openswarm new` shows one)");
     if (!fs::exists(config.file, error))
         throw ConfigError(config.file.string() +
                           ": not found; run this in an app folder, or make one with "
