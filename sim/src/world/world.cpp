@@ -56,7 +56,12 @@ uintptr_t tag(int kind, int index) { return (uintptr_t(kind) << 24) | uintptr_t(
 struct world {
     const world_spec *spec = nullptr;
     b2World physics{b2Vec2(0.0f, 0.0f)};
-    b2Body *ground = nullptr;
+    b2Body *ground = nullptr; /* the walls and obstacles */
+    /* What objects' friction joints hold on to: a static body with no
+     * shape. A joint turns off collisions between the bodies it joins
+     * (Box2D's collideConnected), so objects joined to the walls' body
+     * passed through every wall and obstacle (issue 30). */
+    b2Body *floor = nullptr;
     std::vector<Robot> robots;
     std::vector<b2Body *> objects;
 };
@@ -78,6 +83,7 @@ void add_outline(b2Body *ground, const world_point *v, int n) {
 void build_walls(world &w) {
     b2BodyDef def;
     w.ground = w.physics.CreateBody(&def);
+    w.floor = w.physics.CreateBody(&def);
     const world_spec &s = *w.spec;
     world_point arena[4] = {{0, 0}, {s.width_mm, 0}, {s.width_mm, s.height_mm}, {0, s.height_mm}};
     add_outline(w.ground, arena, 4);
@@ -109,7 +115,7 @@ void add_object(world &w, const world_object &o) {
     b2Body *body = add_disc(w, o.at, 0.0, o.radius_mm, mass);
     body->GetUserData().pointer = tag(TAG_OBJECT, int(w.objects.size()));
     b2FrictionJointDef joint;
-    joint.Initialize(body, w.ground, body->GetPosition());
+    joint.Initialize(body, w.floor, body->GetPosition());
     joint.maxForce = float(o.friction * mass * GRAVITY);
     joint.maxTorque = float(o.friction * mass * GRAVITY * o.radius_mm / MM_PER_UNIT / 2.0);
     w.physics.CreateJoint(&joint);
