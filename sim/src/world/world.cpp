@@ -16,8 +16,11 @@
 
 #include <box2d/box2d.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -68,9 +71,22 @@ struct world {
 
 namespace {
 
-/* A fixed outline: two-sided edges, so nothing passes from either side. */
-void add_outline(b2Body *ground, const world_point *v, int n) {
+/* An edge by its two ends, the lower first: the same either way round. */
+using EdgeKey = std::array<double, 4>;
+EdgeKey edge_key(world_point a, world_point b) {
+    if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
+    return {a.x, a.y, b.x, b.y};
+}
+
+/* A fixed outline: two-sided edges, so nothing passes from either side.
+ * An edge already there (an obstacle given twice, two sharing a side) is
+ * not added again: Box2D's broad phase pairs every two overlapping
+ * fixtures of the walls' body when the world starts, before it drops the
+ * pairs of one body, so N copies of one obstacle cost N^2 pairs (10000
+ * copies: 2.7 GB, then a crash in b2BroadPhase; issue 30). */
+void add_outline(b2Body *ground, const world_point *v, int n, std::set<EdgeKey> &added) {
     for (int i = 0; i < n; i++) {
+        if (!added.insert(edge_key(v[i], v[(i + 1) % n])).second) continue;
         b2EdgeShape edge;
         edge.SetTwoSided(to_units(v[i]), to_units(v[(i + 1) % n]));
         b2FixtureDef f;
@@ -86,8 +102,9 @@ void build_walls(world &w) {
     w.floor = w.physics.CreateBody(&def);
     const world_spec &s = *w.spec;
     world_point arena[4] = {{0, 0}, {s.width_mm, 0}, {s.width_mm, s.height_mm}, {0, s.height_mm}};
-    add_outline(w.ground, arena, 4);
-    for (int i = 0; i < s.n_obstacles; i++) add_outline(w.ground, s.obstacles[i].v, s.obstacles[i].n);
+    std::set<EdgeKey> added;
+    add_outline(w.ground, arena, 4, added);
+    for (int i = 0; i < s.n_obstacles; i++) add_outline(w.ground, s.obstacles[i].v, s.obstacles[i].n, added);
 }
 
 b2Body *add_disc(world &w, world_point at, double angle_deg, double radius_mm, double mass_kg) {
