@@ -12,6 +12,7 @@
 #include "json_checks.hpp"
 #include "names.hpp"
 #include "ports.hpp"
+#include "regular_file.hpp"
 #include "suggest.hpp"
 
 namespace fs = std::filesystem;
@@ -92,9 +93,18 @@ const std::map<std::string, unsigned> payload_types = {
     {"none", 0}, {"int8", 1}, {"uint8", 1}, {"int16", 2}, {"uint16", 2}, {"int32", 4}, {"uint32", 4},
 };
 
+// An event's or a thread entry's name: a C identifier of at most
+// identifier_max characters (C99 promises 63 significant ones; a thread's
+// entry is also kept in flash as its name: one of 20000 characters was
+// called valid and overflowed the Kilobot's flash, issue 30).
+constexpr size_t identifier_max = 63;
+
 std::string identifier_at(const fs::path &file, const std::string &path, const json &v) {
     std::string id = string_at(file, path, v, "a C identifier");
     if (!is_c_identifier(id)) fail(file, path, quoted_start(id) + " is not a C identifier (letters, digits, _)");
+    if (id.size() > identifier_max)
+        fail(file, path, quoted_start(id) + " is " + std::to_string(id.size()) + " characters long: a name is 1.." +
+                             std::to_string(identifier_max) + " characters (C99's significant length); shorten it");
     return id;
 }
 
@@ -343,9 +353,10 @@ AppConfig load_app_config(const fs::path &dir) {
     AppConfig config;
     config.file = dir / "openswarm.json";
     std::error_code error;
-    if (fs::is_directory(config.file, error))
-        throw ConfigError(config.file.string() + ": a folder, not a file; the app's configuration is a JSON "
-                          "file of that name (move the folder away; `openswarm new` shows one)");
+    std::string kind = not_a_regular_file(config.file);
+    if (!kind.empty())
+        throw ConfigError(config.file.string() + ": " + kind + ", not a file; the app's configuration is a "
+                          "JSON file of that name (move it away; `openswarm new` shows one)");
     if (!fs::exists(config.file, error))
         throw ConfigError(config.file.string() +
                           ": not found; run this in an app folder, or make one with "

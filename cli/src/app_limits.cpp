@@ -81,6 +81,19 @@ void check_app_limits(const AppConfig &config, const PortInfo &port, const Libra
     check_counts(config, port, libraries);
 }
 
+// A pool as the build sizes it: the generated value, else the port's.
+static unsigned pool_of(const std::map<std::string, long> &pools, const PortInfo &port, const PortCosts &costs,
+                 const std::string &key) {
+    auto given = pools.find(key);
+    if (given != pools.end()) return (unsigned)given->second;
+    if (key == "max_threads") return port.default_max_threads;
+    if (key == "max_events") return port.default_max_events;
+    if (key == "event_data") return port.device_event_bytes;
+    if (costs.default_stack_pool) return costs.default_stack_pool; // stack_pool
+    unsigned block = port.stack_block, stack = (port.default_stack + stack_guard_bytes + block - 1) / block * block;
+    return (pool_of(pools, port, costs, "max_threads") - 1) * stack;
+}
+
 // Equation (1) of docs/benchmarks.md for the pools the build generates,
 // the port's devices and the main stack's minimum (the app's own
 // variables come on top): past the RAM, the link fails or the main stack
@@ -88,23 +101,39 @@ void check_app_limits(const AppConfig &config, const PortInfo &port, const Libra
 void check_declared_ram(const AppConfig &c, const PortInfo &port, const std::map<std::string, long> &pools) {
     const PortCosts *costs = costs_for(port.name);
     if (costs == nullptr || port.ram_bytes == 0) return;
-    auto pool = [&](const char *key) { return (unsigned)pools.at(key); };
+    auto pool = [&](const char *key) { return pool_of(pools, port, *costs, key); };
     unsigned threads = pool("max_threads") - 1, events = pool("max_events");
     unsigned stacks = pool("stack_pool") + threads * costs->stack_extra;
     unsigned kernel = costs->fixed + costs->per_thread * threads + costs->per_event * (events > 6 ? events - 6 : 0) +
                       costs->devices;
     unsigned needed = kernel + stacks + pool("event_data") + port.main_stack_minimum;
     if (needed <= port.ram_bytes) return;
+    std::string sum = "the stacks (" + std::to_string(stacks) + " bytes with the kernel's " +
+                      std::to_string(costs->stack_extra) + " per thread), the kernel and the devices (" +
+                      std::to_string(kernel) + "), the events' data (" + std::to_string(pool("event_data")) +
+                      ") and the main stack's minimum (" + std::to_string(port.main_stack_minimum) + ") need about " +
+                      std::to_string(needed) + " bytes, more than the " + port.name + "'s " +
+                      std::to_string(port.ram_bytes) + " of RAM, by " + std::to_string(needed - port.ram_bytes);
+    // Blame what holds the most: the events' data, or the stacks.
+    if (!c.events.empty() && pool("event_data") >= stacks) {
+        size_t biggest = 0;
+        for (size_t i = 0; i < c.events.size(); i++)
+            if (c.events[i].size > c.events[biggest].size) biggest = i;
+        const std::string where = "events[" + std::to_string(biggest) + "]";
+        fail(c.file, c.events[biggest].type.empty() ? where + ".size" : where,
+             sum + "; the kernel keeps every event's last data: make the biggest events' data smaller (this one's " +
+                 std::to_string(c.events[biggest].size) + " bytes), or use fewer events" +
+                 (c.threads.empty() && stacks > 0
+                      ? "; with no threads, \"kernel\": {\"max_threads\": 1, \"stack_pool\": 0} frees the stacks' " +
+                            std::to_string(stacks) + " bytes"
+                      : ""));
+    }
     size_t biggest = 0;
     for (size_t i = 0; i < c.threads.size(); i++)
         if (c.threads[i].stack > c.threads[biggest].stack) biggest = i;
     fail(c.file, c.threads.empty() ? "kernel" : at("threads", biggest, "stack"),
-         "the stacks (" + std::to_string(stacks) + " bytes with the kernel's " + std::to_string(costs->stack_extra) +
-             " per thread), the kernel and the devices (" + std::to_string(kernel) + "), the events' data (" +
-             std::to_string(pool("event_data")) + ") and the main stack's minimum (" +
-             std::to_string(port.main_stack_minimum) + ") need about " + std::to_string(needed) +
-             " bytes, more than the " + port.name + "'s " + std::to_string(port.ram_bytes) +
-             " of RAM; make the biggest stacks smaller, or use fewer threads");
+         sum + "; make the biggest stacks smaller, or use fewer threads" +
+             (c.threads.empty() ? " (\"kernel\": {\"max_threads\", \"stack_pool\"} in openswarm.json)" : ""));
 }
 
 }  // namespace openswarm

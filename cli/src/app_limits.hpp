@@ -16,8 +16,9 @@ namespace openswarm {
 void check_app_limits(const AppConfig &config, const PortInfo &port, const Libraries &libraries);
 
 // The RAM the pools need (max_threads, stack_pool, max_events and
-// event_data, as the build generates them) fits the robot, with room for
-// the main stack's minimum; a ConfigError naming the biggest stack if not.
+// event_data as the build generates them; the port's own where it sets
+// none) fits the robot, with room for the main stack's minimum; a
+// ConfigError naming the biggest stack, or the biggest event, if not.
 void check_declared_ram(const AppConfig &config, const PortInfo &port, const std::map<std::string, long> &pools);
 
 // A stack_pool the file gives is whole stack blocks (after the check that

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "json_checks.hpp"
+#include "regular_file.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -126,6 +127,10 @@ std::string trial_rows_problem(const Experiment &e, bool duration_given) {
 }
 
 Experiment load_experiment(const fs::path &file) {
+    std::string kind = not_a_regular_file(file);
+    if (!kind.empty())
+        throw ConfigError(file.string() + ": " + kind + ", not a regular file; give an experiment file (" +
+                          example + ")");
     std::ifstream in(file);
     if (!in) throw ConfigError(file.string() + ": cannot read it; give an experiment file (" + example + ")");
     std::stringstream text;

@@ -137,11 +137,10 @@ std::string config_header(const AppConfig &c, const PortInfo &port, const Librar
         check_given_at_least(c, "stack_pool", pool,
                              "the stacks of " + threads_starting(c, libraries) + ", as the pool carves them,");
         if (!values.count("stack_pool")) values["stack_pool"] = pool;
-        std::map<std::string, long> pools = values; // the port's own sizes where the app sets none
-        pools.emplace("max_events", port.default_max_events);
-        pools.emplace("event_data", port.device_event_bytes);
-        check_declared_ram(c, port, pools);
     }
+    // With threads or without (issue 30: 8 events of 253 bytes and no
+    // threads were called valid, and overflowed the Kilobot's RAM).
+    check_declared_ram(c, port, values);
     check_stack_pool_blocks(c, port);
     std::ostringstream h;
     h << banner << "#ifndef OPENSWARM_APP_CONFIG_H\n#define OPENSWARM_APP_CONFIG_H\n\n";

@@ -132,6 +132,10 @@ struct PortCosts {
     // devices' state, the port's longer queue and its subscriptions
     // (openswarm size's "the rest" on the blinky template).
     unsigned devices;
+    // The stack pool when openswarm.json declares no threads (port_config.h's
+    // OS_CFG_STACK_POOL_BYTES); 0: config.h's default, a default stack for
+    // every thread slot but the system thread's.
+    unsigned default_stack_pool;
 };
 
 // A port's costs: nullptr for a port without them (the host's, XC16's).

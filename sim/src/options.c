@@ -214,6 +214,21 @@ static int take_firmware(int n, char **paths, placement_options *place, options 
     return 0;
 }
 
+/* The files given on the command line, before any is opened (the world
+ * file's reader checks the firmware it names). */
+static int inputs_are_regular(int n, char **paths, const placement_options *place, const options *o) {
+    if (input_is_regular("--world", o->world, "give the world.json file itself (docs/world.md)") != 0 ||
+        input_is_regular("--positions", place->positions,
+                         "give a text file with one \"x y\" line (millimetres) per robot") != 0)
+        return -1;
+    for (int i = 0; i < n; i++)
+        if (input_is_regular("the firmware", paths[i],
+                             "give the FIRMWARE.elf (or .hex) file the build wrote, e.g. "
+                             "build/kilobot/APP.elf") != 0)
+            return -1;
+    return 0;
+}
+
 /* --faults, repeatable: each adds to the spec. */
 static int add_faults(const char *text, options *o) {
     if (o->faults == NULL && (o->faults = calloc(1, sizeof *o->faults)) == NULL) {
@@ -326,6 +341,7 @@ int parse_options(int argc, char **argv, options *o) {
         default: usage(stderr); return -1;
         }
     }
+    if (inputs_are_regular(argc - optind, argv + optind, &place, o) != 0) return -1;
     if (take_firmware(argc - optind, argv + optind, &place, o) != 0) return -1;
     if (o->world != NULL) return world_options_check(o);
     if (o->out_dir != NULL || o->video) {

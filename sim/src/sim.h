@@ -532,4 +532,9 @@ int written_close(FILE *f, const char *what, int close_it);
 /* fflush(stdout), keeping why it failed for written_close. */
 void stdout_flush(void);
 
+/* inputs.c: 0 if path is a regular file (or is not there: its reader
+ * says so); else -1 after "WHAT PATH is a FIFO ..., not a regular file:
+ * FIX". Checked before opening it: open() of a FIFO blocks. */
+int input_is_regular(const char *what, const char *path, const char *fix);
+
 #endif

@@ -87,20 +87,6 @@ check "a folder named openswarm.json" 2 "openswarm.json: a folder, not a file" "
 check "new -C a missing folder" 2 "-C missing/dir: no such folder; create it first" "$openswarm" new x -C missing/dir
 [ ! -e missing ] && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: new -C created the missing folder"; }
 
-# new --force over an app with a file that cannot be removed: the new app
-# is in place and the old one kept aside, nothing lost (it deleted the old
-# files, then failed).
-"$openswarm" new forced >/dev/null
-echo "my notes" > forced/notes.txt
-mkdir forced/locked && echo "keep" > forced/locked/file
-chattr +i forced/locked/file || { echo "FAILED: chattr +i (the test needs it)"; exit 1; }
-check "new --force, a file that cannot be removed" 0 "the replaced app is kept in \./\.forced\.openswarm-old" \
-    "$openswarm" new forced --force
-chattr -i .forced.openswarm-old/locked/file 2>/dev/null
-[ -f forced/main.c ] && [ ! -e forced/notes.txt ] && grep -q "my notes" .forced.openswarm-old/notes.txt \
-    && passed=$((passed + 1)) || { failed=$((failed + 1)); echo "FAILED: new --force lost or mixed files"; ls -aR forced .forced.openswarm-old; }
-rm -rf .forced.openswarm-old
-
 # A test file with a time that is no number, or a value with letters after
 # it: refused before the build, naming the line (they were read as 0.252
 # and 3).

@@ -57,13 +57,23 @@ const TemplateInfo *find_template(const std::vector<TemplateInfo> &all, const st
     return nullptr;
 }
 
+// Where an app that --force replaces is kept: NAME.replaced-1, -2, ...,
+// the first not taken (an app's name holds no '.', so none is an app's).
+// Never removed by the tool: every earlier copy stays whole.
+fs::path backup_for(const NewOptions &o) {
+    std::error_code ec;
+    for (int n = 1;; n++) {
+        fs::path p = fs::path(o.parent) / (o.name + ".replaced-" + std::to_string(n));
+        if (!fs::exists(fs::symlink_status(p, ec))) return p;
+    }
+}
+
 // Build the app beside its final place and move it in at the end, so a
-// failure leaves nothing half-made; an app it replaces (--force) is moved
-// aside first and removed only once the new one is in place, so a folder
-// that cannot be removed loses nothing.
+// failure leaves nothing half-made; an app it replaces (--force) is renamed
+// aside whole, and kept (issue 30: it was removed, and an older copy
+// deleted without a word; a file that could not be removed left it half).
 int place_app(const TemplateInfo &t, const NewOptions &o, const fs::path &dir) {
     fs::path staging = fs::path(o.parent) / ("." + o.name + ".openswarm-new");
-    fs::path old = fs::path(o.parent) / ("." + o.name + ".openswarm-old");
     std::error_code ec;
     fs::remove_all(staging, ec);
     try {
@@ -75,13 +85,14 @@ int place_app(const TemplateInfo &t, const NewOptions &o, const fs::path &dir) {
                "; check that the folder is writable");
         return EXIT_FAILED;
     }
-    bool replacing = fs::exists(dir, ec);
+    bool replacing = fs::exists(fs::symlink_status(dir, ec));
+    fs::path old = replacing ? backup_for(o) : fs::path();
     if (replacing) {
-        fs::remove_all(old, ec);
         fs::rename(dir, old, ec);
         if (ec) {
             fs::remove_all(staging, ec);
-            report("could not replace " + dir.string() + " (" + ec.message() + "); it is as it was");
+            report("could not move " + dir.string() + " aside to " + old.string() + " (" + ec.message() +
+                   "); it is as it was: move it away yourself, or create the app under another name");
             return EXIT_FAILED;
         }
     }
@@ -91,12 +102,9 @@ int place_app(const TemplateInfo &t, const NewOptions &o, const fs::path &dir) {
         if (replacing) fs::rename(old, dir, back);
         fs::remove_all(staging, back);
         report("could not create " + dir.string() + " (" + ec.message() + ")" +
-               (replacing ? "; the old app is back in place" : ""));
+               (replacing ? "; the old app is back in place" : "") + "; check that the folder is writable");
         return EXIT_FAILED;
     }
-    if (replacing && (fs::remove_all(old, ec), ec))
-        std::fprintf(stderr, "openswarm: warning: the replaced app is kept in %s (%s); remove it yourself\n",
-                     old.string().c_str(), ec.message().c_str());
     // A port nothing here runs is built, then flashed to the robot.
     Runner runner = port_info(o.port).runner;
     const char *next = runner == Runner::none    ? ""
@@ -104,6 +112,10 @@ int place_app(const TemplateInfo &t, const NewOptions &o, const fs::path &dir) {
                                                  : " && openswarm run";
     std::printf("Created %s from template '%s' for %s.\nNext: cd %s && openswarm build%s\n",
                 dir.string().c_str(), t.name.c_str(), o.port.c_str(), dir.string().c_str(), next);
+    if (replacing)
+        std::printf("The app it replaces is kept, whole, in %s: remove that folder once you no longer "
+                    "need it.\n",
+                    old.string().c_str());
     return EXIT_OK;
 }
 
@@ -164,7 +176,8 @@ void add_new_command(CLI::App &app, const Paths &paths) {
                     "robot to build for (openswarm ports; default: the template's first, kilobot for "
                     "most)");
     cmd->add_option("-C,--directory", o->parent, "where to create the folder")->capture_default_str();
-    cmd->add_flag("-f,--force", o->force, "replace an existing folder of that name");
+    cmd->add_flag("-f,--force", o->force,
+                  "replace an existing folder of that name (it is kept, renamed NAME.replaced-1, -2, ...)");
     cmd->callback([o, &paths] { exit_code = run_new(*o, paths); });
 }
 

@@ -22,6 +22,7 @@
 #include "../ports.hpp"
 #include "../process.hpp"
 #include "../qemu_run.hpp"
+#include "../regular_file.hpp"
 #include "build.hpp"
 #include "commands.hpp"
 
@@ -78,6 +79,10 @@ bool whole_long(const std::string &text, long &out) {
 
 Expectation read_expectation(const fs::path &file) {
     Expectation e;
+    std::string kind = not_a_regular_file(file);
+    if (!kind.empty())
+        throw std::runtime_error(file.string() + ": " + kind + ", not a regular file; a test is a text file "
+                                 "(`openswarm test --record NAME` writes one): move it out of tests/");
     std::ifstream in(file);
     std::string line;
     for (int n = 1; std::getline(in, line); n++) {

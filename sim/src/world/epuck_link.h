@@ -14,16 +14,28 @@ typedef struct epuck_link {
     int to, from; /* its standard input and output */
     int index;    /* the robot's */
     const char *controller;
+    int32_t t_ms; /* the step being exchanged, -1 before the first; for messages */
+    int stopping; /* the exchange is the request to stop */
 } epuck_link;
+
+/* How long, in wall time, the world waits for a controller to take its
+ * inputs or answer them, unless OPENSWARM_LINK_TIMEOUT_S says otherwise;
+ * then it kills the controller and the run stops (exit 3). */
+#define EPUCK_LINK_WAIT_S 60
+
+/* OPENSWARM_LINK_TIMEOUT_S, when set: -1 after a message if it is not a
+ * number of seconds in (0, 86400]. */
+int epuck_link_wait_from_environment(void);
 
 /* Start the controller for robot index and read its first answer; -1
  * after a message naming the controller and what went wrong. */
 int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_world_output *first);
 /* One exchange's halves: the input (and pixels when it carries a frame),
- * then the answer. -1 after a message (the process ended or said nonsense). */
+ * then the answer. -1 after a message (the process ended, said nonsense
+ * or did not move within the wait: then it is killed). */
 int epuck_link_send(epuck_link *l, const epuck_world_input *in, const uint16_t *pixels);
 int epuck_link_receive(epuck_link *l, epuck_world_output *out);
-/* Tell it to stop, wait for it; its exit status (-1 if killed). */
+/* Tell it to stop, wait for it; its exit status (-1 if it had to be killed). */
 int epuck_link_stop(epuck_link *l);
 
 #endif

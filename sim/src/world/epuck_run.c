@@ -58,6 +58,7 @@ static int exchange(const world *physics, uint32_t t_ms) {
             in.frame_width = EPUCK_FRAME_WIDTH;
             in.frame_height = EPUCK_FRAME_HEIGHT;
         }
+        r->link.t_ms = (int32_t)t_ms;
         if (epuck_link_send(&r->link, &in, frame) != 0) return -1;
     }
     for (int i = 0; i < n_robots; i++)
@@ -123,6 +124,7 @@ static int stop_controllers(void) {
 }
 
 int epuck_world_run(const options *o, const world_spec *spec, world *physics) {
+    if (epuck_link_wait_from_environment() != 0) return EXIT_USAGE;
     n_robots = spec->n_robots;
     robots = allocate((size_t)n_robots, sizeof *robots);
     poses = allocate((size_t)n_robots, sizeof *poses);

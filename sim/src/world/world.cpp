@@ -16,8 +16,11 @@
 
 #include <box2d/box2d.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -56,7 +59,12 @@ uintptr_t tag(int kind, int index) { return (uintptr_t(kind) << 24) | uintptr_t(
 struct world {
     const world_spec *spec = nullptr;
     b2World physics{b2Vec2(0.0f, 0.0f)};
-    b2Body *ground = nullptr;
+    b2Body *ground = nullptr; /* the walls and obstacles */
+    /* What objects' friction joints hold on to: a static body with no
+     * shape. A joint turns off collisions between the bodies it joins
+     * (Box2D's collideConnected), so objects joined to the walls' body
+     * passed through every wall and obstacle (issue 30). */
+    b2Body *floor = nullptr;
     /* The same walls and obstacles alone, for IR's rays: they are cast
      * while the physics steps on another thread (world_stepper.c), and a
      * static shape answers a ray the same in either world. */
@@ -67,9 +75,22 @@ struct world {
 
 namespace {
 
-/* A fixed outline: two-sided edges, so nothing passes from either side. */
-void add_outline(b2Body *ground, const world_point *v, int n) {
+/* An edge by its two ends, the lower first: the same either way round. */
+using EdgeKey = std::array<double, 4>;
+EdgeKey edge_key(world_point a, world_point b) {
+    if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
+    return {a.x, a.y, b.x, b.y};
+}
+
+/* A fixed outline: two-sided edges, so nothing passes from either side.
+ * An edge already there (an obstacle given twice, two sharing a side) is
+ * not added again: Box2D's broad phase pairs every two overlapping
+ * fixtures of the walls' body when the world starts, before it drops the
+ * pairs of one body, so N copies of one obstacle cost N^2 pairs (10000
+ * copies: 2.7 GB, then a crash in b2BroadPhase; issue 30). */
+void add_outline(b2Body *ground, const world_point *v, int n, std::set<EdgeKey> &added) {
     for (int i = 0; i < n; i++) {
+        if (!added.insert(edge_key(v[i], v[(i + 1) % n])).second) continue;
         b2EdgeShape edge;
         edge.SetTwoSided(to_units(v[i]), to_units(v[(i + 1) % n]));
         b2FixtureDef f;
@@ -83,8 +104,9 @@ b2Body *build_walls(b2World &in, const world_spec &s) {
     b2BodyDef def;
     b2Body *ground = in.CreateBody(&def);
     world_point arena[4] = {{0, 0}, {s.width_mm, 0}, {s.width_mm, s.height_mm}, {0, s.height_mm}};
-    add_outline(ground, arena, 4);
-    for (int i = 0; i < s.n_obstacles; i++) add_outline(ground, s.obstacles[i].v, s.obstacles[i].n);
+    std::set<EdgeKey> added;
+    add_outline(ground, arena, 4, added);
+    for (int i = 0; i < s.n_obstacles; i++) add_outline(ground, s.obstacles[i].v, s.obstacles[i].n, added);
     return ground;
 }
 
@@ -113,7 +135,7 @@ void add_object(world &w, const world_object &o) {
     b2Body *body = add_disc(w, o.at, 0.0, o.radius_mm, mass);
     body->GetUserData().pointer = tag(TAG_OBJECT, int(w.objects.size()));
     b2FrictionJointDef joint;
-    joint.Initialize(body, w.ground, body->GetPosition());
+    joint.Initialize(body, w.floor, body->GetPosition());
     joint.maxForce = float(o.friction * mass * GRAVITY);
     joint.maxTorque = float(o.friction * mass * GRAVITY * o.radius_mm / MM_PER_UNIT / 2.0);
     w.physics.CreateJoint(&joint);
@@ -197,6 +219,8 @@ world *world_create(const world_spec *spec) {
     auto w = std::make_unique<world>();
     w->spec = spec;
     w->ground = build_walls(w->physics, *spec);
+    b2BodyDef floor_def;
+    w->floor = w->physics.CreateBody(&floor_def);
     build_walls(w->walls, *spec);
     for (int k = 0; k < spec->n_objects; k++) add_object(*w, spec->objects[k]);
     uint64_t seed = spec->seed;

@@ -141,10 +141,16 @@ world_spec Reader::load(const json &doc) {
         if (n && !n.value()->is_array()) fail(*n, "expected a list, found " + found(**n) + "; e.g. \"" + key + "\": [" + ex + "]");
         return n;
     };
-    if (auto obs = list("obstacles", "{\"rect\": {\"x_mm\": 100, \"y_mm\": 100, \"width_mm\": 50, \"height_mm\": 20}}"))
+    if (auto obs = list("obstacles", "{\"rect\": {\"x_mm\": 100, \"y_mm\": 100, \"width_mm\": 50, \"height_mm\": 20}}")) {
+        list_within(*obs, "obstacles", WORLD_MAX_OBSTACLES,
+                    "merge neighbouring obstacles into one polygon (up to " + std::to_string(WORLD_MAX_VERTICES) +
+                        " vertices), or keep fewer");
         for (size_t k = 0; k < obs.value()->size(); k++) obstacle(item(*obs, k));
-    if (auto objs = list("objects", "{\"x_mm\": 200, \"y_mm\": 200, \"radius_mm\": 20}"))
+    }
+    if (auto objs = list("objects", "{\"x_mm\": 200, \"y_mm\": 200, \"radius_mm\": 20}")) {
+        list_within(*objs, "objects", WORLD_MAX_OBJECTS, "keep fewer");
         for (size_t k = 0; k < objs.value()->size(); k++) movable_object(item(*objs, k));
+    }
     if (auto groups = list("robots", "{\"count\": 10}")) {
         /* Placement has a stream of its own, from the seed, so the physics'
          * draws do not move the robots. */

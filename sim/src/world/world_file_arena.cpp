@@ -41,6 +41,7 @@ void Reader::obstacle(const Node &n) {
         polygon_vertices(shape, o, where);
     check_in_arena(o, where, rect);
     check_outline(shape, o, where);
+    obstacle_vertices_within(n, o.n);
     obstacles_.push_back(o);
 }
 

@@ -171,6 +171,12 @@ class Reader {
     std::optional<Conflict> obstacle_conflict(P c, double r, const std::string &radius) const;
     std::optional<Conflict> object_conflict(P c, double r, const std::string &needed) const;
 
+    /* world_file_limits.cpp: what one world may hold. */
+    int obstacle_vertices_ = 0; /* the obstacles' so far */
+    void list_within(const Node &list, const char *what, size_t limit, const std::string &fix) const;
+    void obstacle_vertices_within(const Node &n, int added);
+    void robots_within(const Node &blame, long count) const; /* a group of count more */
+
     /* world_file_robots.cpp: the groups of robots, placed. */
     struct Placing {
         int group;

@@ -118,6 +118,7 @@ void Reader::place_poses(const Node &poses, const Placing &p) {
     if (!poses->is_array() || poses->empty() || poses->size() > (size_t)MAX_COUNT)
         fail(poses, "expected a list of 1.." + std::to_string(MAX_COUNT) + " poses, found " + found(*poses) +
                         "; e.g. \"poses\": [" + ex + "]");
+    robots_within(poses, (long)poses->size());
     for (size_t k = 0; k < poses->size(); k++) {
         Node pose = item(poses, k);
         object(pose, {"x_mm", "y_mm", "heading_deg"}, ex);
@@ -146,6 +147,7 @@ void Reader::place_grid(const Node &grid, const Placing &p) {
     if (columns * rows > MAX_COUNT)
         fail(grid, std::to_string(columns) + " x " + std::to_string(rows) + " robots: more than " +
                        std::to_string(MAX_COUNT) + ", likely a typo; lower columns or rows");
+    robots_within(grid, columns * rows);
     for (long row = 0; row < rows; row++)
         for (long col = 0; col < columns; col++) {
             P at{x + (double)col * spacing, y + (double)row * spacing};
@@ -161,6 +163,7 @@ void Reader::place_at_random(const Node &n, const Placing &p, Draws &draws) {
     Node count_node = child(n, "count");
     long count = whole(count_node, 1, MAX_COUNT, "how many robots",
                        "\"count\": 10 (more than " + std::to_string(MAX_COUNT) + " is taken for a typo)");
+    robots_within(count_node, count);
     /* Centres are drawn from the region (the arena by default), kept a
      * radius from the walls. */
     Room room{ROBOT_R, ROBOT_R, w_ - ROBOT_R, h_ - ROBOT_R};

@@ -11,6 +11,15 @@
 #include <stdint.h>
 
 #define WORLD_MAX_VERTICES 32
+/* What one world may hold (docs/world.md, "Limits"). Obstacles are edges
+ * of one fixed body: Box2D pairs every two that overlap when the world
+ * starts (memory and time growing with the square of a stack of them), so
+ * their edges are bounded in all: 4000 of them all overlapping cost about
+ * 60 MB and half a second, once. */
+#define WORLD_MAX_OBSTACLES 1000
+#define WORLD_MAX_OBSTACLE_VERTICES 4000
+#define WORLD_MAX_OBJECTS 10000
+#define WORLD_MAX_ROBOTS 10000 /* = openswarm-sim's --robots limit */
 #define KILOBOT_RADIUS_MM 16.5 /* a Kilobot is a disc 33 mm across */
 /* An e-puck is 74 mm across (docs/world.md gives the sources). */
 #define EPUCK_RADIUS_MM 37.0
