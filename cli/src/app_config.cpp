@@ -371,7 +371,8 @@ AppConfig load_app_config(const fs::path &dir) {
     json doc = parse_json_file(config.file, text);
     const fs::path &file = config.file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }, found " + found(doc));
-    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices", "kilobot", "epuck2"});
+    check_keys(file, "", doc, {"name", "port", "kernel", "events", "threads", "devices", "kilobot", "epuck2",
+                               "parameters"});
     config.name = string_at(file, "name", require(file, doc, "name"), "the app's name");
     if (!is_app_name(config.name))
         fail(file, "name", quoted_start(config.name) + " is not a usable app name: letters, digits, - and _, "
@@ -391,6 +392,7 @@ AppConfig load_app_config(const fs::path &dir) {
     if (doc.contains("devices")) load_devices(file, doc["devices"], config);
     if (doc.contains("kilobot")) load_kilobot(file, doc["kilobot"], config);
     if (doc.contains("epuck2")) load_epuck2(file, doc["epuck2"], config);
+    if (doc.contains("parameters")) load_parameters(file, doc["parameters"], config);
     return config;
 }
 

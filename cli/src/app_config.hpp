@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app_parameters.hpp"
 #include "ports.hpp"
 
 namespace openswarm {
@@ -54,6 +55,7 @@ struct AppConfig {
     // "epuck2": {"bootloader": ...}: "none" or "aseba" (epuck2_placements);
     // "" = not given (the default, "none").
     std::string epuck2_bootloader;
+    std::vector<AppParameter> parameters; // "parameters", by name
 };
 
 // Where this app's e-puck2 robot image goes: its "epuck2.bootloader"'s

@@ -281,6 +281,7 @@ void generate_app_files(const AppConfig &config, const Libraries &libraries, con
     write_if_changed(out_dir / "openswarm_config.h", kernel_config);
     write_if_changed(out_dir / "openswarm_app.h", app_header(config));
     write_if_changed(out_dir / "openswarm_app.c", app_source(config));
+    write_if_changed(out_dir / "openswarm_parameters.h", parameters_header(config));
 }
 
 std::map<std::string, unsigned> generated_config_values(const fs::path &header) {

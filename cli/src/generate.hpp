@@ -12,7 +12,8 @@
 
 namespace openswarm {
 
-// Write out_dir/openswarm_config.h, openswarm_app.h and openswarm_app.c
+// Write out_dir/openswarm_config.h, openswarm_app.h, openswarm_app.c and
+// openswarm_parameters.h
 // (only the files whose content changed, so builds stay incremental), with
 // room in the pools for the threads the libraries start as well. A
 // max_threads the file gives that leaves them no slot is a ConfigError.

@@ -31,6 +31,29 @@ function(openswarm_app_warnings target)
   target_compile_options(${target} PRIVATE $<$<COMPILE_LANGUAGE:C,CXX>:${flags}>)
 endfunction()
 
+# The app's parameters (openswarm.json's "parameters", docs/openswarm-json.md):
+# every C and C++ source of the app includes the generated
+# openswarm_parameters.h first (their defaults), and OPENSWARM_PARAMETERS
+# ("NAME=VALUE;...", from `openswarm build -D` or a sweep) defines other
+# values before it. Only the app's own sources: the kernel never sees them.
+set(OPENSWARM_PARAMETERS "" CACHE STRING "the app's parameters' values, NAME=VALUE;... (openswarm build -D)")
+function(openswarm_app_parameters sources)
+  if(NOT OPENSWARM_GENERATED_DIR OR NOT EXISTS ${OPENSWARM_GENERATED_DIR}/openswarm_parameters.h)
+    return()
+  endif()
+  set(compiled)
+  foreach(source ${sources})
+    if(source MATCHES "\\.(c|cc|cpp|cxx)$")
+      list(APPEND compiled ${source})
+    endif()
+  endforeach()
+  if(compiled)
+    set_property(SOURCE ${compiled} APPEND PROPERTY COMPILE_OPTIONS
+      -include${OPENSWARM_GENERATED_DIR}/openswarm_parameters.h) # gcc takes it joined
+    set_property(SOURCE ${compiled} APPEND PROPERTY COMPILE_DEFINITIONS ${OPENSWARM_PARAMETERS})
+  endif()
+endfunction()
+
 # openswarm_add_firmware(<name> PORT <kilobot|epuck2|epuck|epuck_world|host> SOURCES <files...>
 #                        [CONFIG <header>])
 # Builds the kernel for the port and configuration, and the application
@@ -73,6 +96,7 @@ function(openswarm_add_firmware name)
     endif()
     set(generated_sources ${OPENSWARM_GENERATED_DIR}/openswarm_app.c)
   endif()
+  openswarm_app_parameters("${F_SOURCES}")
   set(config_args)
   if(F_CONFIG)
     get_filename_component(config "${F_CONFIG}" ABSOLUTE)

@@ -83,6 +83,7 @@ struct BuildOptions {
     bool debug = false;
     bool werror = false;
     bool native = false;
+    std::vector<std::string> parameters; // -D NAME=VALUE
 };
 
 // The kernel's and the app's shares of the image, from a second build
@@ -151,6 +152,7 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
     nlohmann::ordered_json j = {
         {"image", r.image.string()},       {"port", r.port}, {"native", r.native}, {"flash", r.flash},
         {"flash_total", r.flash_total},    {"ram", r.ram},   {"ram_total", info.ram_bytes}};
+    j["parameters"] = r.parameters;
     if (shares.empty()) {
         j["share"] = nullptr;
         j["share_unavailable"] = why;
@@ -204,7 +206,7 @@ fs::path generated_dir(const fs::path &dir, const std::string &port) {
 
 std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
                                      const std::string &port_option, Progress progress,
-                                     Variant variant, bool werror) {
+                                     Variant variant, bool werror, const ParameterValues &parameters) {
     FILE *out = progress == Progress::on_stdout ? stdout : stderr;
     const bool brief = progress == Progress::brief;
     std::string log; // brief: what CMake said, shown if it fails
@@ -229,6 +231,14 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }
+    for (const auto &[name, value] : parameters) {
+        std::string why = parameter_problem(config, name, value);
+        if (why.empty()) continue;
+        report("-D " + name + "=" + std::to_string(value) + ": " + why);
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
+    }
+    const ParameterValues changed = changed_parameters(config, parameters);
     std::string port = port_option.empty() ? config.port : port_option;
     if (!is_port(port)) {
         report("unknown port '" + port + "'; `openswarm ports` lists them");
@@ -250,7 +260,8 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    fs::path build_dir = dir / "build" / (debug ? port + "-debug" : native ? port + "-native" : port);
+    fs::path build_dir = dir / "build" / ((debug ? port + "-debug" : native ? port + "-native" : port) +
+                                          parameters_folder_suffix(changed));
     fs::path generated = generated_dir(dir, port);
     config.port = port;
     const PortInfo &info = port_info(port);
@@ -268,6 +279,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     std::vector<std::string> configure = configure_command(paths, dir, build_dir, port, native);
     configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
     configure.push_back(std::string("-DOPENSWARM_WERROR=") + (werror ? "ON" : "OFF"));
+    configure.push_back("-DOPENSWARM_PARAMETERS=" + parameters_cmake_list(changed));
     // Where the e-puck2's robot image is linked (cmake/OpenSwarmKernel.cmake).
     if (port == "epuck2")
         configure.push_back("-DOPENSWARM_EPUCK2_BOOTLOADER=" + robot_placement(config).bootloader);
@@ -301,6 +313,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     }
     BuildResult result;
     result.port = port;
+    result.parameters = changed;
     if (native) {
         result.native = true;
         result.image = build_dir / (config.name + ".so");
@@ -334,6 +347,18 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     return result;
 }
 
+std::optional<ParameterValues> parameter_options(const std::vector<std::string> &settings) {
+    ParameterValues values;
+    std::string why;
+    for (const auto &text : settings) {
+        if (parse_parameter_setting(text, values, why)) continue;
+        report(why);
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
+    }
+    return values;
+}
+
 bool refuse_unrunnable(const std::string &port, const std::string &command) {
     const PortInfo &info = port_info(port);
     if (info.runner != Runner::none) return false;
@@ -359,6 +384,11 @@ void add_build_command(CLI::App &app, const Paths &paths) {
     cmd->add_flag("--debug", o->debug,
                   "a debug image in build/<port>-debug: -Og -g, no link-time optimisation, so "
                   "the debugger (openswarm run --debug --gdb PORT) knows every line and variable");
+    cmd->add_option("-D,--param", o->parameters,
+                    "a value for a parameter openswarm.json declares (\"parameters\"); each set of "
+                    "values is built in a folder of its own, build/<port>-p<fingerprint>")
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
     cmd->callback([o, &paths] {
         Progress progress = o->json ? Progress::on_stderr : Progress::on_stdout;
         if (o->debug && o->native) {
@@ -367,7 +397,9 @@ void add_build_command(CLI::App &app, const Paths &paths) {
             return;
         }
         Variant variant = o->debug ? Variant::debug : o->native ? Variant::native : Variant::release;
-        auto r = build_app(paths, o->dir, o->port, progress, variant, o->werror);
+        auto parameters = parameter_options(o->parameters);
+        if (!parameters) return;
+        auto r = build_app(paths, o->dir, o->port, progress, variant, o->werror, *parameters);
         if (!r) return;
         std::string why = "not measured for a debug image (it has no link-time optimisation "
                           "to see through)";

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "../app_parameters.hpp"
 #include "../paths.hpp"
 #include "../ports.hpp"
 
@@ -33,6 +34,7 @@ struct BuildResult {
     // runs (the e-puck2's: <app>-robot.elf, and .bin beside it).
     std::optional<RobotImage> robot;
     bool native = false; // the app built for the host (Variant::native): no robot's memory
+    ParameterValues parameters; // those that differ from openswarm.json's defaults
 };
 
 // Where `build` writes the files generated from openswarm.json.
@@ -59,11 +61,19 @@ enum class Variant { release, debug, native };
 
 // Configure and build the app in dir for port ("" = the app's own);
 // prints progress, and errors ending with what to do. nullopt on failure,
-// with exit_code set.
+// with exit_code set. parameters: values for openswarm.json's
+// "parameters" (checked here: a bad one is exit 2); a set that differs
+// from the defaults is built in a folder of its own (build/<port>-p<its
+// fingerprint>), kept for the next build of the same set.
 std::optional<BuildResult> build_app(const Paths &paths, const std::filesystem::path &dir,
                                      const std::string &port,
                                      Progress progress = Progress::on_stdout,
-                                     Variant variant = Variant::release, bool werror = false);
+                                     Variant variant = Variant::release, bool werror = false,
+                                     const ParameterValues &parameters = {});
+
+// -D NAME=VALUE options into values; nullopt after reporting a malformed
+// one (exit_code 2). build_app checks them against the app.
+std::optional<ParameterValues> parameter_options(const std::vector<std::string> &settings);
 
 // For a port nothing here runs (Runner::none): report that command cannot
 // run its images, and what building them needs if it is missing; true then.

@@ -32,6 +32,7 @@ struct RunOptions {
     int distance = 50;
     std::string line;      // --line SPACING: robots on a line
     std::string positions; // --positions FILE: one "x y" per robot
+    std::vector<std::string> parameters; // -D NAME=VALUE
     int ir_range = 0;      // 0: the simulator's default
     bool robots_given = false;
     int gdb = 0;
@@ -130,8 +131,10 @@ int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &
         return EXIT_USAGE;
     }
     double seconds = *number_in(o.time, 's', 0, 86400);
+    auto parameters = parameter_options(o.parameters);
+    if (!parameters) return exit_code;
     auto built = build_app(paths, o.dir, o.port, Progress::brief,
-                           o.debug ? Variant::debug : Variant::release);
+                           o.debug ? Variant::debug : Variant::release, false, *parameters);
     if (!built) return exit_code;
     QemuRun r;
     r.image = built->image;
@@ -252,8 +255,10 @@ int run_app(RunOptions o, const Paths &paths) {
         o.native = o.native || world_wants_native(o.world);
     }
     if (o.native && !native_options_usable(o)) return EXIT_USAGE;
+    auto parameters = parameter_options(o.parameters);
+    if (!parameters) return exit_code;
     auto built = build_app(paths, o.dir, o.port, Progress::brief,
-                           o.debug ? Variant::debug : o.native ? Variant::native : Variant::release);
+                           o.debug ? Variant::debug : o.native ? Variant::native : Variant::release, false, *parameters);
     if (!built) return exit_code;
     if (std::string why = simulator_problem(paths); !why.empty()) {
         report(why);
@@ -403,6 +408,11 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "e.g. -- --light 500 --uid 7")
         ->type_name("");
     cmd->add_option("-p,--port", o->port, "robot to build for (default: the app's port)");
+    cmd->add_option("-D,--param", o->parameters,
+                    "a value for a parameter openswarm.json declares (\"parameters\"), built "
+                    "in a folder of its own")
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
     cmd->add_option("-C,--directory", o->dir, "the app's folder")->capture_default_str();
     cmd->callback([o, robots, time, cmd, &paths] {
         o->robots_given = robots->count() > 0;

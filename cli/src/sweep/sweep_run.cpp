@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <map>
 #include <fstream>
 #include <mutex>
 #include <thread>
@@ -41,8 +42,10 @@ bool parse_shard(const std::string &text, size_t &k, size_t &n) {
 }
 
 // The app built once for each fidelity its points run in (the exact
-// mode's image, the native mode's shared object), each trial given its
-// image and the image's fingerprint; false after the build said why.
+// mode's image, the native mode's shared object) and each set of its
+// parameters the points give (a folder each, kept: a resumed sweep
+// builds nothing again), each trial given its image and the image's
+// fingerprint; false after the build said why.
 bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &trials) {
     AppConfig config;
     try {
@@ -58,22 +61,25 @@ bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &t
         exit_code = EXIT_USAGE;
         return false;
     }
-    std::vector<bool> native(s.points.size());
+    using Build = std::pair<bool, ParameterValues>; // native, the parameters
+    std::vector<Build> of_point(s.points.size());
     for (size_t p = 0; p < s.points.size(); p++) {
         json world = point_world(s, p, 0);
-        native[p] = world.contains("fidelity") && world["fidelity"] == "native";
+        of_point[p] = {world.contains("fidelity") && world["fidelity"] == "native", point_parameters(s, p)};
     }
-    std::optional<BuildResult> image[2];
-    std::string print[2];
+    std::map<Build, std::pair<fs::path, std::string>> built; // the image and its fingerprint
     for (SweepTrial &t : trials) {
-        bool mode = native[t.point];
-        if (!image[mode]) {
-            image[mode] = build_app(paths, s.app, "", Progress::brief, mode ? Variant::native : Variant::release);
-            if (!image[mode]) return false;
-            print[mode] = file_fingerprint(image[mode]->image);
+        const Build &b = of_point[t.point];
+        auto it = built.find(b);
+        if (it == built.end()) {
+            auto image = build_app(paths, s.app, "", Progress::brief, b.first ? Variant::native : Variant::release,
+                                   false, b.second);
+            if (!image) return false;
+            it = built.emplace(b, std::make_pair(image->image, file_fingerprint(image->image))).first;
         }
-        t.firmware = image[mode]->image;
-        t.firmware_hash = print[mode];
+        t.firmware = it->second.first;
+        t.firmware_hash = it->second.second;
+        t.parameters = b.second;
     }
     return true;
 }

@@ -1,8 +1,10 @@
 #include "sweep_spec.hpp"
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "../app_config.hpp"
 #include "../json_checks.hpp"
 #include "../metrics/builtin_metrics.hpp"
 #include "../metrics/metrics_error.hpp"
@@ -61,6 +63,7 @@ std::vector<json> values_at(const fs::path &f, const std::string &where, const j
 // A parameter's place, checked against the world: the world gives the
 // trials' seeds and durations its own way.
 void check_parameter(const Sweep &s, const std::string &where, const std::string &path) {
+    if (is_app_place(path)) return; // against the app, once its values are known (check_app_values)
     if (path == "seed")
         fail(s.file, where, "the seed is not swept: each trial t of a point runs with \"seed\" + t; "
                             "give \"trials\" and \"seed\" instead");
@@ -122,6 +125,22 @@ void load_points(Sweep &s, const json &list) {
             if (s.points[k] == point)
                 fail(s.file, where, "the same point as points[" + std::to_string(k) + "]: drop one");
         s.points.push_back(point);
+    }
+}
+
+// The values of "app.NAME" places, against the app's openswarm.json: a
+// parameter it declares, a whole number in its range.
+void check_app_values(const Sweep &s, bool grid) {
+    std::optional<AppConfig> app;
+    for (size_t p = 0; p < s.parameters.size(); p++) {
+        if (!is_app_place(s.parameters[p].path)) continue;
+        if (!app) app = load_app_config(s.app);
+        const std::string name = s.parameters[p].path.substr(4);
+        for (size_t i = 0; i < s.points.size(); i++) {
+            std::string why = parameter_problem(*app, name, s.points[i][p]);
+            if (!why.empty())
+                fail(s.file, (grid ? "grid." : "points[" + std::to_string(i) + "].") + s.parameters[p].path, why);
+        }
     }
 }
 
@@ -190,16 +209,28 @@ Sweep load_sweep(const fs::path &file) {
     if (doc.contains("grid")) load_grid(s, doc["grid"]);
     else if (doc.contains("points")) load_points(s, doc["points"]);
     else s.points.push_back({}); // the world as it is, trials times
+    check_app_values(s, doc.contains("grid"));
     load_metrics(s, doc);
     return s;
 }
 
 json point_world(const Sweep &s, size_t point, int trial) {
     json world = s.base_world;
-    for (size_t p = 0; p < s.parameters.size(); p++) set_world_path(world, s.parameters[p].path, s.points[point][p]);
+    for (size_t p = 0; p < s.parameters.size(); p++)
+        if (!is_app_place(s.parameters[p].path)) set_world_path(world, s.parameters[p].path, s.points[point][p]);
     world["seed"] = (uint64_t)s.seed + (uint64_t)trial;
     if (s.duration_s > 0) world["duration_s"] = s.duration_s;
     return world;
+}
+
+bool is_app_place(const std::string &path) { return path.rfind("app.", 0) == 0; }
+
+ParameterValues point_parameters(const Sweep &s, size_t point) {
+    ParameterValues values;
+    for (size_t p = 0; p < s.parameters.size(); p++)
+        if (is_app_place(s.parameters[p].path))
+            values[s.parameters[p].path.substr(4)] = s.points[point][p].get<long>();
+    return values;
 }
 
 std::string point_label(const Sweep &s, size_t point) {

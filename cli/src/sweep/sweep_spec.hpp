@@ -11,10 +11,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../app_parameters.hpp"
+
 namespace openswarm {
 
-// A world field a sweep varies, named by its place in world.json:
-// "arena.width_mm", "robots[0].count", "ir.loss_percent".
+// A value a sweep varies: a world field, named by its place in
+// world.json ("arena.width_mm", "robots[0].count", "ir.loss_percent"), or
+// a parameter of the app, "app.NAME" (openswarm.json's "parameters": each
+// set of them is a build of its own).
 struct SweepParameter {
     std::string path;
     std::vector<nlohmann::json> values; // as the grid lists them (empty for a list of points)
@@ -47,6 +51,12 @@ Sweep load_sweep(const std::filesystem::path &file);
 
 // The world of one point (parameters set) and trial (seed, duration).
 nlohmann::json point_world(const Sweep &s, size_t point, int trial);
+
+// The app's parameters a point sets ("app.NAME" places), by name.
+ParameterValues point_parameters(const Sweep &s, size_t point);
+
+// Whether a sweep's place names an app parameter ("app.NAME"), not a world field.
+bool is_app_place(const std::string &path);
 
 // "robots[0].count=10, ir.loss_percent=20" (the base world for no parameters).
 std::string point_label(const Sweep &s, size_t point);

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../fingerprint.hpp"
 #include "../last_lines.hpp"
 #include "../metrics/metrics_error.hpp"
 #include "../metrics/run_metrics.hpp"
@@ -20,15 +21,6 @@ std::string text_of(const fs::path &file) {
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
-}
-
-// FNV-1a, 64 bits: enough to tell two builds or two worlds apart.
-std::string fingerprint(const std::string &bytes) {
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
-    return text;
 }
 
 // The last lines of what the simulator said: why it failed.
@@ -66,6 +58,7 @@ void write_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
                     {"seed", t.seed},
                     {"world", f.world},
                     {"firmware", t.firmware_hash},
+                    {"parameters", t.parameters},
                     {"measures", f.measures}};
     if (!t.failure.empty()) outcome["reason"] = t.failure;
     fs::path temporary = t.dir / "outcome.json.part";
@@ -106,7 +99,10 @@ std::string file_fingerprint(const fs::path &file) {
 void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
     t.attempted = true;
     const std::string world = point_world(s, t.point, t.trial).dump(2) + "\n";
-    const Fingerprints f{fingerprint(world), measures_fingerprint(s)};
+    // The app's parameters with the world (none: the world's alone, as
+    // before there were any, so earlier sweeps resume).
+    const std::string parameters = t.parameters.empty() ? "" : "parameters " + json(t.parameters).dump() + "\n";
+    const Fingerprints f{fingerprint(world + parameters), measures_fingerprint(s)};
     const json before = outcome_of(t.dir);
     std::error_code ec;
     if (simulated_before(t, before, f)) {

@@ -27,6 +27,7 @@ struct SweepTrial {
     std::filesystem::path dir;
     std::filesystem::path firmware; // the image the world's robots run
     std::string firmware_hash;      // of its bytes, to tell a rebuilt app
+    ParameterValues parameters;     // the app's, as the point sets them
     // Filled by run_sweep_trial (or read_sweep_trial):
     bool attempted = false; // run_sweep_trial was called
     bool pending = false;   // not run yet (by any rank, shard or run)
