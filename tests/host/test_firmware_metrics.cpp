@@ -1,6 +1,7 @@
 // Metrics the firmware reports (cli/src/metrics/firmware_metrics.cpp): the
 // console line, console.csv as openswarm-sim writes it, the mean over
-// robots at each sample and each robot's own values.
+// robots at each sample and each robot's own values, and when the values
+// settled.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +15,18 @@ using namespace openswarm;
 using metrics_test::fresh_dir;
 using metrics_test::write_file;
 namespace fs = std::filesystem;
+
+namespace {
+
+// A run of two robots standing still, sampled at 0 and 1 s.
+void two_robots_sampled_twice(const fs::path &dir) {
+    write_file(dir / "trajectories.csv",
+               "time_s,robot,x_mm,y_mm,heading_deg,led_r,led_g,led_b\n"
+               "0.000,0,0.00,0.00,0.0,0,0,0\n0.000,1,50.00,0.00,0.0,0,0,0\n"
+               "1.000,0,0.00,0.00,0.0,0,0,0\n1.000,1,50.00,0.00,0.0,0,0,0\n");
+}
+
+}  // namespace
 
 TEST(FirmwareMetrics, TheConsoleLine) {
     std::string name, why;
@@ -77,10 +90,7 @@ TEST(FirmwareMetrics, TheMeanHoldsEachRobotsLatestValue) {
 
 TEST(FirmwareMetrics, ThroughTheRunFolder) {
     fs::path dir = fresh_dir("firmware-run");
-    write_file(dir / "trajectories.csv",
-               "time_s,robot,x_mm,y_mm,heading_deg,led_r,led_g,led_b\n"
-               "0.000,0,0.00,0.00,0.0,0,0,0\n0.000,1,50.00,0.00,0.0,0,0,0\n"
-               "1.000,0,0.00,0.00,0.0,0,0,0\n1.000,1,50.00,0.00,0.0,0,0,0\n");
+    two_robots_sampled_twice(dir);
     write_file(dir / "console.csv",
                "time_s,robot,line\n0.2,0,\"metric hops 1\"\n0.4,1,\"metric hops 3\"\n1.5,1,\"metric hops 5\"\n");
     MetricsOutcome o = measure_run({dir, {}, {"hops"}, {}, 0});
@@ -107,5 +117,42 @@ TEST(FirmwareMetrics, ThroughTheRunFolder) {
     } catch (const MetricsError &e) {
         EXPECT_NE(std::string(e.what()).find("(did you mean \"hops\"?); its robots reported hops"), std::string::npos)
             << e.what();
+    }
+}
+
+TEST(FirmwareMetrics, SettledIsTheLastChangeOnceEveryRobotReported) {
+    // Robot 0 reports 0 at 0.5 s; robot 1 reports 2 at 1.5 s, 1 at 1.7 s,
+    // then 1 again at 2.5 s (no change).
+    std::vector<FirmwareReport> reports = {{0.5, 0, 0}, {1.5, 1, 2}, {1.7, 1, 1}, {2.5, 1, 1}};
+    std::vector<double> at = firmware_settled_at(reports, {1.0, 2.0, 3.0}, {2, 2, 2});
+    EXPECT_TRUE(std::isnan(at[0])); // robot 1 has not reported yet
+    EXPECT_EQ(at[1], 1.7);
+    EXPECT_EQ(at[2], 1.7);          // the same value again changes nothing
+    // A robot that never reports: never settled.
+    EXPECT_TRUE(std::isnan(firmware_settled_at(reports, {3.0}, {3})[0]));
+}
+
+TEST(FirmwareMetrics, SettledThroughTheRunFolder) {
+    fs::path dir = fresh_dir("firmware-settled");
+    two_robots_sampled_twice(dir);
+    write_file(dir / "console.csv",
+               "time_s,robot,line\n0.2,0,\"metric hops 0\"\n0.4,1,\"metric hops 3\"\n0.6,1,\"metric hops 1\"\n"
+               "1.5,1,\"metric hops 1\"\n");
+    MetricsOutcome o = measure_run({dir, {}, {"hops.settled_s"}, {}, 0});
+    ASSERT_EQ(o.results.size(), 1u);
+    const MetricResult &settled = o.results[0];
+    EXPECT_EQ(settled.unit, "s");
+    // At 1 s both robots have reported, robot 1 last changed at 0.6 s; the
+    // report at 1.5 s repeats its value.
+    ASSERT_EQ(settled.swarm.size(), 2u);
+    EXPECT_EQ(settled.swarm[0].time_s, 1.0);
+    EXPECT_EQ(settled.swarm[0].value, 0.6);
+    EXPECT_EQ(settled.swarm[1].value, 0.6);
+    // Of a metric no robot reported: unknown, with what they did report.
+    try {
+        measure_run({dir, {}, {"hop.settled_s"}, {}, 0});
+        FAIL() << "no error";
+    } catch (const MetricsError &e) {
+        EXPECT_NE(std::string(e.what()).find("its robots reported hops"), std::string::npos) << e.what();
     }
 }

@@ -109,10 +109,20 @@ FirmwareReports read_firmware_reports(const fs::path &console_csv) {
     return reports;
 }
 
-FirmwareMean firmware_mean_at(const std::vector<FirmwareReport> &reports, const std::vector<double> &times) {
+namespace {
+
+// The reports in time order (each robot's own are already).
+std::vector<FirmwareReport> by_time(const std::vector<FirmwareReport> &reports) {
     std::vector<FirmwareReport> sorted = reports;
     std::stable_sort(sorted.begin(), sorted.end(),
                      [](const FirmwareReport &a, const FirmwareReport &b) { return a.time_s < b.time_s; });
+    return sorted;
+}
+
+}  // namespace
+
+FirmwareMean firmware_mean_at(const std::vector<FirmwareReport> &reports, const std::vector<double> &times) {
+    const std::vector<FirmwareReport> sorted = by_time(reports);
     std::map<int, double> latest;
     FirmwareMean out;
     size_t k = 0;
@@ -123,6 +133,24 @@ FirmwareMean firmware_mean_at(const std::vector<FirmwareReport> &reports, const 
         for (const auto &robot_value : latest) sum += robot_value.second;
         out.mean.push_back(latest.empty() ? std::numeric_limits<double>::quiet_NaN() : sum / (double)latest.size());
         out.robots.push_back(latest.size());
+    }
+    return out;
+}
+
+std::vector<double> firmware_settled_at(const std::vector<FirmwareReport> &reports, const std::vector<double> &times,
+                                        const std::vector<size_t> &robots) {
+    const std::vector<FirmwareReport> sorted = by_time(reports);
+    std::map<int, double> latest;
+    double changed = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> out;
+    size_t k = 0;
+    for (size_t i = 0; i < times.size(); i++) {
+        for (; k < sorted.size() && sorted[k].time_s <= times[i]; k++) {
+            auto [at, first] = latest.emplace(sorted[k].robot, sorted[k].value);
+            if (first || at->second != sorted[k].value) changed = sorted[k].time_s;
+            at->second = sorted[k].value;
+        }
+        out.push_back(latest.size() >= robots[i] ? changed : std::numeric_limits<double>::quiet_NaN());
     }
     return out;
 }

@@ -43,4 +43,15 @@ struct FirmwareMean {
 };
 FirmwareMean firmware_mean_at(const std::vector<FirmwareReport> &reports, const std::vector<double> &times);
 
+// "NAME.settled_s": at each of times (ascending), with robots[i] robots
+// in the run at times[i], the time of the latest report by then that gave
+// a robot a value other than its last (its first report counts too): the
+// time since which every robot holds its value. NaN until every robot
+// has reported.
+std::vector<double> firmware_settled_at(const std::vector<FirmwareReport> &reports, const std::vector<double> &times,
+                                        const std::vector<size_t> &robots);
+
+// The suffix that asks for a reported metric's settling time.
+constexpr const char *settled_suffix = ".settled_s";
+
 }  // namespace openswarm

@@ -56,6 +56,43 @@ MetricResult result_of(const BuiltinMetric &m) { return {m.name, m.unit, m.doc, 
                        where + " (`openswarm metrics --list` lists the built-ins)");
 }
 
+// The samples' times, and the last report's when it came after them.
+std::vector<double> with_last_report(const std::vector<double> &times, const std::vector<FirmwareReport> &reports) {
+    std::vector<double> at = times;
+    double last = -INFINITY;
+    for (const auto &p : reports) last = std::max(last, p.time_s);
+    if (at.empty() || last > at.back()) at.push_back(last);
+    return at;
+}
+
+// "NAME.settled_s" for a metric the robots reported as NAME.
+bool is_settled_request(const MetricRequest &q, const FirmwareReports &firmware) {
+    const std::string suffix = settled_suffix;
+    if (q.name.size() <= suffix.size() || q.name.compare(q.name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+    if (!firmware.by_name.count(q.name.substr(0, q.name.size() - suffix.size()))) return false;
+    if (!q.arguments.empty())
+        throw MetricsError("--metric " + q.text + ": " + q.name + " takes no arguments; give --metric " + q.name);
+    return true;
+}
+
+MetricResult settled_result(const std::string &name, const FirmwareReports &firmware, const std::vector<double> &times,
+                            const std::vector<size_t> &robots) {
+    const std::string of = name.substr(0, name.size() - std::string(settled_suffix).size());
+    MetricResult r{name, "s",
+                   "the time since which every robot holds the value it last reported as \"metric " + of +
+                       " VALUE\" (none until every robot has reported)",
+                   "firmware", {}, {}};
+    const auto &reports = firmware.by_name.at(of);
+    std::vector<double> at = with_last_report(times, reports);
+    std::vector<size_t> counts = robots;
+    counts.resize(at.size(), robots.empty() ? 0 : robots.back()); // as many after the last sample
+    std::vector<double> settled = firmware_settled_at(reports, at, counts);
+    for (size_t k = 0; k < at.size(); k++)
+        if (std::isfinite(settled[k])) r.swarm.push_back({at[k], settled[k]});
+    return r;
+}
+
 }  // namespace
 
 MetricsOutcome measure_run(const MetricsRequest &request) {
@@ -71,7 +108,7 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
     MetricsOutcome outcome;
     outcome.notes = firmware.warnings;
     std::vector<Measuring> measuring;
-    std::vector<std::string> from_firmware;
+    std::vector<std::string> from_firmware, settled;
     bool with_objects = false;
     auto measure = [&](const BuiltinMetric &m, const MetricRequest &q) {
         measuring.push_back({make_builtin_metric(m, q, world), outcome.results.size()});
@@ -93,6 +130,8 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
                 throw MetricsError("--metric " + q.name + " is given twice; give each metric once");
             if (const BuiltinMetric *m = find_builtin_metric(q.name)) {
                 measure(*m, q);
+            } else if (is_settled_request(q, firmware)) {
+                settled.push_back(q.name);
             } else if (firmware.by_name.count(q.name)) {
                 if (!q.arguments.empty())
                     throw MetricsError("--metric " + q.text + ": " + q.name +
@@ -106,6 +145,7 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
 
     // The samples, one at a time.
     std::vector<double> times;
+    std::vector<size_t> robots_at; // the robots at each time kept
     SnapshotReader reader(request.run_dir, with_objects);
     Snapshot s;
     double next_due = -INFINITY;
@@ -114,6 +154,7 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
         if (!(s.time_s >= next_due - 1e-9) && !reader.done()) continue;
         next_due = s.time_s + request.every_s;
         times.push_back(s.time_s);
+        robots_at.push_back(s.robots.size());
         for (auto &m : measuring) {
             double v = m.metric->value(s);
             if (std::isfinite(v)) outcome.results[m.result].swarm.push_back({s.time_s, v});
@@ -126,16 +167,15 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
     for (const auto &name : from_firmware) {
         const auto &reports = firmware.by_name.at(name);
         MetricResult r{name, "", "the robots' mean, reported as \"metric " + name + " VALUE\"", "firmware", {}, {}};
-        std::vector<double> at = times;
-        double last = -INFINITY;
-        for (const auto &p : reports) last = std::max(last, p.time_s);
-        if (at.empty() || last > at.back()) at.push_back(last); // a report after the last sample
+        std::vector<double> at = with_last_report(times, reports);
         FirmwareMean mean = firmware_mean_at(reports, at);
         for (size_t k = 0; k < at.size(); k++)
             if (std::isfinite(mean.mean[k])) r.swarm.push_back({at[k], mean.mean[k]});
         for (const auto &p : reports) r.robots[p.robot].push_back({p.time_s, p.value});
         outcome.results.push_back(r);
     }
+
+    for (const auto &name : settled) outcome.results.push_back(settled_result(name, firmware, times, robots_at));
 
     std::set<std::string> taken;
     for (const auto &r : outcome.results) taken.insert(r.name);
