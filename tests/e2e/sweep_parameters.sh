@@ -47,6 +47,10 @@ grep -q "^4 of 4 trials done (4 by an earlier run), 0 failed" again.log || fail 
 rebuilt=$(find app/build -newer stamp \( -name '*.o' -o -name '*.obj' -o -name '*.elf' -o -name '*.a' \) | head -5)
 test -z "$rebuilt" || fail "the resumed sweep rebuilt $rebuilt" again.log
 
+"$openswarm" config show -C app >show.log 2>&1 || fail "config show" show.log
+grep -qx "parameter HALF_PERIOD_MS 250 (10..5000): the LED's half period of blinking, in ms" show.log \
+    || fail "config show's parameter" show.log
+
 # One value for one build or run.
 "$openswarm" build -C app -D HALF_PERIOD_MS=500 >build.log 2>&1 || fail "build -D" build.log
 grep -q "^Built .*app/build/kilobot-p[0-9a-f]*/app.elf" build.log || fail "build -D's folder" build.log

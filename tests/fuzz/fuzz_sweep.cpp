@@ -12,7 +12,8 @@ void write_neighbours() {
     static bool written = false;
     if (written) return;
     written = true;
-    const char app[] = R"({"name": "fuzzed", "port": "kilobot"})";
+    const char app[] = R"({"name": "fuzzed", "port": "kilobot",
+  "parameters": {"SPEED": {"default": 50, "min": 0, "max": 255}}})";
     const char world[] = R"({"arena": {"width_mm": 500, "height_mm": 500}, "ir": {"range_mm": 80},
   "robots": [{"count": 3, "poses": [{"x_mm": 100, "y_mm": 100}]}, {"count": 2}]})";
     write_input("openswarm.json", reinterpret_cast<const uint8_t *>(app), sizeof app - 1);
@@ -28,6 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         openswarm::Sweep s = openswarm::load_sweep(path);
         for (size_t p = 0; p < s.points.size() && p < 64; p++) {
             (void)openswarm::point_world(s, p, s.trials - 1);
+            (void)openswarm::point_parameters(s, p);
             (void)openswarm::point_label(s, p);
         }
     } catch (const openswarm::ConfigError &) {

@@ -60,6 +60,9 @@ void add_config_command(CLI::App &app, const Paths &) {
                     for (const auto &t : c.threads)
                         std::printf("thread %s, stack %u bytes%s, priority %u\n", t.entry.c_str(), t.stack,
                                     t.stack ? "" : " (default)", t.priority);
+                    for (const auto &a : c.parameters)
+                        std::printf("parameter %s %ld (%ld..%ld)%s%s\n", a.name.c_str(), a.value, a.min, a.max,
+                                    a.doc.empty() ? "" : ": ", a.doc.c_str());
                 } else {
                     std::printf("%s is valid\n", c.file.string().c_str());
                 }
