@@ -9,7 +9,9 @@
 
 #include "sim.h"
 #include "faults/faults.h"
+#include "interrupt.h"
 #include "lockstep.h"
+#include "output/output.h"
 #include "native/native_load.h"
 #include "native/native_run.h"
 #include "progress.h"
@@ -203,6 +205,7 @@ static void run(const options *o) {
         for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
         progress_update(end);
         if ((all_stopped && o->robots > 0) || end == limit) break; /* none: run to the end */
+        if (interrupt_stop_here((double)end / nominal_hz)) break;
         if (counters_every != 0 && end >= next_counters) {
             print_counters(o, end);
             next_counters += counters_every;
@@ -275,6 +278,7 @@ static int run_main(int argc, char **argv) {
     if (o.profile) profile_print(o.robots);
     if (faults_finish() != 0) written = -1;
     if (o.world != NULL && world_run_finish() != 0) written = -1;
+    if (interrupt_caught()) return interrupt_finish(o.world != NULL && o.out_dir != NULL ? output_written() : NULL);
     int status = report(o.robots, &o);
     return status == 0 && (written != 0 || console_lost) ? EXIT_USAGE : status;
 }
@@ -282,6 +286,7 @@ static int run_main(int argc, char **argv) {
 /* Whatever the run printed reached the standard output, or the run fails
  * (a full disk under `> log` left the consoles cut short, exit 0). */
 int main(int argc, char **argv) {
+    interrupt_catch();
     int status = run_main(argc, argv);
     if (written_close(stdout, "the standard output", 0) != 0 && status == 0) status = EXIT_USAGE;
     return status;

@@ -108,7 +108,9 @@ static void usage(FILE *out) {
             "left open: printed when it happens) or its stack pointer went below the\n"
             "stack it is on (a thread's past its guard, the main stack into the RAM\n"
             "below it) or it stored through a pointer into the CPU's registers (a NULL\n"
-            "pointer), unless --allow-faults, 7 a firmware hung with interrupts masked.\n");
+            "pointer), unless --allow-faults, 7 a firmware hung with interrupts masked,\n"
+            "130 stopped by SIGINT (Ctrl-C), 143 by SIGTERM: the outputs then hold the run\n"
+            "up to that time (a second Ctrl-C ends it at once).\n");
 }
 
 /* A whole number in [lo, hi], or -1 after printing what was expected. */

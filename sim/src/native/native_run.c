@@ -12,6 +12,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "interrupt.h"
+#include "output/output.h"
 #include "native/native_air.h"
 #include "native/native_swarm.h"
 #include "progress.h"
@@ -209,6 +211,7 @@ static void run(const options *o) {
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         progress_update(end);
         if (all_stopped || end == limit) break;
+        if (interrupt_stop_here((double)end / nominal_hz)) break;
     }
     progress_end();
     native_swarm_end();
@@ -284,6 +287,8 @@ int native_run(const options *o) {
     stdout_flush();
     int console_lost = console_csv != NULL && console_csv_close(console_csv, o->console_csv, NULL, 0);
     int written = o->world != NULL ? world_run_finish() : 0;
+    if (interrupt_caught())
+        return interrupt_finish(o->world != NULL && o->out_dir != NULL ? output_written() : NULL);
     int status = report(o);
     return status == 0 && (written != 0 || console_lost) ? EXIT_USAGE : status;
 }

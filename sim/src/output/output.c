@@ -22,6 +22,9 @@ static struct {
     int failed;
 } out;
 
+/* What the last output_close wrote, for output_written. */
+static char written[4096];
+
 /* dir/name, or NULL when out of memory. */
 static char *path_in(const char *dir, const char *name)
 {
@@ -71,7 +74,7 @@ static int make_folder(const char *dir)
 
 static void close_all(void)
 {
-    tables_close(&out.tables);
+    tables_close(&out.tables, 0);
     video_close(&out.video);
     picture_free(&out.picture);
     history_free(&out.history);
@@ -141,6 +144,26 @@ int output_sample_add(const output_sample *s)
     return rc;
 }
 
+/* Writes one file that is written whole at the end, under path.part, then
+ * renamed (part_file.c); 0 when it is in place. */
+static int write_whole(const char *path, int (*write)(const char *part))
+{
+    char *part = path ? part_file_name(path) : NULL;
+    int rc = part ? write(part) : -1;
+    free(part);
+    return path ? part_file_finish(path, rc == 0) : -1;
+}
+
+static int write_picture(const char *part)
+{
+    return picture_write_png(&out.picture, part);
+}
+
+static int write_viewer(const char *part)
+{
+    return viewer_write(part, &out.history);
+}
+
 /* Appends ", name" (or "name" first) to the list of written files. */
 static void list_add(char *list, size_t size, const char *path)
 {
@@ -153,10 +176,10 @@ int output_close(void)
     if (!out.open)
         return -1;
     int rc = out.failed ? -1 : 0;
-    char written[4096] = "";
     char *path;
+    written[0] = 0;
 
-    if (tables_close(&out.tables) == 0) {
+    if (tables_close(&out.tables, 1) == 0) {
         path = path_in(out.dir, "trajectories.csv");
         list_add(written, sizeof written, path);
         free(path);
@@ -169,7 +192,7 @@ int output_close(void)
 
     picture_draw(&out.picture, &out.history, out.history.n - 1);
     path = path_in(out.dir, "final.png");
-    if (path && picture_write_png(&out.picture, path) == 0)
+    if (write_whole(path, write_picture) == 0)
         list_add(written, sizeof written, path);
     else
         rc = -1;
@@ -189,7 +212,7 @@ int output_close(void)
     }
 
     path = path_in(out.dir, "viewer.html");
-    if (path && viewer_write(path, &out.history) == 0)
+    if (write_whole(path, write_viewer) == 0)
         list_add(written, sizeof written, path);
     else
         rc = -1;
@@ -199,4 +222,14 @@ int output_close(void)
         fprintf(stderr, "openswarm-sim: wrote %s\n", written);
     close_all();
     return rc;
+}
+
+const char *output_written(void)
+{
+    return written;
+}
+
+void output_quieten(void)
+{
+    out.options.quiet = 1;
 }

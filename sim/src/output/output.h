@@ -52,7 +52,14 @@ int output_open(const output_options *o, const world_spec *w);
 /* One sample, in time order. -1 on a write error (reported). */
 int output_sample_add(const output_sample *s);
 /* Write what is written at the end (final.png, viewer.html), finish the
- * video, close the files; -1 if any of it failed (reported). */
+ * video, close the files; -1 if any of it failed (reported). Each file is
+ * written as NAME.part and renamed to NAME once whole (part_file.c):
+ * trajectories.csv and objects.csv are .part files while the run goes. */
 int output_close(void);
+/* The files the last output_close wrote, ", " between them ("" none). */
+const char *output_written(void);
+/* output_close names no files: the caller says what it wrote its way
+ * (an interrupted run, interrupt.h). */
+void output_quieten(void);
 
 #endif

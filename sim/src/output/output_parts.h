@@ -7,10 +7,18 @@
 #define OPENSWARM_OUTPUT_PARTS_H
 
 #include <stdio.h>
+#include <sys/types.h>
 
 #include <cairo.h>
 
 #include "output/output.h"
+
+/* ---- part_file.c: each file is written as NAME.part and renamed to NAME
+ * when whole, so a killed run never leaves half a file under its name. */
+char *part_file_name(const char *path); /* malloc'd "path.part", NULL out of memory */
+/* complete: rename path.part to path; otherwise remove path.part. -1
+ * after a message, or when not complete. */
+int part_file_finish(const char *path, int complete);
 
 /* ---- history.c: the run so far, copied sample by sample for final.png's
  * trails and viewer.html. It is bounded: past its budget (by default
@@ -54,7 +62,8 @@ typedef struct output_tables {
 
 int tables_open(output_tables *t, const char *robots_path, const char *objects_path);
 int tables_add(output_tables *t, const world_spec *w, const output_sample *s);
-int tables_close(output_tables *t);
+/* keep: rename the .part files into place (else they are removed). */
+int tables_close(output_tables *t, int keep);
 
 /* ---- picture.c: a top view of the world at one sample. The image fits
  * the arena in about 800 pixels on its long side; its width and height are
@@ -85,6 +94,7 @@ static inline int led_level_8bit(int level)
 /* ---- video.c: frames piped to ffmpeg, no files in between. */
 typedef struct video {
     FILE *pipe;
+    pid_t ffmpeg;
     char *path;
     int width, height;
     long frames;

@@ -1,7 +1,9 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* trajectories.csv (one row per robot per sample) and objects.csv (one row
  * per object per sample), written as the samples come so that a long run
- * can be followed with `tail -f` and a crash loses nothing before it. The
+ * can be followed with `tail -f` (as NAME.csv.part: renamed to NAME.csv
+ * when the run ends, so a NAME.csv is always whole) and a crash loses
+ * nothing before it. The
  * formats are fixed (time to the millisecond, positions to 0.01 mm,
  * headings to 0.1 degree): the same run gives the same bytes. */
 #include <errno.h>
@@ -10,14 +12,18 @@
 
 #include "output/output_parts.h"
 
+/* Written as path.part (part_file.c) until the run ends. */
 static FILE *open_table(const char *path, const char *header)
 {
-    FILE *f = fopen(path, "w");
+    char *part = part_file_name(path);
+    FILE *f = part ? fopen(part, "w") : NULL;
     if (!f) {
         fprintf(stderr, "openswarm-sim: cannot write %s: %s; choose another --out folder\n",
-                path, strerror(errno));
+                part ? part : path, strerror(errno));
+        free(part);
         return NULL;
     }
+    free(part);
     fprintf(f, "%s\n", header);
     return f;
 }
@@ -31,7 +37,7 @@ int tables_open(output_tables *t, const char *robots_path, const char *objects_p
     if (t->robots)
         t->objects = open_table(objects_path, "time_s,object,x_mm,y_mm");
     if (!t->robots_path || !t->objects_path || !t->robots || !t->objects) {
-        tables_close(t);
+        tables_close(t, 0);
         return -1;
     }
     return 0;
@@ -75,7 +81,8 @@ int tables_add(output_tables *t, const world_spec *w, const output_sample *s)
     return 0;
 }
 
-static int close_table(FILE *f, const char *path)
+/* keep: put it in place under its name, when whole. */
+static int close_table(FILE *f, const char *path, int keep)
 {
     if (!f)
         return 0;
@@ -83,17 +90,18 @@ static int close_table(FILE *f, const char *path)
     if (fclose(f) != 0 || bad) {
         fprintf(stderr, "openswarm-sim: cannot write %s: %s; is the disk full?\n", path,
                 strerror(errno));
+        part_file_finish(path, 0);
         return -1;
     }
-    return 0;
+    return part_file_finish(path, keep) != 0 && keep ? -1 : 0;
 }
 
-int tables_close(output_tables *t)
+int tables_close(output_tables *t, int keep)
 {
     int rc = 0;
-    if (close_table(t->robots, t->robots_path))
+    if (close_table(t->robots, t->robots_path, keep))
         rc = -1;
-    if (close_table(t->objects, t->objects_path))
+    if (close_table(t->objects, t->objects_path, keep))
         rc = -1;
     free(t->robots_path);
     free(t->objects_path);

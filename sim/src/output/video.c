@@ -1,9 +1,12 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
-/* video.mp4: every sample's picture piped raw to ffmpeg (popen), one frame
- * per sample at 30 frames a second, so no frame ever lands on the disk.
+/* video.mp4: every sample's picture piped raw to ffmpeg, one frame per
+ * sample at 30 frames a second, so no frame ever lands on the disk. ffmpeg
+ * writes video.mp4.part, renamed to video.mp4 once it exits well
+ * (part_file.c).
  * H.264 (libx264) when this ffmpeg has it, MPEG-4 part 2 otherwise;
  * yuv420p so that every player plays it. */
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,7 +49,7 @@ static int has_libx264(void)
     return found;
 }
 
-/* `path` in single quotes for the shell popen runs. */
+/* `path` in single quotes for the shell ffmpeg runs in. */
 static char *shell_quoted(const char *path)
 {
     size_t n = 3;
@@ -91,12 +94,43 @@ int video_check(void)
     return -1;
 }
 
+/* `command` by the shell, reading what the returned stream writes. In a
+ * process group of its own: Ctrl-C at the terminal signals the
+ * simulator's group, and the simulator then finishes the video
+ * (interrupt.h) rather than see ffmpeg stop half-way. */
+static FILE *start_ffmpeg(const char *command, pid_t *pid)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return NULL;
+    fcntl(fds[1], F_SETFD, FD_CLOEXEC); /* later children (e-puck controllers) must not hold it open */
+    fflush(NULL); /* the child must not inherit unwritten output */
+    *pid = fork();
+    if (*pid == 0) {
+        setpgid(0, 0);
+        dup2(fds[0], STDIN_FILENO);
+        close(fds[0]);
+        execl("/bin/sh", "sh", "-c", command, (char *)NULL);
+        _exit(127);
+    }
+    close(fds[0]);
+    FILE *f = *pid > 0 ? fdopen(fds[1], "w") : NULL;
+    if (!f) {
+        close(fds[1]);
+        if (*pid > 0)
+            waitpid(*pid, NULL, 0);
+    }
+    return f;
+}
+
 int video_open(video *v, const char *path, int width, int height)
 {
     memset(v, 0, sizeof *v);
     if (video_check() != 0)
         return -1;
-    char *quoted = shell_quoted(path);
+    char *part = part_file_name(path);
+    char *quoted = part ? shell_quoted(part) : NULL;
+    free(part);
     v->path = strdup(path);
     if (!quoted || !v->path) {
         free(quoted);
@@ -106,7 +140,7 @@ int video_open(video *v, const char *path, int width, int height)
     char command[8192];
     snprintf(command, sizeof command,
              "ffmpeg -hide_banner -loglevel error -nostdin -y -f rawvideo -pix_fmt %s -s %dx%d "
-             "-r 30 -i - -c:v %s -pix_fmt yuv420p %s",
+             "-r 30 -i - -c:v %s -pix_fmt yuv420p -f mp4 %s",
              cairo_pixel_format(), width, height, has_libx264() ? "libx264 -preset veryfast -crf 20" : "mpeg4 -q:v 3",
              quoted);
     free(quoted);
@@ -114,8 +148,7 @@ int video_open(video *v, const char *path, int width, int height)
     memset(&ignore, 0, sizeof ignore);
     ignore.sa_handler = SIG_IGN;
     sigaction(SIGPIPE, &ignore, &previous_sigpipe);
-    fflush(NULL); /* the child must not inherit unwritten output */
-    v->pipe = popen(command, "w");
+    v->pipe = start_ffmpeg(command, &v->ffmpeg);
     if (!v->pipe) {
         fprintf(stderr, "openswarm-sim: cannot start ffmpeg for %s: %s\n", path, strerror(errno));
         sigaction(SIGPIPE, &previous_sigpipe, NULL);
@@ -152,10 +185,14 @@ int video_close(video *v)
 {
     if (!v->pipe)
         return 0;
-    int status = pclose(v->pipe);
+    fclose(v->pipe); /* its end of file: ffmpeg finishes the file */
+    int status = 0;
+    pid_t done;
+    while ((done = waitpid(v->ffmpeg, &status, 0)) < 0 && errno == EINTR)
+        continue;
     sigaction(SIGPIPE, &previous_sigpipe, NULL);
     int rc = v->failed ? -1 : 0;
-    if (status == -1) {
+    if (done < 0) {
         fprintf(stderr, "openswarm-sim: ffmpeg writing %s: %s\n", v->path, strerror(errno));
         rc = -1;
     } else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
@@ -167,6 +204,8 @@ int video_close(video *v)
             fprintf(stderr, "openswarm-sim: ffmpeg was killed writing %s\n", v->path);
         rc = -1;
     }
+    if (part_file_finish(v->path, rc == 0) != 0)
+        rc = -1;
     free(v->path);
     memset(v, 0, sizeof *v);
     return rc;

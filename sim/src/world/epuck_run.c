@@ -6,6 +6,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "interrupt.h"
 #include "output/output.h"
 #include "world/epuck_link.h"
 #include "world/epuck_sensors.h"
@@ -97,6 +98,7 @@ static int run_steps(const options *o, const world_spec *spec, world *physics, i
     unsigned faults = 0;
     for (uint32_t k = 0; k < steps; k++) {
         uint32_t t_ms = k * STEP_MS;
+        if (interrupt_stop_here(t_ms / 1000.0)) break;
         if (exchange(physics, t_ms) != 0) return EXIT_CRASH;
         if (faults_now() != faults) {
             faults = faults_now();
@@ -141,7 +143,9 @@ int epuck_world_run(const options *o, const world_spec *spec, world *physics) {
     }
     if (status == 0) status = run_steps(o, spec, physics, recording);
     if (stop_controllers() && status == 0) status = EXIT_CRASH;
+    if (interrupt_caught()) output_quieten(); /* interrupt_finish names the files */
     if (recording && output_close() != 0 && status == 0) status = EXIT_USAGE;
+    if (interrupt_caught() && status == 0) return interrupt_finish(recording ? output_written() : NULL);
     struct timespec ended;
     clock_gettime(CLOCK_MONOTONIC, &ended);
     double wall = (double)(ended.tv_sec - began.tv_sec) + (ended.tv_nsec - began.tv_nsec) / 1e9;

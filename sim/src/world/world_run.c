@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "interrupt.h"
 #include "output/output.h"
 #include "world/epuck_run.h"
 #include "world/world.h"
@@ -351,6 +352,7 @@ int world_run_epucks(const options *o) {
 int world_run_finish(void) {
     step_over();
     world_stepper_stop();
+    if (interrupt_caught()) output_quieten(); /* interrupt_finish names the files */
     int status = recording ? output_close() : 0;
     if (sample_failed) status = -1;
     world_destroy(physics);
