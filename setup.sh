@@ -16,6 +16,7 @@ packages=(
   gdb-avr                                   # debugging Kilobot firmware at source level
   openmpi-bin libopenmpi-dev                # experiments spread over ranks and machines (mpirun)
   clang libclang-rt-14-dev                  # fuzzing the file readers (libFuzzer)
+  valgrind                                  # checking the simulator's memory (avr.wild_store)
 )
 
 missing=()

@@ -190,7 +190,10 @@ static FILE *console_csv;
 /* The robots in lockstep windows until the time is up or all stopped. */
 static void run(const options *o) {
     avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
-    avr_cycle_count_t counters_every = (avr_cycle_count_t)(o->counters_period * (double)nominal_hz);
+    /* -1 (no --counters) is not a period: converted to cycles, a negative
+     * number is undefined behaviour (UBSan, fuzz_sim_faults) */
+    avr_cycle_count_t counters_every =
+        o->counters_period > 0 ? (avr_cycle_count_t)(o->counters_period * (double)nominal_hz) : 0;
     avr_cycle_count_t next_counters = counters_every;
     lockstep_begin(robots, o->robots, nominal_hz, o->threads, o->profile);
     progress_start(o->progress, o->robots, nominal_hz);

@@ -430,6 +430,9 @@ void board_pins_again(avr_t *avr);
 /* The calibration blank, as a robot never calibrated: OSCCAL, the motor
  * duties and the distance tables read 0xFF (the uid stays). */
 void board_erase_calibration(avr_t *avr);
+/* Data memory and flash widened to every address an instruction can form
+ * (board/wide_memories.c says why); -1 when out of memory. */
+int board_widen_memories(avr_t *avr);
 
 /* power_down.c: SLEEP in power-down stops Timer0/1/2; call around each avr_run.
  * The tests are inline: they run at every instruction, and a call each

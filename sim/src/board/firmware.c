@@ -125,6 +125,10 @@ avr_t *firmware_load(const char *path) {
         return NULL;
     }
     avr_init(avr);
+    if (board_widen_memories(avr) != 0) {
+        fprintf(stderr, "openswarm-sim: %s: out of memory for the MCU's memories\n", path);
+        return NULL;
+    }
     avr->log = LOG_ERROR;
     avr_load_firmware(avr, &fw);
     if (hex) free(fw.flash);
