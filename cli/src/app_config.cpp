@@ -229,7 +229,9 @@ std::vector<std::string> names_of(const std::vector<DeviceInfo> &all) {
     return n;
 }
 
-void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
+// port_note: why the devices are checked for a port other than the file's
+// ("" when they are not).
+void load_devices(const fs::path &file, const json &devices, AppConfig &c, const std::string &port_note) {
     if (!devices.is_object())
         fail(file, "devices", "expected an object {\"motors\": {\"processor\": ...}}, found " + found(devices));
     const auto &known = devices_of(c.port);
@@ -239,6 +241,9 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c) {
         std::string path = "devices." + name;
         auto device = std::find_if(known.begin(), known.end(), [&](const DeviceInfo &i) { return i.name == name; });
         if (device == known.end()) {
+            if (!port_note.empty())
+                fail(file, path, "no device \"" + name + "\" on " + c.port + port_note + "; " + c.port +
+                                     "'s devices: " + join(names_of(known)));
             fail(file, path, "no device \"" + name + "\" on " + c.port + "; devices: " + join(names_of(known)) +
                                  did_you_mean(name, names_of(known)));
         }
@@ -349,7 +354,7 @@ bool is_kernel_switch(const std::string &key) {
     return false;
 }
 
-AppConfig load_app_config(const fs::path &dir) {
+AppConfig load_app_config(const fs::path &dir, const std::string &port) {
     AppConfig config;
     config.file = dir / "openswarm.json";
     std::error_code error;
@@ -386,10 +391,16 @@ AppConfig load_app_config(const fs::path &dir) {
         fail(file, "port", "unknown port \"" + config.port + "\"; known: " + join(port_names()) +
                                did_you_mean(config.port, port_names()));
     }
+    std::string port_note;
+    if (!port.empty() && port != config.port) {
+        port_note = " (--port " + port + "; the file's \"port\" is " + config.port + "): build for " + config.port +
+                    " (leave --port out), or remove this device for " + port;
+        config.port = port;
+    }
     if (doc.contains("kernel")) load_kernel(file, doc["kernel"], config);
     if (doc.contains("events")) load_events(file, doc["events"], config);
     if (doc.contains("threads")) load_threads(file, doc["threads"], config);
-    if (doc.contains("devices")) load_devices(file, doc["devices"], config);
+    if (doc.contains("devices")) load_devices(file, doc["devices"], config, port_note);
     if (doc.contains("kilobot")) load_kilobot(file, doc["kilobot"], config);
     if (doc.contains("epuck2")) load_epuck2(file, doc["epuck2"], config);
     if (doc.contains("parameters")) load_parameters(file, doc["parameters"], config);

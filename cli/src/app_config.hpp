@@ -84,8 +84,9 @@ const std::vector<std::pair<std::string, std::string>> &kernel_setting_macros();
 // openswarm.json, kept as 1/0)?
 bool is_kernel_switch(const std::string &key);
 
-// Read and validate dir/openswarm.json.
-AppConfig load_app_config(const std::filesystem::path &dir);
+// Read and validate dir/openswarm.json; for port (a known port's name, ""
+// for the file's own) if given: what `--port` builds.
+AppConfig load_app_config(const std::filesystem::path &dir, const std::string &port = "");
 
 // "file:line:column: message" plus the line and a caret, for a byte offset.
 std::string located_message(const std::filesystem::path &file, const std::string &text,

@@ -1,9 +1,12 @@
 #include "attribution.hpp"
 
+#include "app_project.hpp"
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
 
+#include "app_project.hpp"
 #include "commands/build.hpp"
 #include "process.hpp"
 
@@ -150,11 +153,12 @@ static std::string shell_word(const std::string &path) {
     return quoted + "'";
 }
 
-std::optional<Attribution> attribute_app(const Paths &paths, const fs::path &dir,
+std::optional<Attribution> attribute_app(const Paths &paths, const fs::path &dir, const std::string &name,
                                          const std::string &port, std::string &why) {
     fs::path build_dir = attribution_dir(dir, port);
     fs::path map = fs::absolute(build_dir / "link.map");
-    std::vector<std::string> configure = configure_command(paths, dir, build_dir, port);
+    forget_other_project(dir, port, build_dir);
+    std::vector<std::string> configure = configure_command(paths, dir, name, build_dir, port);
     // One image, one map: the e-puck2's robot image would write its own
     // over it.
     configure.insert(configure.end(), {"-DOPENSWARM_LTO=OFF", "-DOPENSWARM_ROBOT_IMAGE=OFF",

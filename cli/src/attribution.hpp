@@ -52,11 +52,11 @@ std::vector<Share> shares_of(const Attribution &a);
 // Where the attribution build goes: build/<port>-size.
 std::filesystem::path attribution_dir(const std::filesystem::path &dir, const std::string &port);
 
-// Build the app in dir for port once more, without link-time optimisation,
+// Build the app in dir (named name) for port once more, without link-time optimisation,
 // and read its link map; after the first time the build is incremental.
 // The app's own build must have run (it writes the generated files both
 // use). On failure nullopt, and why says what failed and what to do.
 std::optional<Attribution> attribute_app(const Paths &paths, const std::filesystem::path &dir,
-                                         const std::string &port, std::string &why);
+                                         const std::string &name, const std::string &port, std::string &why);
 
 }  // namespace openswarm

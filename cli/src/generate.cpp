@@ -13,8 +13,6 @@ namespace fs = std::filesystem;
 
 namespace openswarm {
 
-namespace {
-
 void write_if_changed(const fs::path &file, const std::string &content) {
     std::ifstream in(file);
     std::stringstream old;
@@ -24,6 +22,8 @@ void write_if_changed(const fs::path &file, const std::string &content) {
     out << content;
     if (!out) throw std::runtime_error("cannot write " + file.string());
 }
+
+namespace {
 
 std::string upper(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return (char)std::toupper(c); });

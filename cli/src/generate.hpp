@@ -23,6 +23,11 @@ void generate_app_files(const AppConfig &config, const Libraries &libraries,
 // Everything generate_app_files checks, without writing: `config check`.
 void check_app_files(const AppConfig &config, const Libraries &libraries);
 
+// Write content to file unless it holds it already: a file rewritten
+// unchanged would make CMake configure or compile again. Throws
+// std::runtime_error if it cannot.
+void write_if_changed(const std::filesystem::path &file, const std::string &content);
+
 // The OS_CFG_* values a generated openswarm_config.h sets (empty if it
 // cannot be read); the port's defaults hold for the others.
 std::map<std::string, unsigned> generated_config_values(const std::filesystem::path &header);

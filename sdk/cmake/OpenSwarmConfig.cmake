@@ -15,6 +15,7 @@
 
 get_filename_component(OPENSWARM_SDK_ROOT "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
 include(${OPENSWARM_SDK_ROOT}/cmake/OpenSwarmKernel.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/OpenSwarmApp.cmake)
 set(OpenSwarm_FOUND TRUE)
 
 # The app's own code is built with warnings on (`if (count = 3)` says so);
@@ -54,19 +55,32 @@ function(openswarm_app_parameters sources)
   endif()
 endfunction()
 
+# The app's C++ is C++14 without exceptions, RTTI or guarded statics:
+# avr-g++ 5.4 has no library to support them, and the SDK needs none.
+function(openswarm_app_flags target)
+  openswarm_app_warnings(${target})
+  set_target_properties(${target} PROPERTIES CXX_STANDARD 14)
+  target_compile_options(${target} PRIVATE
+    $<$<COMPILE_LANGUAGE:CXX>:-fno-exceptions -fno-rtti -fno-threadsafe-statics>)
+endfunction()
+
 # openswarm_add_firmware(<name> PORT <kilobot|epuck2|epuck|epuck_world|host> SOURCES <files...>
 #                        [CONFIG <header>])
+# Built by `openswarm build`, <name> must be openswarm.json's name, and
+# every source of the app is added to the files given (OpenSwarmApp.cmake).
 # Builds the kernel for the port and configuration, and the application
 # against it: <name>.elf for a robot, <name> for the host and epuck_world
 # (a process the world simulator runs, ports/epuck/host). For epuck2,
 # <name>.elf runs in QEMU and <name>-robot.elf (and .bin) is for the robot.
 function(openswarm_add_firmware name)
   cmake_parse_arguments(F "" "PORT;CONFIG" "SOURCES" ${ARGN})
+  openswarm_firmware_sources(${name} "${F_SOURCES}" F_SOURCES)
   if(NOT F_PORT)
     message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT is required (kilobot, epuck2, epuck, epuck_world or host)")
   endif()
   if(NOT F_SOURCES)
-    message(FATAL_ERROR "openswarm_add_firmware(${name}): SOURCES is required")
+    message(FATAL_ERROR "openswarm_add_firmware(${name}): no sources: give SOURCES, or, built by "
+      "`openswarm build`, put the app's .c or .cpp files in its src/ folder")
   endif()
   if(OPENSWARM_NATIVE AND NOT F_PORT STREQUAL "kilobot")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): the native mode (OPENSWARM_NATIVE) runs "
@@ -105,7 +119,7 @@ function(openswarm_add_firmware name)
   if(OPENSWARM_NATIVE)
     openswarm_add_native_robot(${name} BOARD ${F_PORT} SOURCES ${F_SOURCES} ${generated_sources}
       ${config_args} INCLUDES ${OPENSWARM_GENERATED_DIR})
-    openswarm_app_warnings(${name})
+    openswarm_app_flags(${name})
     return()
   endif()
   if(F_PORT STREQUAL "epuck_world")
@@ -115,7 +129,7 @@ function(openswarm_add_firmware name)
   endif()
   add_executable(${name} ${F_SOURCES} ${generated_sources})
   target_link_libraries(${name} PRIVATE ${name}_openswarm)
-  openswarm_app_warnings(${name})
+  openswarm_app_flags(${name})
   if(F_PORT STREQUAL "epuck_world")
     # The process's main is the world link's (ports/epuck/host); the app's
     # own, renamed, is what it runs on the simulated CPU.
@@ -158,7 +172,7 @@ function(openswarm_add_robot_image name sources generated_sources config_args)
   openswarm_add_kernel(${robot}_openswarm PORT epuck2 BOARD robot ${config_args})
   add_executable(${robot} ${sources} ${generated_sources})
   target_link_libraries(${robot} PRIVATE ${robot}_openswarm)
-  openswarm_app_warnings(${robot})
+  openswarm_app_flags(${robot})
   if(generated_sources)
     target_include_directories(${robot} PRIVATE ${OPENSWARM_GENERATED_DIR})
   endif()

@@ -8,8 +8,9 @@ openswarm=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 "$openswarm" new app --template blinky >/dev/null
 cd app
-# An app that refuses to configure without link-time optimisation, as the
-# attribution build is.
+# An app (with a CMakeLists.txt of its own) that refuses to configure
+# without link-time optimisation, as the attribution build is.
+printf 'cmake_minimum_required(VERSION 3.20)\nproject(app C ASM)\nfind_package(OpenSwarm REQUIRED)\nopenswarm_app()\n' > CMakeLists.txt
 printf 'if(NOT OPENSWARM_LTO)\n  message(FATAL_ERROR "needs link-time optimisation")\nendif()\n' >> CMakeLists.txt
 "$openswarm" build > build.log
 cat build.log

@@ -7,12 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "../app_config.hpp"
+#include "../app_project.hpp"
 #include "../app_sources.hpp"
 #include "../attribution.hpp"
 #include "../generate.hpp"
 #include "../link_errors.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
+#include "../suggest.hpp"
 #include "commands.hpp"
 
 namespace fs = std::filesystem;
@@ -76,6 +78,18 @@ void warn_main_stack(const PortInfo &info, const BuildResult &r, const AppConfig
            "; `openswarm size` measures this app's worst use in the simulator");
 }
 
+// Editors (clangd, VS Code) look for compile_commands.json in a build/
+// folder above the sources: the last exact build's (release or debug; the
+// native one compiles for the host) is copied to the app's build/.
+void publish_compile_commands(const fs::path &build_dir) {
+    std::error_code error;
+    fs::path to = build_dir.parent_path() / "compile_commands.json";
+    fs::copy_file(build_dir / "compile_commands.json", to, fs::copy_options::overwrite_existing, error);
+    if (error)
+        report("warning: could not copy " + (build_dir / "compile_commands.json").string() + " to " + to.string() +
+               " (" + error.message() + "); editors may read the one in " + build_dir.string());
+}
+
 struct BuildOptions {
     std::string dir = ".";
     std::string port;
@@ -97,7 +111,7 @@ std::vector<Share> measure_shares(const Paths &paths, const fs::path &dir, const
         "Measuring the kernel's and the app's shares: building once more, without link-time "
         "optimisation, in %s\n",
         attribution_dir(dir, r.port).string().c_str());
-    auto a = attribute_app(paths, dir, r.port, why);
+    auto a = attribute_app(paths, dir, r.name, r.port, why);
     return a ? shares_of(*a) : std::vector<Share>{};
 }
 
@@ -179,18 +193,23 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
 
 }  // namespace
 
-std::vector<std::string> configure_command(const Paths &paths, const fs::path &dir,
+std::vector<std::string> configure_command(const Paths &paths, const fs::path &dir, const std::string &name,
                                            const fs::path &build_dir, const std::string &port, bool native) {
+    // compile_commands.json: what clangd and editors read (copied beside
+    // the app's build folders by build_app).
     std::vector<std::string> configure = {"cmake",
                                           "-S",
-                                          dir.string(),
+                                          app_project_dir(dir, port).string(),
                                           "-B",
                                           build_dir.string(),
                                           "--log-level=WARNING",
                                           "-DOpenSwarm_DIR=" + paths.sdk_cmake().string(),
                                           "-DOPENSWARM_PORT=" + port,
+                                          "-DOPENSWARM_APP_NAME=" + name,
+                                          "-DOPENSWARM_APP_DIR=" + fs::weakly_canonical(fs::absolute(dir)).string(),
+                                          "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON",
                                           "-DOPENSWARM_GENERATED_DIR=" +
-                                              fs::absolute(generated_dir(dir, port)).string()};
+                                              fs::absolute(generated_dir(dir, port)).lexically_normal().string()};
     if (find_program("ninja")) configure.insert(configure.begin() + 1, {"-G", "Ninja"});
     const std::string &toolchain = port_info(port).toolchain;
     if (native)
@@ -223,9 +242,16 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     auto failed_log = [&] {
         if (brief) std::fprintf(stderr, "%s", log.c_str());
     };
+    if (!port_option.empty() && !is_port(port_option)) {
+        report("unknown port '" + port_option + "'; ports: " + join(port_names()) +
+               did_you_mean(port_option, port_names(), '\'') + " (`openswarm ports` says what each is)");
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
+    }
     AppConfig config;
     try {
-        config = load_app_config(dir);
+        config = load_app_config(dir, port_option);
+        check_app_project_name(dir, config);
     } catch (const ConfigError &e) {
         report(e.what());
         exit_code = EXIT_USAGE;
@@ -239,12 +265,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         return std::nullopt;
     }
     const ParameterValues changed = changed_parameters(config, parameters);
-    std::string port = port_option.empty() ? config.port : port_option;
-    if (!is_port(port)) {
-        report("unknown port '" + port + "'; `openswarm ports` lists them");
-        exit_code = EXIT_USAGE;
-        return std::nullopt;
-    }
+    const std::string port = config.port;
     const bool debug = variant == Variant::debug, native = variant == Variant::native;
     if (native && port != "kilobot") {
         report("--native: the native mode runs Kilobot apps so far, and this one is for " + port +
@@ -263,10 +284,10 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     fs::path build_dir = dir / "build" / ((debug ? port + "-debug" : native ? port + "-native" : port) +
                                           parameters_folder_suffix(changed));
     fs::path generated = generated_dir(dir, port);
-    config.port = port;
     const PortInfo &info = port_info(port);
     try {
         generate_app_files(config, libraries_used(dir, info), generated);
+        write_app_project(dir, config);
     } catch (const ConfigError &e) {
         report(e.what());
         exit_code = EXIT_USAGE;
@@ -276,7 +297,8 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    std::vector<std::string> configure = configure_command(paths, dir, build_dir, port, native);
+    forget_other_project(dir, port, build_dir);
+    std::vector<std::string> configure = configure_command(paths, dir, config.name, build_dir, port, native);
     configure.push_back(std::string("-DOPENSWARM_DEBUG=") + (debug ? "ON" : "OFF"));
     configure.push_back(std::string("-DOPENSWARM_WERROR=") + (werror ? "ON" : "OFF"));
     configure.push_back("-DOPENSWARM_PARAMETERS=" + parameters_cmake_list(changed));
@@ -311,7 +333,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
+    if (!native) publish_compile_commands(build_dir);
     BuildResult result;
+    result.name = config.name;
     result.port = port;
     result.parameters = changed;
     if (native) {

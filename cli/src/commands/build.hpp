@@ -29,6 +29,7 @@ struct BuildResult {
     // The flash the app may fill: the port's, or for the e-puck2 what the
     // app's "epuck2.bootloader" leaves the robot image (flash_budget).
     unsigned flash_total = 0;
+    std::string name; // the app's, from openswarm.json
     std::string port;
     // The port's image for the real robot, when it is not the one `run`
     // runs (the e-puck2's: <app>-robot.elf, and .bin beside it).
@@ -40,10 +41,11 @@ struct BuildResult {
 // Where `build` writes the files generated from openswarm.json.
 std::filesystem::path generated_dir(const std::filesystem::path &dir, const std::string &port);
 
-// The CMake configure command line for the app in dir, built in build_dir.
+// The CMake configure command line for the app in dir, named name (its
+// openswarm.json's), built in build_dir.
 // With native, for the native mode: the host's compiler, no toolchain.
 std::vector<std::string> configure_command(const Paths &paths, const std::filesystem::path &dir,
-                                           const std::filesystem::path &build_dir,
+                                           const std::string &name, const std::filesystem::path &build_dir,
                                            const std::string &port, bool native = false);
 
 // Where a command's progress (and CMake's) goes: standard error when

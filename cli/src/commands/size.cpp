@@ -166,7 +166,7 @@ int run_size(const std::string &dir, const Paths &paths, double seconds) {
     if (!built) return exit_code;
     std::printf("Building once more without link-time optimisation, to attribute every byte\n");
     std::string why;
-    auto attribution = attribute_app(paths, dir, built->port, why);
+    auto attribution = attribute_app(paths, dir, built->name, built->port, why);
     if (!attribution) {
         report("cannot attribute the image's bytes: " + why);
         return EXIT_FAILED;
