@@ -54,7 +54,7 @@ check "truncated ELF" 2 "openswarm-sim: truncated.elf: its section table \([0-9]
     "$sim" --time 0.01 truncated.elf
 : > empty.elf
 check "empty file" 2 "openswarm-sim: empty.elf: not an ELF file" "$sim" --time 0.01 empty.elf
-check "a folder" 2 "openswarm-sim: \.: Is a directory" "$sim" --time 0.01 .
+check "a folder" 2 "openswarm-sim: the firmware \. is a folder, not a regular file: give the FIRMWARE.elf" "$sim" --time 0.01 .
 # A symbol table whose entry size is 0 (simavr divided by it): its
 # sh_entsize field, 36 bytes into its section header.
 python3 - "$firmware" <<'EOF'
