@@ -4,7 +4,8 @@
 # a parameter (default 250). A sweep over it (sweep/paced.json: 250 and
 # 500 ms, 2 s runs) builds the app twice, once per value, and the blinks
 # follow the value (4 and 2); run again, it builds nothing and runs
-# nothing. `build -D` and `run -D` give one value; mistakes exit 2.
+# nothing; in the native mode likewise. `build -D` and `run -D` give one
+# value; `config show` lists it; mistakes exit 2.
 #   sweep_parameters.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2 here=$(cd "$(dirname "$0")" && pwd)
@@ -46,6 +47,14 @@ sleep 1
 grep -q "^4 of 4 trials done (4 by an earlier run), 0 failed" again.log || fail "a resumed run ran again" again.log
 rebuilt=$(find app/build -newer stamp \( -name '*.o' -o -name '*.obj' -o -name '*.elf' -o -name '*.a' \) | head -5)
 test -z "$rebuilt" || fail "the resumed sweep rebuilt $rebuilt" again.log
+
+# The native mode: its own build per value, the same blinks.
+sed 's/\(\[250, 500\]\)/\1, "fidelity": ["native"]/' sweep.json >native.json
+"$openswarm" experiment native.json --out n >n.log 2>&1 || fail "the native sweep" n.log
+test "$(grep -c '^Built .*app/build/kilobot-native\(-p[0-9a-f]\{16\}\)\?/app.so (native)$' n.log)" -eq 2 \
+    || fail "two native builds" n.log
+grep -qx '1,250,native,blinks,2,0,4,0,4,4' n/summary.csv && grep -qx '2,500,native,blinks,2,0,2,0,2,2' n/summary.csv \
+    || fail "native blinks follow the value" n/summary.csv
 
 "$openswarm" config show -C app >show.log 2>&1 || fail "config show" show.log
 grep -qx "parameter HALF_PERIOD_MS 250 (10..5000): the LED's half period of blinking, in ms" show.log \
