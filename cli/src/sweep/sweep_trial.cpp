@@ -1,12 +1,12 @@
 #include "sweep_trial.hpp"
 
 #include <fstream>
-#include <sstream>
 
 #include "../last_lines.hpp"
 #include "../metrics/metrics_error.hpp"
 #include "../metrics/run_metrics.hpp"
 #include "../process.hpp"
+#include "../trial_outcome.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -15,22 +15,6 @@ namespace openswarm {
 
 namespace {
 
-std::string text_of(const fs::path &file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-// FNV-1a, 64 bits: enough to tell two builds or two worlds apart.
-std::string fingerprint(const std::string &bytes) {
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
-    return text;
-}
-
 // The last lines of what the simulator said: why it failed.
 std::string tail(const std::string &output, size_t lines) {
     std::string said;
@@ -38,29 +22,22 @@ std::string tail(const std::string &output, size_t lines) {
     return said;
 }
 
-bool write_text(const fs::path &file, const std::string &text) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    return (bool)out;
-}
-
 // What the metrics of a trial depend on besides its outputs: the metrics
 // asked for, the scripts' text, the spacing of values.
 std::string measures_fingerprint(const Sweep &s) {
     std::string all;
     for (const auto &m : s.metrics) all += m + "\n";
-    for (const auto &script : s.scripts) all += script.string() + " " + fingerprint(text_of(script)) + "\n";
-    return fingerprint(all + std::to_string(s.every_s));
+    for (const auto &script : s.scripts) all += script.string() + " " + file_fingerprint(script) + "\n";
+    return text_fingerprint(all + std::to_string(s.every_s));
 }
 
 struct Fingerprints {
     std::string world, measures;
 };
 
-// Written last, through a temporary name: whole or absent. simulated: the
-// simulator's part went well (a failure was the measuring's).
-void write_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
+// Written last (trial_outcome.hpp). simulated: the simulator's part went
+// well (a failure was the measuring's).
+void write_trial_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
     json outcome = {{"status", t.failure.empty() ? "done" : "failed"},
                     {"simulated", simulated},
                     {"seed", t.seed},
@@ -68,15 +45,7 @@ void write_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
                     {"firmware", t.firmware_hash},
                     {"measures", f.measures}};
     if (!t.failure.empty()) outcome["reason"] = t.failure;
-    fs::path temporary = t.dir / "outcome.json.part";
-    std::error_code ec;
-    if (write_text(temporary, outcome.dump(2) + "\n")) fs::rename(temporary, t.dir / "outcome.json", ec);
-}
-
-json outcome_of(const fs::path &dir) {
-    std::ifstream in(dir / "outcome.json");
-    json outcome = json::parse(in, nullptr, false);
-    return !outcome.is_discarded() && outcome.is_object() ? outcome : json::object();
+    write_outcome(t.dir, outcome);
 }
 
 // The simulator ran this world with this firmware before, and its outputs
@@ -98,16 +67,22 @@ void measure(const Sweep &s, SweepTrial &t) {
 
 }  // namespace
 
-std::string file_fingerprint(const fs::path &file) {
-    std::error_code ec;
-    return fs::is_regular_file(file, ec) ? fingerprint(text_of(file)) : "";
+// Stopped by Ctrl-C or SIGTERM (the simulator's or a metric script's
+// run, or the tool's): pending, not failed; its outcome stays unwritten,
+// so the same command runs it again.
+bool stopped(SweepTrial &t, int status) {
+    if (!interrupted_status(status) && interrupted() == 0) return false;
+    t.pending = true;
+    t.failure = "not run yet";
+    forget_outcome(t.dir);
+    return true;
 }
 
 void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
     t.attempted = true;
     const std::string world = point_world(s, t.point, t.trial).dump(2) + "\n";
-    const Fingerprints f{fingerprint(world), measures_fingerprint(s)};
-    const json before = outcome_of(t.dir);
+    const Fingerprints f{text_fingerprint(world), measures_fingerprint(s)};
+    const json before = read_outcome(t.dir);
     std::error_code ec;
     if (simulated_before(t, before, f)) {
         t.reused = true;
@@ -116,10 +91,11 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
             return;
         t.remeasured = true;
         measure(s, t);
-        write_outcome(t, f, true);
+        if (!t.failure.empty() && stopped(t, 0)) return;
+        write_trial_outcome(t, f, true);
         return;
     }
-    fs::remove(t.dir / "outcome.json", ec);
+    forget_outcome(t.dir);
     fs::create_directories(t.dir, ec);
     if (ec) {
         t.failure = "cannot create the trial's folder " + t.dir.string() + ": " + ec.message();
@@ -134,6 +110,7 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
         {simulator.string(), "--quiet", "--no-progress", "--world", (t.dir / "world.json").string(), "--out",
          t.dir.string(), "--console-csv", (t.dir / "console.csv").string(), t.firmware.string()},
         output);
+    if (status != 0 && stopped(t, status)) return;
     if (status != 0) {
         t.refused = status == 2;
         std::string said = tail(output, 12);
@@ -141,12 +118,13 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
                     (said.empty() ? "" : ":\n" + said);
     } else {
         measure(s, t);
+        if (!t.failure.empty() && stopped(t, 0)) return;
     }
-    write_outcome(t, f, status == 0);
+    write_trial_outcome(t, f, status == 0);
 }
 
 void read_sweep_trial(SweepTrial &t) {
-    json outcome = outcome_of(t.dir);
+    json outcome = read_outcome(t.dir);
     std::string status = outcome.value("status", "");
     t.pending = status != "done" && status != "failed";
     t.failure = status == "done" ? "" : t.pending ? "not run yet" : outcome.value("reason", "failed");
