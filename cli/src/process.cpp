@@ -1,8 +1,11 @@
 #include "process.hpp"
 
+#include <array>
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cerrno>
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +13,38 @@
 namespace openswarm {
 
 namespace {
+
+// The programs running now, to pass a signal on to (0: a free place);
+// lock-free atomics are safe to read in a signal handler.
+std::array<std::atomic<pid_t>, 256> running{};
+std::atomic<int> caught{0};
+
+void pass_on(int signal_number, siginfo_t *info, void *) {
+    int none = 0;
+    caught.compare_exchange_strong(none, signal_number);
+    // si_code > 0: sent by the kernel, as a terminal's Ctrl-C is, to the
+    // whole foreground group: the programs have it already.
+    if (info != nullptr && info->si_code > 0) return;
+    for (auto &pid : running)
+        if (pid.load() > 0) kill(pid.load(), signal_number);
+}
+
+// A program started: noted while it runs, for pass_on.
+struct Running {
+    std::atomic<pid_t> *place = nullptr;
+    explicit Running(pid_t pid) {
+        for (auto &p : running) {
+            pid_t free = 0;
+            if (p.compare_exchange_strong(free, pid)) {
+                place = &p;
+                return;
+            }
+        }
+    }
+    ~Running() {
+        if (place != nullptr) place->store(0);
+    }
+};
 
 // Where the child's standard output (and error) go.
 enum class Streams { inherit, stdout_to_stderr, capture_stdout, capture_both };
@@ -25,7 +60,9 @@ enum class Streams { inherit, stdout_to_stderr, capture_stdout, capture_both };
 
 int exit_status_of(pid_t pid) {
     int status = 0;
-    if (waitpid(pid, &status, 0) < 0) return 127;
+    pid_t done;
+    while ((done = waitpid(pid, &status, 0)) < 0 && errno == EINTR) continue;
+    if (done < 0) return 127;
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
@@ -45,6 +82,7 @@ int run(const std::vector<std::string> &argv, Streams streams, std::string *outp
         }
         exec_child(argv);
     }
+    Running noted(pid);
     if (output != nullptr) {
         close(pipefd[1]);
         char buf[4096];
@@ -57,6 +95,22 @@ int run(const std::vector<std::string> &argv, Streams streams, std::string *outp
 
 }  // namespace
 
+void pass_interrupts_on() {
+    struct sigaction a {};
+    a.sa_sigaction = pass_on;
+    a.sa_flags = SA_SIGINFO | SA_RESTART; // reads and waits go on after it
+    sigemptyset(&a.sa_mask);
+    // Started with SIGINT ignored (a script's background job): it stays
+    // ignored, as the shell meant, and the programs inherit that.
+    struct sigaction was {};
+    if (sigaction(SIGINT, nullptr, &was) == 0 && was.sa_handler != SIG_IGN) sigaction(SIGINT, &a, nullptr);
+    sigaction(SIGTERM, &a, nullptr);
+}
+
+int interrupted() { return caught.load(); }
+
+bool interrupted_status(int status) { return status == 128 + SIGINT || status == 128 + SIGTERM; }
+
 std::string simulator_failure(int status) {
     switch (status) {
     case 2: return "the simulator refused its input (its message is above)";
@@ -67,6 +121,10 @@ std::string simulator_failure(int status) {
                    "into the CPU's registers (above: which, when): the run fails; a thread's stack "
                    "overflow wants a bigger \"stack\" in openswarm.json";
     case 7: return "the firmware hung with interrupts masked (above: since when, where)";
+    case 128 + SIGINT:
+    case 128 + SIGTERM:
+        return std::string("the run was interrupted by ") + (status == 128 + SIGINT ? "SIGINT" : "SIGTERM") +
+               " (above: at what simulated time, and the files it wrote for the run so far)";
     default: return "the firmware stopped with status " + std::to_string(status);
     }
 }
@@ -102,6 +160,7 @@ int run_program_lines(const std::vector<std::string> &argv,
         close(pipefd[1]);
         exec_child(argv);
     }
+    Running noted(pid);
     close(pipefd[1]);
     using clock = std::chrono::steady_clock;
     const auto deadline = clock::now() + std::chrono::duration<double>(timeout_seconds);

@@ -22,6 +22,20 @@ int capture_program(const std::vector<std::string> &argv, std::string &output);
 // failure the tool explains itself, rather than showing the tool's noise.
 int capture_program_and_errors(const std::vector<std::string> &argv, std::string &output);
 
+// From now on SIGINT and SIGTERM do not end the tool: they are noted
+// (interrupted()) and passed on to every program it runs, so each stops
+// in its own way (openswarm-sim writes the run so far and exits 130 or
+// 143). A signal from the terminal (Ctrl-C) is not passed on: the
+// terminal sends it to the programs too.
+void pass_interrupts_on();
+
+// The signal that interrupted the tool (SIGINT, SIGTERM), or 0.
+int interrupted();
+
+// An exit status that says the program was stopped by SIGINT or SIGTERM
+// (128 + the signal, as openswarm-sim and the shell report it).
+bool interrupted_status(int status);
+
 // What openswarm-sim's exit status says went wrong, for a person.
 std::string simulator_failure(int status);
 

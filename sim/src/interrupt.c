@@ -29,7 +29,10 @@ void interrupt_catch(void) {
     /* restarted: a write or read the signal lands in must not fail */
     a.sa_flags = SA_RESTART;
     sigemptyset(&a.sa_mask);
-    sigaction(SIGINT, &a, NULL);
+    /* Started with SIGINT ignored (a script's background job `sim &`): it
+     * stays ignored, so a Ctrl-C meant for the foreground leaves it be. */
+    struct sigaction was;
+    if (sigaction(SIGINT, NULL, &was) == 0 && was.sa_handler != SIG_IGN) sigaction(SIGINT, &a, NULL);
     sigaction(SIGTERM, &a, NULL);
 }
 

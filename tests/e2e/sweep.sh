@@ -52,9 +52,11 @@ cp a/results.csv first.csv
 grep -q "^8 of 8 trials done (8 by an earlier run), 0 failed" again.log || fail "a resumed run ran again" again.log
 cmp first.csv a/results.csv || fail "results changed on a second run"
 
-# Killed after its first trial (one at a time; SIGTERM, as a background
-# job ignores SIGINT), then run again: the rest runs, the results are
-# those of the whole run.
+# Killed after its first trial (one at a time; SIGTERM to the tool and
+# its simulator, as a job scheduler sends it, and as a background job
+# ignores SIGINT): exit 143, the trials done kept and gathered, the rest
+# pending; then run again: the rest runs, the results are those of the
+# whole run.
 setsid "$openswarm" experiment sweep.json --out b --jobs 1 >b1.log 2>&1 &
 group=$!
 for _ in $(seq 600); do
@@ -62,8 +64,12 @@ for _ in $(seq 600); do
     sleep 0.1
 done
 kill -TERM -- -"$group" 2>/dev/null || true
-wait "$group" || true
-test ! -e b/results.csv || fail "the killed sweep finished before it was killed (make it longer)" b1.log
+status=0
+wait "$group" || status=$?
+test "$status" -eq 143 || fail "the killed sweep: exit $status, not 143 (did it finish before it was killed?)" b1.log
+grep -q "^openswarm: interrupted by SIGTERM: [1-7] trials\? not run yet (trials.csv: pending)" b1.log \
+    || fail "the killed sweep's last word" b1.log
+grep -q ',pending,not run yet,' b/trials.csv || fail "the killed sweep's pending trials" b/trials.csv
 "$openswarm" experiment sweep.json --out b >b2.log 2>&1 || fail "the resumed sweep" b2.log
 grep -Eq "^8 of 8 trials done \(([1-7]) by an earlier run\)" b2.log || fail "the resumed sweep's count" b2.log
 cmp first.csv b/results.csv || fail "a resumed sweep's results differ"

@@ -54,8 +54,11 @@ def start(name, kind, extra=()):
     out = os.path.join(WORK, name)
     firmware = {"exact": [ELF], "native": [NATIVE], "epuck": []}[kind]
     command = [SIM, "--no-progress", "--world", world(name, kind), "--out", out, *extra, *firmware]
+    # SIGINT as from a terminal, even if this test started with it ignored
+    # (which the simulator respects: interrupt.c).
     return out, subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                                 env={**os.environ, "EPUCK_WHEELS": "300,200"})
+                                 env={**os.environ, "EPUCK_WHEELS": "300,200"},
+                                 preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
 
 def wait_under_way(name, out, proc):

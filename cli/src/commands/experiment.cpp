@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -13,12 +14,14 @@
 
 #include "../app_config.hpp"
 #include "../duration_text.hpp"
+#include "../fingerprint.hpp"
 #include "../metrics/object_clusters.hpp"
 #include "../experiment_plot.hpp"
 #include "../experiment_ranks.hpp"
 #include "../experiment_spec.hpp"
 #include "../process.hpp"
 #include "../results_folder.hpp"
+#include "../trial_outcome.hpp"
 #include "../sweep/sweep_run.hpp"
 #include "../sweep/sweep_spec.hpp"
 #include "../suggest.hpp"
@@ -49,8 +52,15 @@ struct Job {
     uint32_t seed;
     fs::path dir;
     std::vector<Sample> samples;
-    std::string failure; // empty when it ran
+    std::string failure; // empty when it ran; not_run_yet when stopped
+    bool reused = false; // done by an earlier run of the same command
 };
+
+// A trial stopped by Ctrl-C or SIGTERM: pending, not failed (the same
+// command runs it again).
+const char *const not_run_yet = "not run yet (interrupted)";
+
+bool pending(const Job &j) { return j.failure == not_run_yet; }
 
 // objects.csv (time_s,object,x_mm,y_mm) to the metrics at each time.
 std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
@@ -69,34 +79,58 @@ std::vector<Sample> metrics_of(const fs::path &objects_csv, double radius_mm) {
     return samples;
 }
 
+// What the trial runs: its world's text and the controller's bytes, as
+// its outcome.json records them (trial_outcome.hpp).
+nlohmann::json fingerprints_of(const std::string &world, const fs::path &program) {
+    return {{"world", fingerprint(world)}, {"controller", file_fingerprint(program)}};
+}
+
+// The trial's samples when an earlier run of the same command did it, in
+// the same world with the same controller.
+bool done_before(Job &job, const nlohmann::json &fingerprints, double radius_mm) {
+    nlohmann::json before = read_outcome(job.dir);
+    if (before.value("status", "") != "done" || before.value("world", "") != fingerprints["world"] ||
+        before.value("controller", "") != fingerprints["controller"])
+        return false;
+    job.samples = metrics_of(job.dir / "objects.csv", radius_mm);
+    job.reused = !job.samples.empty();
+    return job.reused;
+}
+
 void run_job(const Experiment &e, const Paths &paths, Job &job) {
     const ExperimentController &c = e.controllers[job.controller];
+    const std::string world = trial_world(e, job.seed, c.program);
+    nlohmann::json outcome = fingerprints_of(world, c.program);
+    if (done_before(job, outcome, e.object_radius_mm)) return;
+    forget_outcome(job.dir);
     std::error_code ec;
     fs::create_directories(job.dir, ec);
     if (ec) {
         job.failure = "cannot create the trial's folder " + job.dir.string() + ": " + ec.message();
         return;
     }
-    {
-        std::ofstream world(job.dir / "world.json");
-        world << trial_world(e, job.seed, c.program);
-        world.close();
-        if (!world) {
-            job.failure = "cannot write " + (job.dir / "world.json").string() + " (the disk full?)";
-            return;
-        }
+    if (!write_text(job.dir / "world.json", world)) {
+        job.failure = "cannot write " + (job.dir / "world.json").string() + " (the disk full?)";
+        return;
     }
     std::string output;
     int status = capture_program_and_errors({paths.simulator.string(), "--quiet", "--no-progress",
                                              "--world", (job.dir / "world.json").string(), "--out",
                                              job.dir.string()},
                                             output);
-    if (status != 0) {
-        job.failure = simulator_failure(status) + ":\n" + output;
+    if (status != 0 && (interrupted_status(status) || interrupted() != 0)) {
+        job.failure = not_run_yet; // no outcome.json: the next run does it
         return;
     }
-    job.samples = metrics_of(job.dir / "objects.csv", e.object_radius_mm);
-    if (job.samples.empty()) job.failure = "no objects.csv samples in " + job.dir.string();
+    if (status != 0) {
+        job.failure = simulator_failure(status) + ":\n" + output;
+    } else {
+        job.samples = metrics_of(job.dir / "objects.csv", e.object_radius_mm);
+        if (job.samples.empty()) job.failure = "no objects.csv samples in " + job.dir.string();
+    }
+    outcome["status"] = job.failure.empty() ? "done" : "failed";
+    if (!job.failure.empty()) outcome["reason"] = job.failure;
+    write_outcome(job.dir, outcome);
 }
 
 // Which rank runs a job: trial and controller both rotate the ranks, so
@@ -116,15 +150,20 @@ void run_all(const Experiment &e, const Paths &paths, std::vector<Job> &jobs, co
     const std::string who = ranks.size() > 1 ? "rank " + std::to_string(ranks.rank()) + " " : "";
     auto began = std::chrono::steady_clock::now();
     auto work = [&] {
-        for (size_t i; (i = next++) < mine.size();) {
+        for (size_t i; !interrupted() && (i = next++) < mine.size();) {
             size_t k = mine[i];
             run_job(e, paths, jobs[k]);
             std::lock_guard<std::mutex> lock(print);
+            if (pending(jobs[k])) {
+                std::printf("[%sstopped] %s, trial %d: %s\n", who.c_str(),
+                            e.controllers[jobs[k].controller].name.c_str(), jobs[k].trial + 1, not_run_yet);
+                continue;
+            }
             done++;
             double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
             const Job &j = jobs[k];
-            std::printf("[%s%zu/%zu] %s, trial %d: %s; about %s left\n", who.c_str(), done, mine.size(),
-                        e.controllers[j.controller].name.c_str(), j.trial + 1,
+            std::printf("[%s%zu/%zu] %s, trial %d: %s%s; about %s left\n", who.c_str(), done, mine.size(),
+                        e.controllers[j.controller].name.c_str(), j.trial + 1, j.reused ? "done before, " : "",
                         j.failure.empty()
                             ? ("largest cluster " + std::to_string((int)std::lround(j.samples.back().cluster * 100)) +
                                "% at " + duration_text(j.samples.back().time_s)).c_str()
@@ -178,7 +217,7 @@ std::vector<ControllerCurves> curves_of(const Experiment &e, const std::vector<J
         ControllerCurves cc{e.controllers[c].name, {}, {}, {}, {}, {}};
         std::vector<const Job *> mine;
         for (const Job &j : jobs)
-            if (j.controller == c && j.failure.empty()) mine.push_back(&j);
+            if (j.controller == c && j.failure.empty() && !j.samples.empty()) mine.push_back(&j);
         size_t n = mine.empty() ? 0 : mine[0]->samples.size();
         for (const Job *j : mine) n = std::min(n, j->samples.size());
         for (size_t k = 0; k < n; k++) {
@@ -286,6 +325,7 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
                     out.string().c_str());
     std::fflush(stdout);
     auto began = std::chrono::steady_clock::now();
+    pass_interrupts_on(); // Ctrl-C: the trials running stop, the rest wait for the next run
     run_all(e, paths, jobs, ranks, workers);
     gather(ranks, jobs);
     if (ranks.rank() != 0) return EXIT_OK;
@@ -293,9 +333,11 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     std::string why;
     bool written = write_results(e, jobs, out) && write_experiment_plot(e, curves, out, why);
     print_table(e, curves);
-    size_t failed = 0;
+    size_t failed = 0, not_run = 0;
     for (const Job &j : jobs)
-        if (!j.failure.empty()) {
+        if (pending(j) || (j.failure.empty() && j.samples.empty())) {
+            not_run++; // stopped, or never started after the interrupt
+        } else if (!j.failure.empty()) {
             failed++;
             report(e.controllers[j.controller].name + ", trial " + std::to_string(j.trial + 1) +
                    " (" + j.dir.string() + ") failed: " + j.failure);
@@ -304,8 +346,14 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     if (!written) report("cannot write the results into " + out.string() + ": " + why);
     std::printf("\n%zu of %zu trials ran in %s: %s, %s and .svg, each trial's final.png and "
                 "viewer.html\n",
-                jobs.size() - failed, jobs.size(), duration_text(spent).c_str(),
+                jobs.size() - failed - not_run, jobs.size(), duration_text(spent).c_str(),
                 (out / "results.csv").string().c_str(), (out / "results.png").string().c_str());
+    if (interrupted()) {
+        report(std::string("interrupted by ") + (interrupted() == SIGINT ? "SIGINT" : "SIGTERM") + ": " +
+               std::to_string(not_run) + " trial" + (not_run == 1 ? "" : "s") + " not run yet; the results are "
+               "of those done. Run the same command again to resume: finished trials are kept");
+        return 128 + interrupted();
+    }
     return failed || !written ? EXIT_FAILED : EXIT_OK;
 }
 

@@ -1,5 +1,6 @@
 // openswarm run: build the app, then run it in the simulator.
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -318,7 +319,16 @@ int run_app(RunOptions o, const Paths &paths) {
         std::printf("Running %s in the world %s %s\n", image.c_str(), o.world.c_str(),
                     world_duration(world_path).c_str());
     std::fflush(stdout); // before the simulator's output, which goes straight to ours
+    pass_interrupts_on(); // Ctrl-C or SIGTERM: the simulator writes the run so far
     int status = run_program(argv);
+    if (interrupted_status(status)) {
+        report(std::string("interrupted by ") + (status == 128 + SIGINT ? "SIGINT" : "SIGTERM") +
+               " at the simulated time the simulator names above; " +
+               (world ? "outputs written to " + o.out + " (open " + (fs::path(o.out) / "viewer.html").string() + ")"
+                      : std::string("the run's output above ends there")) +
+               "; run the same command again for the whole run");
+        return status; // 130 or 143, as the shell reports a program it stopped
+    }
     if (status != 0) {
         report(simulator_failure(status));
         // 2: it refused its input (a world file's mistake, ...): bad input,

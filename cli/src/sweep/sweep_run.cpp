@@ -1,6 +1,7 @@
 #include "sweep_run.hpp"
 
 #include <atomic>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -13,7 +14,9 @@
 #include "../duration_text.hpp"
 #include "../commands/build.hpp"
 #include "../commands/commands.hpp"
+#include "../process.hpp"
 #include "../results_folder.hpp"
+#include "../trial_outcome.hpp"
 #include "sweep_plot.hpp"
 #include "sweep_results.hpp"
 
@@ -132,10 +135,14 @@ Tally run_trials(const Sweep &s, const Paths &paths, std::vector<SweepTrial *> &
     Tally tally;
     auto began = std::chrono::steady_clock::now();
     auto work = [&] {
-        for (size_t i; !stop && (i = next++) < mine.size();) {
+        for (size_t i; !stop && !interrupted() && (i = next++) < mine.size();) {
             SweepTrial &t = *mine[i];
             run_sweep_trial(s, paths.simulator, t);
             std::lock_guard<std::mutex> lock(print);
+            if (t.pending) { // stopped by Ctrl-C or SIGTERM
+                std::printf("[%sstopped] point %zu, trial %d: not run yet (interrupted)\n", who.c_str(), t.point + 1, t.trial + 1);
+                continue;
+            }
             tally.done++;
             tally.reused += t.reused;
             tally.failed += !t.failure.empty();
@@ -224,10 +231,12 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
         std::fflush(stdout);
     }
     auto began = std::chrono::steady_clock::now();
+    pass_interrupts_on(); // Ctrl-C: the trials running stop, the rest wait for the next run
     Tally tally = run_trials(s, paths, mine, workers,
                              ranks.size() > 1 ? "rank " + std::to_string(ranks.rank()) + " " : "");
     ranks.barrier();
-    if (ranks.rank() != 0) return tally.refused ? EXIT_USAGE : tally.failed ? EXIT_FAILED : EXIT_OK;
+    if (ranks.rank() != 0)
+        return interrupted() ? 128 + interrupted() : tally.refused ? EXIT_USAGE : tally.failed ? EXIT_FAILED : EXIT_OK;
 
     // Every trial as its folder tells, wherever it ran.
     size_t pending = 0, failed = 0;
@@ -251,6 +260,12 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
                 duration_text(spent).c_str(), (out / "results.csv").string().c_str(),
                 (out / "summary.csv").string().c_str(), (out / "trials.csv").string().c_str(), plots.size(),
                 plots.size() == 1 ? "" : "s", (out / "plots").string().c_str(), out.string().c_str());
+    if (interrupted()) {
+        report(std::string("interrupted by ") + (interrupted() == SIGINT ? "SIGINT" : "SIGTERM") + ": " +
+               std::to_string(pending) + " trial" + (pending == 1 ? "" : "s") + " not run yet (trials.csv: pending); "
+               "the results above are of those done. Run the same command again to resume: finished trials are kept");
+        return 128 + interrupted();
+    }
     if (tally.refused) {
         report("the simulator refused a trial's world (its message is above): fix the sweep's parameters or the "
                "world, then run the same command again; finished trials are kept");

@@ -1,13 +1,13 @@
 #include "sweep_trial.hpp"
 
 #include <fstream>
-#include <sstream>
 
 #include "../fingerprint.hpp"
 #include "../last_lines.hpp"
 #include "../metrics/metrics_error.hpp"
 #include "../metrics/run_metrics.hpp"
 #include "../process.hpp"
+#include "../trial_outcome.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -16,13 +16,6 @@ namespace openswarm {
 
 namespace {
 
-std::string text_of(const fs::path &file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The last lines of what the simulator said: why it failed.
 std::string tail(const std::string &output, size_t lines) {
     std::string said;
@@ -30,19 +23,12 @@ std::string tail(const std::string &output, size_t lines) {
     return said;
 }
 
-bool write_text(const fs::path &file, const std::string &text) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    return (bool)out;
-}
-
 // What the metrics of a trial depend on besides its outputs: the metrics
 // asked for, the scripts' text, the spacing of values.
 std::string measures_fingerprint(const Sweep &s) {
     std::string all;
     for (const auto &m : s.metrics) all += m + "\n";
-    for (const auto &script : s.scripts) all += script.string() + " " + fingerprint(text_of(script)) + "\n";
+    for (const auto &script : s.scripts) all += script.string() + " " + file_fingerprint(script) + "\n";
     return fingerprint(all + std::to_string(s.every_s));
 }
 
@@ -50,9 +36,9 @@ struct Fingerprints {
     std::string world, measures;
 };
 
-// Written last, through a temporary name: whole or absent. simulated: the
-// simulator's part went well (a failure was the measuring's).
-void write_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
+// Written last (trial_outcome.hpp). simulated: the simulator's part went
+// well (a failure was the measuring's).
+void write_trial_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
     json outcome = {{"status", t.failure.empty() ? "done" : "failed"},
                     {"simulated", simulated},
                     {"seed", t.seed},
@@ -61,15 +47,7 @@ void write_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
                     {"parameters", t.parameters},
                     {"measures", f.measures}};
     if (!t.failure.empty()) outcome["reason"] = t.failure;
-    fs::path temporary = t.dir / "outcome.json.part";
-    std::error_code ec;
-    if (write_text(temporary, outcome.dump(2) + "\n")) fs::rename(temporary, t.dir / "outcome.json", ec);
-}
-
-json outcome_of(const fs::path &dir) {
-    std::ifstream in(dir / "outcome.json");
-    json outcome = json::parse(in, nullptr, false);
-    return !outcome.is_discarded() && outcome.is_object() ? outcome : json::object();
+    write_outcome(t.dir, outcome);
 }
 
 // The simulator ran this world with this firmware before, and its outputs
@@ -91,9 +69,15 @@ void measure(const Sweep &s, SweepTrial &t) {
 
 }  // namespace
 
-std::string file_fingerprint(const fs::path &file) {
-    std::error_code ec;
-    return fs::is_regular_file(file, ec) ? fingerprint(text_of(file)) : "";
+// Stopped by Ctrl-C or SIGTERM (the simulator's or a metric script's
+// run, or the tool's): pending, not failed; its outcome stays unwritten,
+// so the same command runs it again.
+bool stopped(SweepTrial &t, int status) {
+    if (!interrupted_status(status) && interrupted() == 0) return false;
+    t.pending = true;
+    t.failure = "not run yet";
+    forget_outcome(t.dir);
+    return true;
 }
 
 void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
@@ -103,7 +87,7 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
     // before there were any, so earlier sweeps resume).
     const std::string parameters = t.parameters.empty() ? "" : "parameters " + json(t.parameters).dump() + "\n";
     const Fingerprints f{fingerprint(world + parameters), measures_fingerprint(s)};
-    const json before = outcome_of(t.dir);
+    const json before = read_outcome(t.dir);
     std::error_code ec;
     if (simulated_before(t, before, f)) {
         t.reused = true;
@@ -112,10 +96,11 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
             return;
         t.remeasured = true;
         measure(s, t);
-        write_outcome(t, f, true);
+        if (!t.failure.empty() && stopped(t, 0)) return;
+        write_trial_outcome(t, f, true);
         return;
     }
-    fs::remove(t.dir / "outcome.json", ec);
+    forget_outcome(t.dir);
     fs::create_directories(t.dir, ec);
     if (ec) {
         t.failure = "cannot create the trial's folder " + t.dir.string() + ": " + ec.message();
@@ -130,6 +115,7 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
         {simulator.string(), "--quiet", "--no-progress", "--world", (t.dir / "world.json").string(), "--out",
          t.dir.string(), "--console-csv", (t.dir / "console.csv").string(), t.firmware.string()},
         output);
+    if (status != 0 && stopped(t, status)) return;
     if (status != 0) {
         t.refused = status == 2;
         std::string said = tail(output, 12);
@@ -137,12 +123,13 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
                     (said.empty() ? "" : ":\n" + said);
     } else {
         measure(s, t);
+        if (!t.failure.empty() && stopped(t, 0)) return;
     }
-    write_outcome(t, f, status == 0);
+    write_trial_outcome(t, f, status == 0);
 }
 
 void read_sweep_trial(SweepTrial &t) {
-    json outcome = outcome_of(t.dir);
+    json outcome = read_outcome(t.dir);
     std::string status = outcome.value("status", "");
     t.pending = status != "done" && status != "failed";
     t.failure = status == "done" ? "" : t.pending ? "not run yet" : outcome.value("reason", "failed");

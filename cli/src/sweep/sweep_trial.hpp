@@ -30,7 +30,7 @@ struct SweepTrial {
     ParameterValues parameters;     // the app's, as the point sets them
     // Filled by run_sweep_trial (or read_sweep_trial):
     bool attempted = false; // run_sweep_trial was called
-    bool pending = false;   // not run yet (by any rank, shard or run)
+    bool pending = false;   // not run yet (by any rank, shard or run), or stopped (Ctrl-C)
     bool reused = false;    // simulated by an earlier run of the sweep
     bool remeasured = false; // reused, and measured again: the metrics changed
     bool refused = false; // the simulator refused the world (bad input: the sweep stops)
@@ -39,9 +39,6 @@ struct SweepTrial {
     // (empty for a failed or pending trial).
     std::vector<TrialSeries> series;
 };
-
-// A short fingerprint of a file's bytes ("" when it cannot be read).
-std::string file_fingerprint(const std::filesystem::path &file);
 
 // Runs (or reuses) the trial, measures it and writes its outcome.json.
 void run_sweep_trial(const Sweep &s, const std::filesystem::path &simulator, SweepTrial &t);
