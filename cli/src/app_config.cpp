@@ -242,8 +242,8 @@ void load_devices(const fs::path &file, const json &devices, AppConfig &c, const
         auto device = std::find_if(known.begin(), known.end(), [&](const DeviceInfo &i) { return i.name == name; });
         if (device == known.end()) {
             if (!port_note.empty())
-                fail(file, path, "no device \"" + name + "\" on " + c.port + port_note + "; " + c.port +
-                                     "'s devices: " + join(names_of(known)));
+                fail(file, path, "no device \"" + name + "\" on " + c.port + port_note +
+                                     (known.empty() ? "" : "; " + c.port + "'s devices: " + join(names_of(known))));
             fail(file, path, "no device \"" + name + "\" on " + c.port + "; devices: " + join(names_of(known)) +
                                  did_you_mean(name, names_of(known)));
         }

@@ -42,6 +42,8 @@ int main(int argc, char **argv) {
     add_size_command(app, paths);
     add_config_command(app, paths);
     add_doctor_command(app, paths);
+    add_clean_command(app, paths);
+    add_completion_command(app, paths);
     std::vector<std::string> names;
     for (const auto *sub : app.get_subcommands({})) names.push_back(sub->get_name());
     if (argc > 1 && argv[1][0] != '-' &&

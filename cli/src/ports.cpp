@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "suggest.hpp"
+
 namespace openswarm {
 
 namespace {
@@ -163,6 +165,11 @@ const PortCosts &costs_of(const std::string &port) {
     const PortCosts *costs = costs_for(port);
     if (costs == nullptr) throw std::logic_error("no RAM costs for port " + port + " in footprint.cpp: add them");
     return *costs;
+}
+
+std::string unknown_port_message(const std::string &port) {
+    return "unknown port '" + port + "'; ports: " + join(port_names()) + did_you_mean(port, port_names(), '\'') +
+           " (`openswarm ports` says what each is)";
 }
 
 }  // namespace openswarm

@@ -116,6 +116,9 @@ std::string hex_address(unsigned address);
 
 const std::vector<PortInfo> &ports();
 std::vector<std::string> port_names();
+
+// What a --port that names no port is told: the ports, and the nearest.
+std::string unknown_port_message(const std::string &port);
 bool is_port(const std::string &name);
 const PortInfo &port_info(const std::string &name);
 

@@ -14,7 +14,6 @@
 #include "../link_errors.hpp"
 #include "../ports.hpp"
 #include "../process.hpp"
-#include "../suggest.hpp"
 #include "commands.hpp"
 
 namespace fs = std::filesystem;
@@ -243,8 +242,7 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         if (brief) std::fprintf(stderr, "%s", log.c_str());
     };
     if (!port_option.empty() && !is_port(port_option)) {
-        report("unknown port '" + port_option + "'; ports: " + join(port_names()) +
-               did_you_mean(port_option, port_names(), '\'') + " (`openswarm ports` says what each is)");
+        report(unknown_port_message(port_option));
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }

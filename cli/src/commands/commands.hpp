@@ -28,6 +28,9 @@ void add_size_command(CLI::App &app, const Paths &paths);
 void add_test_command(CLI::App &app, const Paths &paths);
 void add_experiment_command(CLI::App &app, const Paths &paths);
 void add_metrics_command(CLI::App &app, const Paths &paths);
+void add_clean_command(CLI::App &app, const Paths &paths);
+// Registered last: its script lists every command registered before it.
+void add_completion_command(CLI::App &app, const Paths &paths);
 
 // A number option's check: a finite number in [lo, hi] (CLI::Range lets
 // nan through: every comparison with it is false). The message names the

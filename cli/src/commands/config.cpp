@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "../app_config.hpp"
+#include "../app_project.hpp"
 #include "../app_sources.hpp"
 #include "../generate.hpp"
 #include "../ports.hpp"
@@ -12,6 +13,7 @@ namespace openswarm {
 
 void add_config_command(CLI::App &app, const Paths &) {
     auto dir = std::make_shared<std::string>(".");
+    auto port = std::make_shared<std::string>();
     CLI::App *cmd = app.add_subcommand("config", "Check or show the app's openswarm.json");
     cmd->require_subcommand(1);
     for (const char *name : {"check", "show"}) {
@@ -19,9 +21,16 @@ void add_config_command(CLI::App &app, const Paths &) {
         CLI::App *sub = cmd->add_subcommand(name, show ? "Print what openswarm.json resolves to"
                                                        : "Validate openswarm.json");
         sub->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
-        sub->callback([dir, show] {
+        sub->add_option("-p,--port", *port, "as built for this port (`build --port`; default: the app's)");
+        sub->callback([dir, port, show] {
+            if (!port->empty() && !is_port(*port)) {
+                report(unknown_port_message(*port));
+                exit_code = EXIT_USAGE;
+                return;
+            }
             try {
-                AppConfig c = load_app_config(*dir);
+                AppConfig c = load_app_config(*dir, *port);
+                check_app_project_name(*dir, c);
                 // What the build would refuse (pools, limits, names) is refused here.
                 check_app_files(c, libraries_used(*dir, port_info(c.port)));
                 if (show) {
@@ -64,7 +73,8 @@ void add_config_command(CLI::App &app, const Paths &) {
                         std::printf("parameter %s %ld (%ld..%ld)%s%s\n", a.name.c_str(), a.value, a.min, a.max,
                                     a.doc.empty() ? "" : ": ", a.doc.c_str());
                 } else {
-                    std::printf("%s is valid\n", c.file.string().c_str());
+                    std::printf("%s is valid%s\n", c.file.string().c_str(),
+                                port->empty() ? "" : (" for " + *port).c_str());
                 }
                 exit_code = EXIT_OK;
             } catch (const ConfigError &e) {

@@ -141,8 +141,7 @@ int run_new(NewOptions o, const Paths &paths) {
     }
     if (o.port.empty() && !t->ports.empty()) o.port = t->ports.front();
     if (!is_port(o.port)) {
-        report("unknown port '" + o.port + "'; ports: " + join(port_names()) +
-               did_you_mean(o.port, port_names(), '\''));
+        report(unknown_port_message(o.port));
         return EXIT_USAGE;
     }
     if (std::find(t->ports.begin(), t->ports.end(), o.port) == t->ports.end()) {

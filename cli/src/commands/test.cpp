@@ -23,6 +23,7 @@
 #include "../process.hpp"
 #include "../qemu_run.hpp"
 #include "../regular_file.hpp"
+#include "../suggest.hpp"
 #include "build.hpp"
 #include "commands.hpp"
 
@@ -285,7 +286,7 @@ bool runs_nowhere(const std::string &dir) {
 struct TestOptions {
     std::string dir = ".";
     std::string record;               // a test to write from a run
-    std::vector<std::string> options; // the run's, after --
+    std::vector<std::string> options; // the run's, after -- (--record); else the tests to run
     bool force = false;
 };
 
@@ -344,7 +345,28 @@ int record_test(const TestOptions &o, const Paths &paths) {
     return EXIT_OK;
 }
 
-int run_tests(const std::string &dir, const Paths &paths) {
+// The tests named (all when none is), in files; false, reported, if a
+// name is no test's.
+bool select_tests(std::vector<fs::path> &files, const std::vector<std::string> &names, const fs::path &tests) {
+    if (names.empty()) return true;
+    std::vector<std::string> known;
+    for (const auto &f : files) known.push_back(f.stem().string());
+    std::vector<fs::path> chosen;
+    for (const auto &name : names) {
+        auto at = std::find(known.begin(), known.end(), name);
+        if (at == known.end()) {
+            report("no test '" + name + "' (" + (tests / (name + ".trace")).string() + ")" +
+                   did_you_mean(name, known, '\'') + "; tests: " + join(known) +
+                   " (`openswarm test --record " + name + "` writes one)");
+            return false;
+        }
+        chosen.push_back(files[at - known.begin()]);
+    }
+    files = chosen;
+    return true;
+}
+
+int run_tests(const std::string &dir, const std::vector<std::string> &names, const Paths &paths) {
     fs::path tests = fs::path(dir) / "tests";
     std::vector<fs::path> files;
     if (fs::exists(tests))
@@ -356,6 +378,7 @@ int run_tests(const std::string &dir, const Paths &paths) {
                " (see `openswarm test --help`)");
         return EXIT_USAGE;
     }
+    if (!select_tests(files, names, tests)) return EXIT_USAGE;
     // A test file that cannot be read is bad input, refused before the build.
     std::vector<Expectation> expected;
     try {
@@ -393,7 +416,7 @@ int run_tests(const std::string &dir, const Paths &paths) {
 
 void add_test_command(CLI::App &app, const Paths &paths) {
     auto o = std::make_shared<TestOptions>();
-    CLI::App *cmd = app.add_subcommand("test", "Run the app's tests (tests/*.trace) in the simulator");
+    CLI::App *cmd = app.add_subcommand("test", "Run the app's tests (tests/*.trace, or those named) in the simulator");
     cmd->footer("A test is tests/NAME.trace: a line \"# run: <simulator options>\" (e.g. --time 1.2\n"
                 "--robots 2), then one expected LED or motor change a line: time_s,device,a,b,c\n"
                 "(robot 0) or time_s,robot,device,a,b,c. Times may be 5 ms off. Lines \"> TEXT\" are\n"
@@ -405,15 +428,21 @@ void add_test_command(CLI::App &app, const Paths &paths) {
                     "(simulator options after --; default --time 1)")
         ->type_name("NAME");
     cmd->add_flag("-f,--force", o->force, "with --record: replace an existing test");
-    cmd->add_option("simulator-options", o->options, "after --: the recorded run's simulator options")
-        ->type_name("");
+    // One list for both: CLI11 gives the words after -- to the first
+    // positional, so the names and --record's options cannot be two.
+    cmd->add_option("names-or-options", o->options,
+                    "the tests to run (NAME: tests/NAME.trace; all by default), or with --record, "
+                    "after --, the recorded run's simulator options")
+        ->type_name("NAME...");
     cmd->callback([o, &paths] {
-        if (o->record.empty() && (!o->options.empty() || o->force)) {
+        bool options_given = std::any_of(o->options.begin(), o->options.end(),
+                                         [](const std::string &w) { return w.rfind('-', 0) == 0; });
+        if (o->record.empty() && (options_given || o->force)) {
             report("options after -- and --force go with --record NAME");
             exit_code = EXIT_USAGE;
             return;
         }
-        exit_code = o->record.empty() ? run_tests(o->dir, paths) : record_test(*o, paths);
+        exit_code = o->record.empty() ? run_tests(o->dir, o->options, paths) : record_test(*o, paths);
     });
 }
 
