@@ -8,6 +8,7 @@
 #include "../json_checks.hpp"
 #include "../metrics/builtin_metrics.hpp"
 #include "../metrics/metrics_error.hpp"
+#include "../regular_file.hpp"
 #include "world_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -180,6 +181,9 @@ void load_metrics(Sweep &s, const json &doc) {
 }  // namespace
 
 bool is_sweep_file(const fs::path &file) {
+    // Not opened unless a regular file: a FIFO would block (issue 30); the
+    // clustering experiment's reader refuses it with what it is.
+    if (!not_a_regular_file(file).empty()) return false;
     std::ifstream in(file);
     json doc = json::parse(in, nullptr, false);
     return !doc.is_discarded() && doc.is_object() && doc.contains("world");
