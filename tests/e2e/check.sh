@@ -35,3 +35,7 @@ expect() {
         printf '%s\n' "$err"
     fi
 }
+
+# fail WHAT [FILE...]: stops the script with "FAILED: WHAT" and each FILE's
+# contents, to see why.
+fail() { echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; exit 1; }

@@ -8,7 +8,7 @@
 set -euo pipefail
 openswarm=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-fail() { echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; exit 1; }
+source "$(dirname "$0")/check.sh"
 
 "$openswarm" new g --template gradient >/dev/null
 "$openswarm" experiment g/experiments/ir_loss.json --trials 1 --duration 10 --out r >r.log 2>&1 || fail "the sweep" r.log

@@ -15,8 +15,8 @@ set -uo pipefail
 openswarm=$1 double=$2 work=$3 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 source "$here/check.sh"
-fail() { failed=$((failed + 1)); echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; }
-holds() { local what=$1; shift; if "$@"; then passed=$((passed + 1)); else fail "$what"; fi; }
+count_failure() { failed=$((failed + 1)); echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; }
+holds() { local what=$1; shift; if "$@"; then passed=$((passed + 1)); else count_failure "$what"; fi; }
 
 # wait_for TEST...: until the test holds (at most 600 s: the app's build
 # comes first, on a loaded machine).
@@ -50,12 +50,12 @@ whole_run() {
 }
 
 # ---- openswarm run --world, SIGINT then SIGTERM
-"$openswarm" new app --template disperse >/dev/null || fail "openswarm new"
+"$openswarm" new app --template disperse >/dev/null || count_failure "openswarm new"
 for signal in INT TERM; do
     out=out-$signal
     with_sigint "$openswarm" run -C app --world app/worlds/packed.json --time 3000 --out "$out" >"run-$signal.log" 2>&1 &
     pid=$!
-    wait_for test -s "$out/trajectories.csv.part" || fail "run $signal never got under way" "run-$signal.log"
+    wait_for test -s "$out/trajectories.csv.part" || count_failure "run $signal never got under way" "run-$signal.log"
     interrupt "$pid" "$signal"
     status=$?
     want=$((128 + $(kill -l "$signal")))
@@ -82,10 +82,10 @@ cat > clustering.json <<'JSON'
 }
 JSON
 export EPUCK_WHEELS=300,200
-"$openswarm" experiment clustering.json --out whole -j 1 >whole.log 2>&1 || fail "the uninterrupted experiment" whole.log
+"$openswarm" experiment clustering.json --out whole -j 1 >whole.log 2>&1 || count_failure "the uninterrupted experiment" whole.log
 with_sigint "$openswarm" experiment clustering.json --out resumed -j 1 >first.log 2>&1 &
 pid=$!
-wait_for grep -q '^\[1/3\] double, trial 1: largest cluster' first.log || fail "the experiment never finished a trial" first.log
+wait_for grep -q '^\[1/3\] double, trial 1: largest cluster' first.log || count_failure "the experiment never finished a trial" first.log
 interrupt "$pid" INT
 status=$?
 holds "experiment: SIGINT gave $status, not 130" test "$status" -eq 130
@@ -97,7 +97,7 @@ holds "experiment: trial 1's outcome was not kept" test -s resumed/trial-01-doub
 holds "experiment: the stopped trial has an outcome" test ! -e resumed/trial-02-double/outcome.json
 holds "experiment: results.csv is not trial 1's alone" \
     test "$(cut -d, -f1 resumed/results.csv | sort -u | tr '\n' ' ')" = "1 trial "
-"$openswarm" experiment clustering.json --out resumed -j 1 >second.log 2>&1 || fail "the resumed experiment" second.log
+"$openswarm" experiment clustering.json --out resumed -j 1 >second.log 2>&1 || count_failure "the resumed experiment" second.log
 holds "experiment: trial 1 was run again" grep -q '^\[1/3\] double, trial 1: done before, ' second.log
 holds "experiment: the resumed results differ from the uninterrupted run's" cmp -s whole/results.csv resumed/results.csv
 [ "$failed" -eq 0 ] || cat first.log second.log

@@ -12,7 +12,6 @@ set -euo pipefail
 openswarm=$1 work=$2 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 source "$here/check.sh"
-fail() { echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; exit 1; }
 
 "$openswarm" new app --template blinky >/dev/null
 cp "$here/metrics/reporter.c" app/main.c
