@@ -59,11 +59,11 @@ uintptr_t tag(int kind, int index) { return (uintptr_t(kind) << 24) | uintptr_t(
 struct world {
     const world_spec *spec = nullptr;
     b2World physics{b2Vec2(0.0f, 0.0f)};
-    b2Body *ground = nullptr; /* the walls and obstacles */
     /* What objects' friction joints hold on to: a static body with no
-     * shape. A joint turns off collisions between the bodies it joins
-     * (Box2D's collideConnected), so objects joined to the walls' body
-     * passed through every wall and obstacle (issue 30). */
+     * shape, not the walls' (build_walls): a joint turns off collisions
+     * between the bodies it joins (Box2D's collideConnected), so objects
+     * joined to the walls' body passed through every wall and obstacle
+     * (issue 30). */
     b2Body *floor = nullptr;
     /* The same walls and obstacles alone, for IR's rays: they are cast
      * while the physics steps on another thread (world_stepper.c), and a
@@ -100,14 +100,14 @@ void add_outline(b2Body *ground, const world_point *v, int n, std::set<EdgeKey> 
     }
 }
 
-b2Body *build_walls(b2World &in, const world_spec &s) {
+// The arena's walls and the obstacles, as one static body of edges.
+void build_walls(b2World &in, const world_spec &s) {
     b2BodyDef def;
     b2Body *ground = in.CreateBody(&def);
     world_point arena[4] = {{0, 0}, {s.width_mm, 0}, {s.width_mm, s.height_mm}, {0, s.height_mm}};
     std::set<EdgeKey> added;
     add_outline(ground, arena, 4, added);
     for (int i = 0; i < s.n_obstacles; i++) add_outline(ground, s.obstacles[i].v, s.obstacles[i].n, added);
-    return ground;
 }
 
 b2Body *add_disc(world &w, world_point at, double angle_deg, double radius_mm, double mass_kg) {
@@ -218,7 +218,7 @@ extern "C" {
 world *world_create(const world_spec *spec) {
     auto w = std::make_unique<world>();
     w->spec = spec;
-    w->ground = build_walls(w->physics, *spec);
+    build_walls(w->physics, *spec);
     b2BodyDef floor_def;
     w->floor = w->physics.CreateBody(&floor_def);
     build_walls(w->walls, *spec);
