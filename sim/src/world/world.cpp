@@ -228,8 +228,7 @@ world *world_create(const world_spec *spec) {
     for (int i = 0; i < spec->n_robots; i++) {
         Robot &r = w->robots[size_t(i)];
         /* Each robot its own stream, from the seed and its index alone. */
-        r.rng = seed * 0x100000001B3ull + uint64_t(i) * 0x9E3779B97F4A7C15ull;
-        world_random_next(&r.rng);
+        r.rng = world_random_stream(seed, uint64_t(i));
         kilobot_motors_draw(&r.motors, &r.rng);
         const world_robot &spec_robot = spec->robots[i];
         const bool epuck = spec->robot_kind == WORLD_ROBOT_EPUCK;

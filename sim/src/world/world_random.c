@@ -13,6 +13,13 @@ uint64_t world_random_next(uint64_t *state) {
     return z ^ (z >> 31);
 }
 
+uint64_t world_random_stream(uint64_t seed, uint64_t index) {
+    uint64_t state = seed;
+    uint64_t mixed_seed = world_random_next(&state);
+    state = mixed_seed ^ index;
+    return world_random_next(&state);
+}
+
 double world_random_uniform(uint64_t *state) {
     return (double)(world_random_next(state) >> 11) / 9007199254740992.0;
 }
