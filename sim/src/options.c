@@ -96,6 +96,7 @@ static void usage(FILE *out) {
             "      --out DIR        with --world: write trajectories.csv, objects.csv,\n"
             "                       final.png and viewer.html into DIR\n"
             "      --video          with --out: also video.mp4 (needs ffmpeg)\n"
+            "      --ids            with --out: number the robots in final.png and the video\n"
             "      --threads N      share the robots among N threads (default: one per core,\n"
             "                       at least 16 robots each); any N gives the same run\n"
             "      --progress       a status line on stderr while it runs (default: when\n"
@@ -265,6 +266,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"ir-loss", required_argument, 0, 'X'},
         {"world", required_argument, 0, 'w'},      {"out", required_argument, 0, 'o'},
         {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
+        {"ids", no_argument, 0, 'i' + 256},
         {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
         {"allow-faults", no_argument, 0, 'A' + 256},
         {"mask-limit", required_argument, 0, 'M' + 256}, {"main-stack", no_argument, 0, 'S' + 256},
@@ -329,6 +331,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'c' + 512: o->console_csv = optarg; break;
         case 'o': o->out_dir = optarg; break;
         case 'v': o->video = 1; break;
+        case 'i' + 256: o->ids = 1; break;
         case 'p': o->progress = 1; break;
         case 'P' + 256: o->progress = 0; break;
         case 'j': if ((v = number("--threads", optarg, 1, 256, "2")) < 0) return -1; o->threads = (int)v; break;
@@ -346,8 +349,8 @@ int parse_options(int argc, char **argv, options *o) {
     if (inputs_are_regular(argc - optind, argv + optind, &place, o) != 0) return -1;
     if (take_firmware(argc - optind, argv + optind, &place, o) != 0) return -1;
     if (o->world != NULL) return world_options_check(o);
-    if (o->out_dir != NULL || o->video) {
-        fprintf(stderr, "openswarm-sim: --out and --video record robots moving in a world: give "
+    if (o->out_dir != NULL || o->video || o->ids) {
+        fprintf(stderr, "openswarm-sim: --out, --video and --ids record robots moving in a world: give "
                         "--world FILE too (docs/world.md)\n");
         return -1;
     }

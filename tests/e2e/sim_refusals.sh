@@ -46,6 +46,8 @@ for world in kilobots.json epucks.json; do
 done
 expect 2 "--video records the run into --out DIR's video.mp4: give --out DIR too" \
     "$sim" --quiet --no-progress --world kilobots.json --video "$elf"
+expect 2 "--ids numbers the robots in --out DIR's final.png: give --out DIR too, or drop --ids" \
+    "$sim" --quiet --no-progress --world kilobots.json --ids "$elf"
 
 # An output that is the same file as an input: the input would be
 # overwritten (a world file named trajectories.csv, --out .).

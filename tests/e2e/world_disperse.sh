@@ -26,6 +26,11 @@ python3 "$(dirname "$0")/spread.py" app/out/packed/trajectories.csv 10 120
     || { cat short.log; exit 1; }
 grep -q "ran 1.000 s of simulated time (10 robots)" short.log || { cat short.log; exit 1; }
 test -s short/final.png -a -s short/viewer.html || { echo "--out short was not written"; cat short.log; exit 1; }
+# --ids: the same run (the same seed), its robots numbered in final.png.
+"$openswarm" run -C app --world app/worlds/packed.json --out short-ids --time 1 --ids >ids.log 2>&1 \
+    || { cat ids.log; exit 1; }
+cmp -s short/trajectories.csv short-ids/trajectories.csv || { echo "--ids changed the run"; exit 1; }
+if cmp -s short/final.png short-ids/final.png; then echo "--ids: final.png has no numbers"; exit 1; fi
 
 # Mistakes: bad usage (exit 2), refused before building, with the file
 # and what to do.

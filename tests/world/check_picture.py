@@ -1,9 +1,11 @@
 # Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later (see sim/COPYING).
-"""world.output_picture: final.png of output_driver's run. The layout is
+"""world.output_picture: final.png of output_driver's run, then of the same
+run with --ids. The layout is
 picture.c's: the arena's long side (400 mm) takes 768 pixels, 16 pixels of
 margin around it and a 30-pixel strip below, so 800 x 638 and a pixel at
 (16 + 1.92 x, 592 - 1.92 y) for the world's (x, y).
 usage: check_picture.py DRIVER OUT_DIR"""
+import math
 import os
 import shutil
 import subprocess
@@ -52,6 +54,33 @@ dark = sum(1 for x in range(16, 90) for y in range(608, 630) if sum(image.pixel(
 if dark < 20:
     failures.append(f"no time written at the bottom left ({dark} dark pixels)")
 
+# The legend beside the time: a swatch of each LED colour shown at the end.
+strip = [image.pixel(x, y) for x in range(100, 520) for y in range(600, 636)]
+for colour in ((255, 0, 0), (0, 255, 0), (85, 170, 255)):
+    if colour not in strip:
+        failures.append(f"no swatch of the LED colour {colour} in the legend below the arena")
+# Where robot 0 started, (50, 50): a dashed ring its size (16.5 mm), dark.
+ring = sum(1 for a in range(0, 360, 3)
+           if sum(at(50 + 16.5 * math.cos(math.radians(a)), 50 + 16.5 * math.sin(math.radians(a)))) < 200)
+if ring < 20:
+    failures.append(f"robot 0's start at (50, 50) is not marked ({ring} of 120 points on its ring dark)")
+
+
+def dark_beside(img, x, y):
+    """Dark pixels above right of robot (x, y), outside its disc (32 pixels across)."""
+    px, py = int(LEFT + x * SCALE), int(BOTTOM - y * SCALE)
+    return sum(1 for dx in range(16, 40) for dy in range(-40, -16)
+               if dx * dx + dy * dy > 35 * 35 and sum(img.pixel(px + dx, py + dy)) < 200)
+
+
+if dark_beside(image, 148, 50) > 0:
+    failures.append("a number beside robot 0 without --ids")
+p = subprocess.run([driver, out + "-ids", "--quiet", "--ids"], capture_output=True, text=True)
+numbered = png.read(os.path.join(out + "-ids", "final.png"))
+if p.returncode != 0 or dark_beside(numbered, 148, 50) < 5:
+    failures.append(f"--ids: no number written beside robot 0 (exit {p.returncode}) {p.stderr}")
+
 if failures:
     sys.exit("FAILED:\n  " + "\n  ".join(failures))
-print("final.png: 800x638, robots in their LED colours, obstacle, object, floor, time")
+print("final.png: 800x638, robots in their LED colours, obstacle, object, floor, time, "
+      "the LEDs' legend, the starts; --ids numbers the robots")

@@ -8,7 +8,7 @@
  *   robot 2: still at (320, 120), heading -90; LED off, (1, 2, 3) from 2.0 s
  *   object 0: (100 + 2 t, 220), radius 20
  * IR links join robots within 100 mm, both ways.
- * usage: output_driver OUT_DIR [--video] [--quiet] [--history-bytes N] */
+ * usage: output_driver OUT_DIR [--video] [--quiet] [--ids] [--history-bytes N] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,7 +19,7 @@
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: output_driver OUT_DIR [--video] [--quiet] [--history-bytes N]\n");
+        fprintf(stderr, "usage: output_driver OUT_DIR [--video] [--quiet] [--ids] [--history-bytes N]\n");
         return 2;
     }
     output_options o = {.dir = argv[1]};
@@ -28,6 +28,8 @@ int main(int argc, char **argv)
             o.video = 1;
         else if (!strcmp(argv[i], "--quiet"))
             o.quiet = 1;
+        else if (!strcmp(argv[i], "--ids"))
+            o.ids = 1;
         else if (!strcmp(argv[i], "--history-bytes") && i + 1 < argc)
             o.history_bytes = strtoul(argv[++i], NULL, 10);
     }

@@ -50,6 +50,7 @@ struct RunOptions {
     std::string world; // --world FILE, relative to where the tool was started
     std::string out;   // --out DIR; empty: <app dir>/out/<world file's stem>
     bool video = false;
+    bool ids = false;
     bool trace = false; // with --world; without it the trace is always on
     bool native = false; // --native, or the world's "fidelity": "native"
     std::vector<std::string> simavr_only; // such options given, for a port QEMU runs
@@ -115,7 +116,8 @@ bool world_options_usable(const RunOptions &o, const std::string &port) {
     }
     std::vector<std::string> refused;
     for (const auto &name : o.simavr_only)
-        if (name != "--world" && name != "--out" && name != "--video" && name != "--trace")
+        if (name != "--world" && name != "--out" && name != "--video" && name != "--ids" &&
+            name != "--trace")
             refused.push_back(name);
     if (refused.empty()) return true;
     report(join(refused) + ": not for the " + port + " port, whose robots the world file places; "
@@ -281,6 +283,7 @@ int run_app(RunOptions o, const Paths &paths) {
     if (world) {
         argv.insert(argv.end(), {"--world", world_path, "--out", o.out});
         if (o.video) argv.push_back("--video");
+        if (o.ids) argv.push_back("--ids");
         // A Kilobot's console lines (its `metric NAME VALUE` reports) and the
         // world beside the trajectories: `openswarm metrics OUT` needs no more.
         if (!(is_port(port) && port_info(port).runner == Runner::world)) {
@@ -375,6 +378,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "here (default: <app>/out/<world file's name>)")
         ->type_name("DIR")->needs(world);
     cmd->add_flag("--video", o->video, "with --world: also video.mp4 (needs ffmpeg)")->needs(world);
+    cmd->add_flag("--ids", o->ids, "with --world: number the robots in final.png and the video")->needs(world);
     cmd->add_flag("--trace", o->trace,
                   "print every robot's LED and motor changes (without --world, always)");
     cmd->add_option("--ir-range", o->ir_range,
@@ -431,7 +435,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
         for (const char *name : {"--robots", "--distance", "--line", "--positions", "--world",
                                  "--ir-range", "--vcd", "--ohc", "--profile", "--ir-log", "--timestamps",
                                  "--clock-spread", "--ir-loss", "--first", "--trace", "--out",
-                                 "--video"})
+                                 "--video", "--ids"})
             if (cmd->count(name) > 0) o->simavr_only.push_back(name);
         if (!o->simulator_options.empty()) o->simavr_only.push_back("options after --");
         exit_code = run_app(*o, paths);

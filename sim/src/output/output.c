@@ -4,6 +4,7 @@
  * comes; final.png and viewer.html are written at the end, from the run
  * kept in memory. */
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -107,6 +108,7 @@ int output_open(const output_options *o, const world_spec *w)
     history_init(&out.history, w, o->history_bytes);
     if (picture_init(&out.picture, w))
         goto fail;
+    out.picture.ids = o->ids;
     if (o->video) {
         char *mp4 = path_in(dir, "video.mp4");
         rc = mp4 ? video_open(&out.video, mp4, out.picture.width, out.picture.height) : -1;
@@ -190,6 +192,8 @@ int output_close(void)
         rc = -1;
     }
 
+    out.picture.trail_s = INFINITY; /* where they went, start to end */
+    out.picture.starts = 1;
     picture_draw(&out.picture, &out.history, out.history.n - 1);
     path = path_in(out.dir, "final.png");
     if (write_whole(path, write_picture) == 0)

@@ -35,6 +35,7 @@ typedef struct output_options {
     const char *dir;      /* created if missing */
     int video;            /* also write video.mp4 (needs ffmpeg on the PATH) */
     int quiet;            /* no list of written files at the end */
+    int ids;              /* final.png and the video number the robots (--ids) */
     size_t history_bytes; /* the samples kept for final.png and viewer.html; 0: 64 MB */
 } output_options;
 

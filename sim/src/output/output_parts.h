@@ -1,7 +1,7 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* The parts output.c puts together, one file each: the run kept so far
  * (history.c), the CSV files (trajectories.c), one frame drawn with Cairo
- * (picture.c), the ffmpeg pipe (video.c) and the browser player
+ * (picture.c, the strip below it picture_footer.c), the ffmpeg pipe (video.c) and the browser player
  * (viewer.c). Each reports its own errors on stderr, naming the path. */
 #ifndef OPENSWARM_OUTPUT_PARTS_H
 #define OPENSWARM_OUTPUT_PARTS_H
@@ -76,6 +76,9 @@ typedef struct picture {
     double scale;              /* pixels per mm */
     double origin_x, origin_y; /* pixel of the arena's (0, 0) corner */
     double robot_radius_mm;
+    double trail_s; /* how far back the trails reach; 0: 15 s (a video's frames) */
+    int starts;     /* mark where each robot started (final.png) */
+    int ids;        /* write each robot's number beside it (--ids) */
 } picture;
 
 int picture_init(picture *p, const world_spec *w);
@@ -83,6 +86,9 @@ int picture_init(picture *p, const world_spec *w);
  * world.json sets it up, before any sample. */
 void picture_draw(picture *p, const output_history *h, int k);
 void picture_to_pixel(const picture *p, double x_mm, double y_mm, double *px, double *py);
+/* picture_footer.c: the strip below the arena at time_s, with the legend
+ * of the robots' LEDs (robots NULL: before any sample). */
+void picture_draw_footer(picture *p, const world_spec *w, double time_s, const output_robot *robots);
 int picture_write_png(picture *p, const char *path);
 void picture_free(picture *p);
 /* A Kilobot LED channel (0..3) as an 8-bit intensity. */

@@ -1,8 +1,9 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* One frame of the world seen from above, drawn with Cairo: final.png is
- * the last sample's, video.mp4 is every sample's. The arena's long side
- * takes 768 pixels; a strip below it holds the time and a scale bar, so
- * neither ever hides a robot. y points up in the world and down in the
+ * the last sample's, with every robot's start and whole path, video.mp4
+ * is every sample's, with the last 15 s of the paths. The arena's long side
+ * takes 768 pixels; a strip below it holds the time, the LEDs' legend and
+ * a scale bar (picture_footer.c), so none ever hides a robot. y points up in the world and down in the
  * image. */
 #include <errno.h>
 #include <math.h>
@@ -10,33 +11,9 @@
 #include <string.h>
 
 #include "output/output_parts.h"
+#include "output/picture_style.h"
 
-enum { MARGIN_PX = 16, FOOTER_PX = 30, ARENA_LONG_SIDE_PX = 768 };
-static const double trail_s = 15.0; /* how far back the trails reach */
-
-typedef struct rgb {
-    double r, g, b;
-} rgb;
-#define RGB8(r, g, b) ((rgb){(r) / 255.0, (g) / 255.0, (b) / 255.0})
-
-/* Colours (tests/world/check_picture.py reads some of them back). */
-#define BACKGROUND RGB8(214, 218, 224)
-#define FLOOR RGB8(248, 247, 242)
-#define GRID RGB8(230, 229, 222)
-#define BORDER RGB8(60, 62, 70)
-#define OBSTACLE RGB8(80, 80, 88)
-#define OBJECT RGB8(205, 55, 45)
-#define OBJECT_EDGE RGB8(130, 25, 20)
-#define ROBOT_OFF RGB8(150, 150, 150)
-#define ROBOT_EDGE RGB8(25, 25, 30)
-#define LIGHT_CORE RGB8(255, 214, 0)
-#define LIGHT_EDGE RGB8(190, 120, 0)
-#define TEXT RGB8(30, 30, 35)
-
-static void set(cairo_t *cr, rgb c)
-{
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
-}
+static const double video_trail_s = 15.0; /* how far back a frame's trails reach */
 
 int picture_init(picture *p, const world_spec *w)
 {
@@ -190,11 +167,13 @@ static void draw_objects(picture *p, const world_spec *w, const world_point *at)
     }
 }
 
-/* Each robot's path over the last trail_s seconds, faint. */
+/* Each robot's path over the last trail_s seconds (all of it in
+ * final.png), faint. */
 static void draw_trails(picture *p, const output_history *h, int k)
 {
     cairo_t *cr = p->cr;
     const int nr = h->world->n_robots;
+    const double trail_s = p->trail_s > 0 ? p->trail_s : video_trail_s;
     if (k < 1)
         return;
     int first = k;
@@ -210,6 +189,49 @@ static void draw_trails(picture *p, const output_history *h, int k)
             (j == first ? cairo_move_to : cairo_line_to)(cr, r->x_mm, r->y_mm);
         }
         cairo_stroke(cr);
+    }
+}
+
+/* Where each robot started: a dashed ring its size, so the trail from it
+ * reads as "from here to there". */
+static void draw_starts(picture *p, const world_spec *w)
+{
+    cairo_t *cr = p->cr;
+    const double dash = 3 / p->scale;
+    world_coordinates(p);
+    line_px(p, 1.5);
+    cairo_set_dash(cr, &dash, 1, 0);
+    set(cr, ROBOT_EDGE);
+    for (int i = 0; i < w->n_robots; i++) {
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, w->robots[i].at.x, w->robots[i].at.y, p->robot_radius_mm, 0, 2 * M_PI);
+    }
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0);
+}
+
+/* Each robot's number (trajectories.csv's `robot`) above its right side,
+ * dark on a white halo so that it reads on any floor and any LED. */
+static void draw_ids(picture *p, const world_spec *w, const output_robot *robots)
+{
+    cairo_t *cr = p->cr;
+    cairo_identity_matrix(cr);
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, 11);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (int i = 0; i < w->n_robots; i++) {
+        const world_point at = robots ? (world_point){robots[i].x_mm, robots[i].y_mm} : w->robots[i].at;
+        double px, py;
+        picture_to_pixel(p, at.x + 0.7 * p->robot_radius_mm, at.y + 0.7 * p->robot_radius_mm, &px, &py);
+        char text[16];
+        snprintf(text, sizeof text, "%d", i);
+        cairo_move_to(cr, px + 1, py - 1);
+        cairo_text_path(cr, text);
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_set_line_width(cr, 3);
+        cairo_stroke_preserve(cr);
+        set(cr, TEXT);
+        cairo_fill(cr);
     }
 }
 
@@ -259,56 +281,6 @@ static void draw_robots(picture *p, const world_spec *w, const output_robot *rob
     }
 }
 
-/* A round length at most 200 pixels long: 1, 2 or 5 times a power of ten. */
-static double scale_bar_mm(double scale)
-{
-    const double want = 200 / scale;
-    double step = pow(10, floor(log10(want)));
-    if (step * 5 <= want)
-        return step * 5;
-    if (step * 2 <= want)
-        return step * 2;
-    return step;
-}
-
-static void draw_footer(picture *p, const world_spec *w, double time_s)
-{
-    cairo_t *cr = p->cr;
-    cairo_identity_matrix(cr);
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, 14);
-    const double baseline = p->origin_y + MARGIN_PX + 15;
-    char text[96];
-    snprintf(text, sizeof text, "t = %.1f s", time_s);
-    set(cr, TEXT);
-    cairo_move_to(cr, MARGIN_PX, baseline);
-    cairo_show_text(cr, text);
-
-    snprintf(text, sizeof text, "%d robot%s", w->n_robots, w->n_robots == 1 ? "" : "s");
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr, text, &ext);
-    cairo_move_to(cr, (p->width - ext.x_advance) / 2, baseline);
-    cairo_show_text(cr, text);
-
-    const double bar_mm = scale_bar_mm(p->scale), bar_px = bar_mm * p->scale;
-    if (bar_mm >= 1000)
-        snprintf(text, sizeof text, "%g m", bar_mm / 1000);
-    else
-        snprintf(text, sizeof text, "%g mm", bar_mm);
-    cairo_text_extents(cr, text, &ext);
-    const double right = p->width - MARGIN_PX;
-    const double bar_right = right - ext.x_advance - 8;
-    cairo_move_to(cr, bar_right + 8, baseline);
-    cairo_show_text(cr, text);
-    const double y = floor(baseline - 5) + 0.5;
-    cairo_set_line_width(cr, 2);
-    cairo_move_to(cr, bar_right - bar_px, y - 4);
-    cairo_line_to(cr, bar_right - bar_px, y);
-    cairo_line_to(cr, bar_right, y);
-    cairo_line_to(cr, bar_right, y - 4);
-    cairo_stroke(cr);
-}
-
 /* What never moves (floor, grid, the lights' glow, obstacles) is drawn
  * once and painted under every frame: a video redraws it 30 times a second
  * of output, and the glow's gradient alone is a large share of a frame. */
@@ -348,13 +320,18 @@ void picture_draw(picture *p, const output_history *h, int k)
         draw_light_glows(p, w);
         draw_obstacles(p, w);
     }
+    const output_robot *robots = k >= 0 ? history_robots(h, k) : NULL;
+    if (p->starts)
+        draw_starts(p, w);
     if (k >= 0)
         draw_trails(p, h, k);
     draw_light_marks(p, w);
     draw_objects(p, w, k >= 0 ? history_objects(h, k) : NULL);
-    draw_robots(p, w, k >= 0 ? history_robots(h, k) : NULL);
+    draw_robots(p, w, robots);
+    if (p->ids)
+        draw_ids(p, w, robots);
     draw_border(p, w);
-    draw_footer(p, w, k >= 0 ? h->time_s[k] : 0.0);
+    picture_draw_footer(p, w, k >= 0 ? h->time_s[k] : 0.0, robots);
     cairo_restore(p->cr);
     cairo_surface_flush(p->surface);
 }

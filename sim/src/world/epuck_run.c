@@ -136,7 +136,8 @@ int epuck_world_run(const options *o, const world_spec *spec, world *physics) {
     int status = start_controllers(o, spec) != 0 ? EXIT_CRASH : 0;
     int recording = 0;
     if (status == 0 && o->out_dir != NULL) {
-        output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet};
+        output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
+                          .ids = o->ids};
         observe(physics, spec);
         if (output_open(&out, spec) != 0 || record(0.0) != 0) status = EXIT_USAGE;
         else recording = 1;

@@ -166,7 +166,13 @@ int world_options_check(options *o) {
                         "--out DIR too, or drop --video\n");
         return -1;
     }
-    output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet};
+    if (o->ids && o->out_dir == NULL) {
+        fprintf(stderr, "openswarm-sim: --ids numbers the robots in --out DIR's final.png: give "
+                        "--out DIR too, or drop --ids\n");
+        return -1;
+    }
+    output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
+                          .ids = o->ids};
     if (o->out_dir != NULL && output_check(&out) != 0) return -1;
     if (sample_count_check(o) != 0) return -1;
     int status = options_check_robots(o);
@@ -297,7 +303,8 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
     world_stepper_start(physics, n, physics_thread);
     observe();
     if (o->out_dir == NULL) return 0;
-    output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet};
+    output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
+                          .ids = o->ids};
     if (output_open(&out, &spec) != 0) return -1;
     recording = 1;
     next_sample_s = spec.sample_period_s;
