@@ -29,6 +29,14 @@ plain = epuck_fidelity.run(SIM, WORK, "plain", NATIVE_PLAIN, failures, says_id=F
 if not failures:
     epuck_fidelity.shows_enough(plain, failures, blinks=False)
 
+# A world that asks for the native mode refuses a controller built for the
+# pipe mode: exit 2, the world, the program and the fix.
+refused = []
+epuck_fidelity.run(SIM, WORK, "asks_native", PIPE_APP, refused, seconds=1, says_id=False, fidelity="native")
+if not (len(refused) == 1 and "exit 2:" in refused[0] and "asks_native.json asks for \"fidelity\": \"native\"" in refused[0]
+        and "openswarm build --native" in refused[0]):
+    failures.append(f"a pipe-mode controller in a native world was not refused as it should be: {refused}")
+
 for f in failures:
     print("FAIL", f)
 print("ok: the native mode drives the world as the pipe mode does" if not failures else "")

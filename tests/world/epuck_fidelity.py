@@ -13,7 +13,7 @@ import subprocess
 OBJECTS = ((600, 400), (300, 600), (700, 200))
 
 
-def run(sim, work, name, controller, failures, seconds=10, says_id=True):
+def run(sim, work, name, controller, failures, seconds=10, says_id=True, fidelity=None):
     """The world with controller on both robots, its outputs' folder."""
     world = os.path.join(work, name + ".json")
     objects = [{"x_mm": x, "y_mm": y, "radius_mm": 50, "mass_g": 50, "friction": 0.5} for x, y in OBJECTS]
@@ -22,7 +22,7 @@ def run(sim, work, name, controller, failures, seconds=10, says_id=True):
                    "duration_s": seconds, "sample_period_s": 0.1, "objects": objects,
                    "robots": [{"poses": [{"x_mm": 200, "y_mm": 400, "heading_deg": 0},
                                          {"x_mm": 800, "y_mm": 600, "heading_deg": 180}],
-                               "firmware": controller}]}, f)
+                               "firmware": controller}]} | ({"fidelity": fidelity} if fidelity else {}), f)
     out = os.path.join(work, name)
     shutil.rmtree(out, ignore_errors=True)
     done = subprocess.run([sim, "-q", "--world", world, "--out", out], capture_output=True, text=True,
