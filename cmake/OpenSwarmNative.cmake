@@ -1,4 +1,4 @@
-# openswarm_add_native_robot(<name> BOARD kilobot SOURCES <files...> [CONFIG <header>]
+# openswarm_add_native_robot(<name> BOARD <kilobot|epuck_world|epuck_plain> SOURCES <files...> [CONFIG <header>]
 #                            [INCLUDES <dirs...>])
 #
 # The native mode (ports/native): an app's sources, the kernel and the
@@ -42,6 +42,25 @@ set(OPENSWARM_NATIVE_kilobot_INCLUDES ${OPENSWARM_ROOT}/ports/native/include
 set(OPENSWARM_NATIVE_kilobot_DEFINITIONS F_CPU=8000000UL NATIVE_CPU_HZ=8000000u
     OPENSWARM_MCU_NAME=atmega328p)
 
+# The e-puck as the world simulator's native mode runs it (PORT
+# epuck_world built natively): its board at message level, the device
+# layer as it is, the pipe mode's record of what it shows. And the same
+# for a controller without the OS (openswarm_add_plain_controller): the
+# plain link, the camera's classifier.
+set(OPENSWARM_NATIVE_epuck_world_BOARD_SOURCES
+    ${OPENSWARM_ROOT}/ports/native/epuck/src/epuck_native_board.c
+    ${OPENSWARM_ROOT}/ports/epuck/host/src/world_outputs.c)
+set(OPENSWARM_NATIVE_epuck_world_ROBOT_SOURCES ${OPENSWARM_EPUCK_SOURCES})
+set(OPENSWARM_NATIVE_epuck_world_INCLUDES ${OPENSWARM_ROOT}/ports/native/include
+    ${OPENSWARM_ROOT}/ports/native/epuck/include ${OPENSWARM_ROOT}/ports/epuck/include
+    ${OPENSWARM_ROOT}/ports/epuck/host/include ${OPENSWARM_ROOT}/ports/epuck/host/src
+    ${OPENSWARM_ROOT}/ports/epuck/src)
+set(OPENSWARM_NATIVE_epuck_world_DEFINITIONS NATIVE_CPU_HZ=168000000u)
+set(OPENSWARM_NATIVE_epuck_plain_BOARD_SOURCES ${OPENSWARM_ROOT}/ports/native/epuck/src/epuck_native_plain.c)
+set(OPENSWARM_NATIVE_epuck_plain_ROBOT_SOURCES ${OPENSWARM_ROOT}/ports/epuck/src/camera_classifier.c)
+set(OPENSWARM_NATIVE_epuck_plain_INCLUDES ${OPENSWARM_NATIVE_epuck_world_INCLUDES})
+set(OPENSWARM_NATIVE_epuck_plain_DEFINITIONS ${OPENSWARM_NATIVE_epuck_world_DEFINITIONS})
+
 set(OPENSWARM_NATIVE_WORK_CALLBACK -fsanitize-coverage=trace-pc)
 # Hidden symbols: the robot's code binds to itself (and to its own printf),
 # whichever copy of the object the simulator loaded; one symbol is
@@ -52,7 +71,7 @@ set(OPENSWARM_NATIVE_FLAGS -fPIC -fvisibility=hidden -U_FORTIFY_SOURCE)
 function(openswarm_add_native_robot name)
   cmake_parse_arguments(N "" "BOARD;CONFIG" "SOURCES;INCLUDES" ${ARGN})
   if(NOT DEFINED OPENSWARM_NATIVE_${N_BOARD}_BOARD_SOURCES)
-    message(FATAL_ERROR "openswarm_add_native_robot(${name}): unknown BOARD '${N_BOARD}' (known: kilobot)")
+    message(FATAL_ERROR "openswarm_add_native_robot(${name}): unknown BOARD '${N_BOARD}' (known: kilobot, epuck_world, epuck_plain)")
   endif()
   set(includes ${OPENSWARM_NATIVE_${N_BOARD}_INCLUDES} ${OPENSWARM_ROOT}/kernel/include
       ${OPENSWARM_ROOT}/sdk/include ${N_INCLUDES})

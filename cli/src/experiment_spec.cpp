@@ -140,7 +140,7 @@ Experiment load_experiment(const fs::path &file) {
     e.file = file;
     if (!doc.is_object()) fail(file, "", "expected a JSON object { ... }; " + std::string(example));
     check_keys(file, "", doc, {"description", "arena", "marks", "robots", "objects", "duration_s",
-                               "sample_period_s", "trials", "seed", "controllers", "reference"});
+                               "sample_period_s", "trials", "seed", "controllers", "reference", "fidelity"});
     load_world(file, doc, e);
     e.duration_s = real_at(file, "duration_s", require(file, doc, "duration_s"), 1, 86400);
     if (doc.contains("sample_period_s"))
@@ -149,7 +149,21 @@ Experiment load_experiment(const fs::path &file) {
     if (doc.contains("seed")) e.seed = (uint32_t)number_at(file, "seed", doc["seed"], 0, 4294967295L);
     load_controllers(file, doc, e);
     load_reference(file, doc, e);
+    if (doc.contains("fidelity")) {
+        std::string f = string_at(file, "fidelity", doc["fidelity"], "\"exact\" or \"native\"");
+        if (f != "exact" && f != "native")
+            fail(file, "fidelity", "unknown fidelity \"" + f + "\"; known: exact (each controller a process "
+                 "over a pipe), native (the controllers in the simulator's process, built with "
+                 "`openswarm build --native --port epuck_world`)");
+        e.native = f == "native";
+    }
     return e;
+}
+
+fs::path native_program(const fs::path &program) {
+    if (program.extension() == ".so") return program;
+    fs::path folder = program.parent_path();
+    return folder.parent_path() / (folder.filename().string() + "-native") / (program.filename().string() + ".so");
 }
 
 std::string trial_world(const Experiment &e, uint32_t seed, const fs::path &program) {
@@ -170,6 +184,7 @@ std::string trial_world(const Experiment &e, uint32_t seed, const fs::path &prog
                   {"seed", seed},
                   {"duration_s", e.duration_s},
                   {"sample_period_s", e.sample_period_s}};
+    if (e.native) world["fidelity"] = "native";
     json poses = json::array(), objects = json::array();
     for (int k = 0; k < e.robots; k++) {
         json p;

@@ -33,6 +33,10 @@ struct Experiment {
     int trials = 0;
     uint32_t seed = 1;
     std::vector<ExperimentController> controllers;
+    // "fidelity": "native" (or openswarm experiment --native): each
+    // controller runs in the simulator's process, the build of
+    // native_program (docs/case-study.md).
+    bool native = false;
     // A real-robot result to mark on the plot: this fraction at this time.
     double reference_fraction = -1, reference_time_s = -1;
     std::string reference_label;
@@ -55,6 +59,12 @@ std::string trial_rows_problem(const Experiment &e, bool duration_given);
 
 // Read and check file; throws ConfigError naming the file, the key and the fix.
 Experiment load_experiment(const std::filesystem::path &file);
+
+// Where `openswarm build --native` puts the controller whose pipe-mode
+// build is program: <app>/build/<port>/<name> becomes
+// <app>/build/<port>-native/<name>.so; a program that is a .so already
+// stays as it is.
+std::filesystem::path native_program(const std::filesystem::path &program);
 
 // The world.json of one trial: robots and objects on distinct marks,
 // drawn from seed alone (every controller of a trial gets the same one).

@@ -82,9 +82,10 @@ function(openswarm_add_firmware name)
     message(FATAL_ERROR "openswarm_add_firmware(${name}): no sources: give SOURCES, or, built by "
       "`openswarm build`, put the app's .c or .cpp files in its src/ folder")
   endif()
-  if(OPENSWARM_NATIVE AND NOT F_PORT STREQUAL "kilobot")
+  if(OPENSWARM_NATIVE AND NOT F_PORT MATCHES "^(kilobot|epuck_world)$")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): the native mode (OPENSWARM_NATIVE) runs "
-      "Kilobot apps so far, not PORT ${F_PORT}: build it without OPENSWARM_NATIVE")
+      "Kilobot apps and e-pucks of the world (PORT epuck_world), not PORT ${F_PORT}: build it "
+      "without OPENSWARM_NATIVE, or for PORT kilobot or epuck_world")
   endif()
   if(F_PORT STREQUAL "kilobot" AND NOT OPENSWARM_NATIVE AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "avr")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT kilobot needs the AVR toolchain: "
@@ -185,11 +186,18 @@ endfunction()
 # hardware-near baseline, openswarm/epuck_plain.h): its own main() loops
 # on epuck_plain_wait_frame() and epuck_plain_set_wheels(); it may use the
 # e-puck layer's plain functions (epuck_classify_frame), nothing of the
-# kernel. Builds the host program <name>.
+# kernel. Builds the host program <name>, or, with OPENSWARM_NATIVE, the
+# native-mode robot <name>.so (board epuck_plain: the kernel is linked for
+# the native port's clock, never started).
 function(openswarm_add_plain_controller name)
   cmake_parse_arguments(F "" "" "SOURCES" ${ARGN})
   if(NOT F_SOURCES)
     message(FATAL_ERROR "openswarm_add_plain_controller(${name}): SOURCES is required")
+  endif()
+  if(OPENSWARM_NATIVE)
+    openswarm_add_native_robot(${name} BOARD epuck_plain SOURCES ${F_SOURCES})
+    openswarm_app_warnings(${name})
+    return()
   endif()
   add_executable(${name} ${F_SOURCES}
     ${OPENSWARM_SDK_ROOT}/ports/epuck/src/camera_classifier.c

@@ -265,9 +265,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     const ParameterValues changed = changed_parameters(config, parameters);
     const std::string port = config.port;
     const bool debug = variant == Variant::debug, native = variant == Variant::native;
-    if (native && port != "kilobot") {
-        report("--native: the native mode runs Kilobot apps so far, and this one is for " + port +
-               "; run it without --native (the exact mode)");
+    if (native && port != "kilobot" && port != "epuck_world") {
+        report("--native: the native mode runs Kilobot apps and the world's e-pucks (--port epuck_world) "
+               "so far, and this one is for " + port + "; run it without --native (the exact mode)");
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }

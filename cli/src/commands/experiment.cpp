@@ -40,6 +40,7 @@ struct ExperimentOptions {
     unsigned jobs = 0;
     int trials = 0;         // 0: the file's
     double duration_s = 0;  // 0: the file's
+    bool native = false;    // --native: as the file's "fidelity": "native"
 };
 
 struct Sample {
@@ -276,7 +277,8 @@ bool programs_present(const Experiment &e) {
         std::error_code ec;
         if (fs::is_regular_file(c.program, ec)) continue;
         report(e.file.string() + ": controller \"" + c.name + "\": " + c.program.string() +
-               " does not exist: build it first (openswarm build --port epuck_world in its app)");
+               " does not exist: build it first (openswarm build --port epuck_world" +
+               (e.native ? " --native" : "") + " in its app)");
         return false;
     }
     return true;
@@ -292,6 +294,9 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     }
     if (o.trials) e.trials = o.trials;
     if (o.duration_s > 0) e.duration_s = o.duration_s;
+    e.native = e.native || o.native;
+    if (e.native)
+        for (auto &c : e.controllers) c.program = native_program(c.program);
     if (e.reference_time_s > e.duration_s) e.reference_fraction = -1; // off the plot
     std::string too_many = trial_rows_problem(e, o.duration_s > 0);
     if (!too_many.empty()) {
@@ -372,6 +377,9 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
         ->check(finite_seconds("--duration", 1, 86400, "600"));
+    cmd->add_flag("--native", o->native,
+                  "run the controllers in the simulator's process (each built with `openswarm build "
+                  "--native --port epuck_world`), as the file's \"fidelity\": \"native\" asks");
     cmd->add_option("--shard", o->shard,
                     "a sweep's K-th share of N (0-based), as a Slurm array task runs it: "
                     "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
@@ -380,7 +388,11 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
         Ranks ranks;
         int status;
         try {
-            if (is_sweep_file(o->file))
+            if (is_sweep_file(o->file) && o->native) {
+                report("--native: for clustering experiments; " + o->file + " is a sweep: give its "
+                       "world \"fidelity\": \"native\" instead (docs/world.md)");
+                status = EXIT_USAGE;
+            } else if (is_sweep_file(o->file))
                 status = run_sweep({o->file, o->out, o->jobs, o->trials, o->duration_s, o->shard}, paths, ranks);
             else if (!o->shard.empty()) {
                 report("--shard: for sweep files (a \"world\" and what to vary in it); " + o->file +

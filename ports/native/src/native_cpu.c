@@ -36,6 +36,7 @@ static uint64_t next_frame_start(void) {
 }
 
 static uint64_t interrupt_due(void) {
+    if (native_io_of_robot->board_inputs) return native_now;
     uint64_t frame = next_frame_start();
     uint64_t tick = tick_stopped ? tick_deadline : next_tick;
     return frame < tick ? frame : tick;
@@ -70,7 +71,10 @@ static void take_interrupts(void) {
     for (;;) {
         uint64_t frame = next_frame_start();
         uint64_t tick = tick_stopped ? UINT64_MAX : next_tick;
-        if (frame <= native_now && frame <= tick) {
+        if (native_io_of_robot->board_inputs) {
+            native_io_of_robot->board_inputs = 0;
+            native_board_inputs();
+        } else if (frame <= native_now && frame <= tick) {
             native_ir_interrupt();
         } else if (tick <= native_now) {
             tick_interrupt();

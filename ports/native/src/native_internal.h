@@ -62,6 +62,9 @@ int native_board_tick_needed(void);
 void native_board_elapsed(uint16_t ms);
 /* The receiver's interrupt: the inbox's first frame has arrived. */
 void native_ir_interrupt(void);
+/* The board's interrupt for the inputs the simulator set in its native_io
+ * (board, board_inputs): called with board_inputs cleared. */
+void native_board_inputs(void);
 /* What the board's outputs show now, reported to the simulator if it
  * changed: 0 when its list had no room (the simulator empties it when the
  * robot yields). */

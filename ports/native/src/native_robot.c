@@ -56,6 +56,13 @@ void native_stop(uint8_t status) {
     native_leave(NATIVE_STOPPED);
 }
 
+/* Kernel faults go to the simulator, which prints them, as on any board. */
+void port_report_fault(uint8_t fault, sys_pid pid) {
+    native_io *io = native_io_of_robot;
+    native_make_room(&io->n_faults, NATIVE_FAULT_ROOM);
+    io->faults[io->n_faults++] = (native_fault){native_now, fault, pid};
+}
+
 /* xorshift64*, from the robot's own seed (native_io.noise). */
 uint64_t native_random(void) {
     uint64_t x = native_io_of_robot->noise;

@@ -262,11 +262,6 @@ int native_run(const options *o) {
     opts = o;
     n_robots = o->robots;
     if (refuse_exact_only(o) != 0) return EXIT_USAGE;
-    if (o->world != NULL && world_run_is_epuck()) {
-        fprintf(stderr, "openswarm-sim: %s holds e-pucks: the native mode runs Kilobots so far; run "
-                        "it in the exact mode\n", o->world);
-        return EXIT_USAGE;
-    }
     const char *path = firmware_of(o, 0);
     for (int i = 1; i < o->robots; i++) {
         if (strcmp(firmware_of(o, i), path) != 0) {

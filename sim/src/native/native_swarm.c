@@ -168,6 +168,7 @@ static uint64_t wake_of(const native_io *io) {
     if (io->state != NATIVE_RUNNING) return UINT64_MAX;
     uint64_t w = io->asleep_until;
     if (w != 0 && io->inbox_count != 0 && io->inbox[io->inbox_head].start < w) w = io->inbox[io->inbox_head].start;
+    if (io->board_inputs) w = 0; /* its board's interrupt: at once */
     return w > io->now + 1 ? w : io->now + 1;
 }
 

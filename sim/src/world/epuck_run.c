@@ -16,12 +16,12 @@
 #define FRAME_PERIOD_MS 250  /* the camera's 4 frames a second (docs/world.md) */
 
 typedef struct epuck_robot {
-    epuck_link link;
-    epuck_world_output last;
-    uint64_t rng;
+    uint64_t rng; /* its proximity sensors' noise */
 } epuck_robot;
 
+static const epuck_controllers *controllers;
 static epuck_robot *robots;
+static epuck_world_output *answers; /* each robot's last */
 static int n_robots;
 static output_robot *poses;
 static world_point *object_centres;
@@ -41,13 +41,12 @@ static int start_controllers(const options *o, const world_spec *spec) {
         epuck_robot *r = &robots[i];
         r->rng = (uint64_t)spec->seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0xE9u);
         world_random_next(&r->rng);
-        if (epuck_link_start(&r->link, o->robot_elf[i], i, &r->last) != 0) return -1;
     }
-    return 0;
+    return controllers->start(o, n_robots, answers);
 }
 
-/* One step's exchange with every controller: all inputs first, so the
- * processes run the step side by side, then every answer. */
+/* One step's exchange with every controller: all inputs first, then
+ * every answer. */
 static int exchange(const world *physics, uint32_t t_ms) {
     int with_frame = t_ms % FRAME_PERIOD_MS == 0;
     for (int i = 0; i < n_robots; i++) {
@@ -59,17 +58,14 @@ static int exchange(const world *physics, uint32_t t_ms) {
             in.frame_width = EPUCK_FRAME_WIDTH;
             in.frame_height = EPUCK_FRAME_HEIGHT;
         }
-        r->link.t_ms = (int32_t)t_ms;
-        if (epuck_link_send(&r->link, &in, frame) != 0) return -1;
+        if (controllers->send(i, t_ms, &in, frame) != 0) return -1;
     }
-    for (int i = 0; i < n_robots; i++)
-        if (epuck_link_receive(&robots[i].link, &robots[i].last) != 0) return -1;
-    return 0;
+    return controllers->receive(n_robots, answers);
 }
 
 static unsigned faults_now(void) {
     unsigned n = 0;
-    for (int i = 0; i < n_robots; i++) n += robots[i].last.faults;
+    for (int i = 0; i < n_robots; i++) n += answers[i].faults;
     return n;
 }
 
@@ -77,7 +73,7 @@ static void observe(const world *physics, const world_spec *spec) {
     for (int i = 0; i < n_robots; i++) {
         output_robot *p = &poses[i];
         world_robot_pose(physics, i, &p->x_mm, &p->y_mm, &p->heading_deg);
-        uint8_t rgb = robots[i].last.rgb_leds; /* EPUCK_RGB: 2 bits a channel */
+        uint8_t rgb = answers[i].rgb_leds; /* EPUCK_RGB: 2 bits a channel */
         p->led_r = rgb & 3;
         p->led_g = (rgb >> 2) & 3;
         p->led_b = (rgb >> 4) & 3;
@@ -106,7 +102,7 @@ static int run_steps(const options *o, const world_spec *spec, world *physics, i
                             "message is above)\n", (t_ms + STEP_MS) / 1000.0);
         }
         for (int i = 0; i < n_robots; i++)
-            world_epuck_wheels(physics, i, robots[i].last.wheel_left, robots[i].last.wheel_right);
+            world_epuck_wheels(physics, i, answers[i].wheel_left, answers[i].wheel_right);
         double t = (t_ms + STEP_MS) / 1000.0;
         world_step(physics, t);
         observe(physics, spec);
@@ -118,17 +114,12 @@ static int run_steps(const options *o, const world_spec *spec, world *physics, i
     return faults && !o->allow_faults ? EXIT_FAULT : 0;
 }
 
-static int stop_controllers(void) {
-    int failed = 0;
-    for (int i = 0; i < n_robots; i++)
-        if (robots[i].link.pid > 0 && epuck_link_stop(&robots[i].link) != 0) failed = 1;
-    return failed;
-}
-
-int epuck_world_run(const options *o, const world_spec *spec, world *physics) {
+int epuck_world_run(const options *o, const world_spec *spec, world *physics, const epuck_controllers *where) {
     if (epuck_link_wait_from_environment() != 0) return EXIT_USAGE;
+    controllers = where;
     n_robots = spec->n_robots;
     robots = allocate((size_t)n_robots, sizeof *robots);
+    answers = allocate((size_t)n_robots, sizeof *answers);
     poses = allocate((size_t)n_robots, sizeof *poses);
     object_centres = allocate((size_t)spec->n_objects, sizeof *object_centres);
     struct timespec began;
@@ -143,7 +134,7 @@ int epuck_world_run(const options *o, const world_spec *spec, world *physics) {
         else recording = 1;
     }
     if (status == 0) status = run_steps(o, spec, physics, recording);
-    if (stop_controllers() && status == 0) status = EXIT_CRASH;
+    if (controllers->stop() != 0 && status == 0) status = EXIT_CRASH;
     if (interrupt_caught()) output_quieten(); /* interrupt_finish names the files */
     if (recording && output_close() != 0 && status == 0) status = EXIT_USAGE;
     if (interrupt_caught() && status == 0) return interrupt_finish(recording ? output_written() : NULL);

@@ -16,6 +16,8 @@
 #include "interrupt.h"
 #include "output/output.h"
 #include "world/epuck_run.h"
+#include "native/native_epuck.h"
+#include "native/native_load.h"
 #include "world/world.h"
 #include "world/world_stepper.h"
 
@@ -349,8 +351,27 @@ int world_run_is_epuck(void) { return spec.robot_kind == WORLD_ROBOT_EPUCK; }
 
 int world_run_is_native(void) { return spec.fidelity == WORLD_FIDELITY_NATIVE; }
 
+/* The native mode when the controller is a native robot (as for
+ * Kilobots, whatever the world says); a world that asks for it refuses
+ * controllers built for the pipe mode. NULL after a message. */
+static const epuck_controllers *controllers_for(const options *o) {
+    if (o->robots > 0 && native_is_robot(o->robot_elf[0])) return &native_epucks;
+    if (spec.fidelity != WORLD_FIDELITY_NATIVE) return &epuck_pipes;
+    fprintf(stderr, "openswarm-sim: %s asks for \"fidelity\": \"native\", and %s is a controller "
+                    "for the pipe mode (a program): give the app built for the host's native mode "
+                    "(`openswarm build --native`: build/epuck_world-native/<app>.so), or drop "
+                    "\"fidelity\" from the world\n", spec.path, o->robot_elf[0]);
+    return NULL;
+}
+
 int world_run_epucks(const options *o) {
-    int status = epuck_world_run(o, &spec, physics);
+    const epuck_controllers *where = controllers_for(o);
+    if (where == NULL) {
+        world_destroy(physics);
+        world_spec_free(&spec);
+        return EXIT_USAGE;
+    }
+    int status = epuck_world_run(o, &spec, physics, where);
     world_destroy(physics);
     world_spec_free(&spec);
     return status;

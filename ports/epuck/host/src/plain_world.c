@@ -61,12 +61,7 @@ const epuck_camera_frame *epuck_plain_wait_frame(void) {
     }
 }
 
-static int16_t clamp(int16_t v) {
-    return v > EPUCK_MAX_STEPS_PER_S ? EPUCK_MAX_STEPS_PER_S
-                                     : v < -EPUCK_MAX_STEPS_PER_S ? -EPUCK_MAX_STEPS_PER_S : v;
-}
-
 void epuck_plain_set_wheels(int16_t left, int16_t right) {
-    wheel[0] = clamp(left);
-    wheel[1] = clamp(right);
+    wheel[0] = epuck_plain_limit(left);
+    wheel[1] = epuck_plain_limit(right);
 }

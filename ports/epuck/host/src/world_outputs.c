@@ -30,13 +30,17 @@ static uint32_t faults_so_far(void) {
 }
 
 void world_outputs_fill(epuck_world_output *out) {
-    out->magic = EPUCK_LINK_MAGIC;
+    world_outputs_shown(out);
     out->time_ms = Sys_Get_SystemTime();
+    out->faults = faults_so_far();
+}
+
+void world_outputs_shown(epuck_world_output *out) {
+    out->magic = EPUCK_LINK_MAGIC;
     out->wheel_left = shown.wheel_left;
     out->wheel_right = shown.wheel_right;
     out->ring_leds = shown.ring;
     out->body_led = shown.body;
     out->front_led = shown.front;
     out->rgb_leds = shown.rgb;
-    out->faults = faults_so_far();
 }

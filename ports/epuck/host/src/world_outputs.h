@@ -11,5 +11,9 @@
 /* The answer to the world, filled on the robot's CPU (it reads the
  * kernel's clock and counters). */
 void world_outputs_fill(epuck_world_output *out);
+/* Its wheels and LEDs alone, as the device layer last set them: no call
+ * into the kernel (the native board reads them from its work callback,
+ * where the kernel's instrumented code must not run). */
+void world_outputs_shown(epuck_world_output *out);
 
 #endif

@@ -30,7 +30,7 @@ extern "C" {
 
 /* Changes whenever native_io changes shape: the simulator refuses a robot
  * built against another. */
-#define NATIVE_ROBOT_ABI 3
+#define NATIVE_ROBOT_ABI 4
 
 #define NATIVE_FRAME_BYTES 12
 #define NATIVE_EEPROM_BYTES 1024
@@ -97,6 +97,12 @@ typedef struct native_io {
     native_frame inbox[NATIVE_INBOX_ROOM];
     unsigned inbox_head, inbox_count;
     uint16_t restart_mark; /* kilobot_restart's, kept across the restart */
+    /* A board that takes its sensors whole, a step at a time (the e-puck:
+     * openswarm/native_epuck.h), finds them here; NULL on a Kilobot. When
+     * the simulator sets board_inputs, they reach the robot as its board's
+     * interrupt at once (as soon as interrupts are on); the board clears it. */
+    void *board;
+    uint8_t board_inputs;
 
     /* ---- set by the robot, emptied by the simulator after each window ---- */
     native_sent sent[NATIVE_SENT_ROOM];

@@ -1,7 +1,7 @@
 /* The Kilobot's board in the native mode: its clock hooks, what its LED
  * and motors show (read from the register file as the chip's pins would
  * drive them: ports/kilobot's led.c and motors.c run as they are), the
- * charger's pin, and kernel faults to the simulator. */
+ * charger's pin. */
 #include "native_internal.h"
 
 #include <avr/io.h>
@@ -61,8 +61,5 @@ void native_board_power_up(void) {
     PIND = native_io_of_robot->charging ? 0 : _BV(PD0);
 }
 
-void port_report_fault(uint8_t fault, sys_pid pid) {
-    native_io *io = native_io_of_robot;
-    native_make_room(&io->n_faults, NATIVE_FAULT_ROOM);
-    io->faults[io->n_faults++] = (native_fault){native_now, fault, pid};
-}
+/* Its inputs come frame by frame (kilobot_ir.c), never whole. */
+void native_board_inputs(void) {}

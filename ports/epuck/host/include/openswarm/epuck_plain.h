@@ -24,6 +24,12 @@ const epuck_camera_frame *epuck_plain_wait_frame(void);
 /* Steps/s, + forward, each clamped to +-EPUCK_MAX_STEPS_PER_S. */
 void epuck_plain_set_wheels(int16_t left, int16_t right);
 
+/* The clamp set_wheels applies (each board's, the pipe's and the native one). */
+static inline int16_t epuck_plain_limit(int16_t v) {
+    return v > EPUCK_MAX_STEPS_PER_S ? EPUCK_MAX_STEPS_PER_S
+                                     : v < -EPUCK_MAX_STEPS_PER_S ? -EPUCK_MAX_STEPS_PER_S : v;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,64 @@
+"""The e-puck fidelity checks' common part (check_epuck2_qemu_fidelity.py,
+check_epuck_native.py): one small world - two e-pucks among three objects
+for 10 s, every pose and LED every 0.1 s - run with a given controller,
+the records of two runs compared byte for byte, and the run checked to
+show the robots turning, pushing and blinking."""
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+
+OBJECTS = ((600, 400), (300, 600), (700, 200))
+
+
+def run(sim, work, name, controller, failures, seconds=10, says_id=True, fidelity=None):
+    """The world with controller on both robots, its outputs' folder."""
+    world = os.path.join(work, name + ".json")
+    objects = [{"x_mm": x, "y_mm": y, "radius_mm": 50, "mass_g": 50, "friction": 0.5} for x, y in OBJECTS]
+    with open(world, "w") as f:
+        json.dump({"robot": "epuck", "arena": {"width_mm": 1000, "height_mm": 800}, "seed": 3,
+                   "duration_s": seconds, "sample_period_s": 0.1, "objects": objects,
+                   "robots": [{"poses": [{"x_mm": 200, "y_mm": 400, "heading_deg": 0},
+                                         {"x_mm": 800, "y_mm": 600, "heading_deg": 180}],
+                               "firmware": controller}]} | ({"fidelity": fidelity} if fidelity else {}), f)
+    out = os.path.join(work, name)
+    shutil.rmtree(out, ignore_errors=True)
+    done = subprocess.run([sim, "-q", "--world", world, "--out", out], capture_output=True, text=True,
+                          timeout=600)
+    if done.returncode != 0:
+        failures.append(f"{name}: exit {done.returncode}:\n{done.stderr}")
+    # Each robot says its id (robot_id(): its index in the world) on its console.
+    for robot in (0, 1) if says_id else ():
+        if f"e-puck {robot} here" not in done.stderr + done.stdout:
+            failures.append(f"{name}: robot {robot} did not say its id ('e-puck {robot} here'):\n{done.stderr}")
+    return out
+
+
+def read(out, name):
+    with open(os.path.join(out, name)) as f:
+        return f.read()
+
+
+def compare(a, a_name, b, b_name, failures):
+    """The two runs' records, byte for byte."""
+    for name in ("trajectories.csv", "objects.csv"):
+        if read(a, name) != read(b, name):
+            failures.append(f"{name} differs between {a_name} ({a}) and {b_name} ({b})")
+
+
+def shows_enough(out, failures, blinks=True):
+    """Robot 0 went somewhere turning, an object moved, the LEDs blinked."""
+    rows = list(csv.DictReader(read(out, "trajectories.csv").splitlines()))
+    robot0 = [r for r in rows if r["robot"] == "0"]
+    walked = math.dist((float(robot0[0]["x_mm"]), float(robot0[0]["y_mm"])),
+                       (float(robot0[-1]["x_mm"]), float(robot0[-1]["y_mm"])))
+    headings = {round(float(r["heading_deg"])) for r in robot0}
+    greens = {r["led_g"] for r in rows}
+    objects = list(csv.DictReader(read(out, "objects.csv").splitlines()))
+    pushed = [o for o in objects if float(o["time_s"]) > 0 and
+              all(math.dist((float(o["x_mm"]), float(o["y_mm"])), at) > 1 for at in OBJECTS)]
+    if walked < 200 or len(headings) < 30 or (blinks and greens != {"0", "3"}) or not pushed:
+        failures.append(f"the run shows too little: robot 0 went {walked:.0f} mm with {len(headings)} "
+                        f"headings, LED green levels {sorted(greens)}, {len(pushed)} object samples moved")
