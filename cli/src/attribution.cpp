@@ -137,8 +137,8 @@ std::vector<Share> shares_of(const Attribution &a) {
     return shares;
 }
 
-fs::path attribution_dir(const fs::path &dir, const std::string &port) {
-    return dir / "build" / (port + "-size");
+fs::path attribution_dir(const fs::path &dir, const std::string &port, const ParameterValues &parameters) {
+    return dir / "build" / (port + "-size" + parameters_folder_suffix(parameters));
 }
 
 // A path as one word of the shell command the build tool runs the link
@@ -154,14 +154,16 @@ static std::string shell_word(const std::string &path) {
 }
 
 std::optional<Attribution> attribute_app(const Paths &paths, const fs::path &dir, const std::string &name,
-                                         const std::string &port, std::string &why) {
-    fs::path build_dir = attribution_dir(dir, port);
+                                         const std::string &port, const ParameterValues &parameters,
+                                         std::string &why) {
+    fs::path build_dir = attribution_dir(dir, port, parameters);
     fs::path map = fs::absolute(build_dir / "link.map");
     forget_other_project(dir, port, build_dir);
     std::vector<std::string> configure = configure_command(paths, dir, name, build_dir, port);
     // One image, one map: the e-puck2's robot image would write its own
     // over it.
     configure.insert(configure.end(), {"-DOPENSWARM_LTO=OFF", "-DOPENSWARM_ROBOT_IMAGE=OFF",
+                                       "-DOPENSWARM_PARAMETERS=" + parameters_cmake_list(parameters),
                                        "-DCMAKE_EXE_LINKER_FLAGS=-Wl,-Map=" + shell_word(map.string())});
     std::vector<std::string> build = {"cmake", "--build", build_dir.string()};
     std::string output;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app_parameters.hpp"
 #include "paths.hpp"
 
 namespace openswarm {
@@ -49,14 +50,20 @@ struct Share {
 // events, the app's own code and variables, the C runtime.
 std::vector<Share> shares_of(const Attribution &a);
 
-// Where the attribution build goes: build/<port>-size.
-std::filesystem::path attribution_dir(const std::filesystem::path &dir, const std::string &port);
+// Where the attribution build goes: build/<port>-size, and for a set of
+// the app's parameters other than the defaults build/<port>-size-p<its
+// fingerprint> (as build_app's folders).
+std::filesystem::path attribution_dir(const std::filesystem::path &dir, const std::string &port,
+                                      const ParameterValues &parameters = {});
 
 // Build the app in dir (named name) for port once more, without link-time optimisation,
 // and read its link map; after the first time the build is incremental.
 // The app's own build must have run (it writes the generated files both
-// use). On failure nullopt, and why says what failed and what to do.
+// use). parameters: the values that differ from openswarm.json's defaults
+// (BuildResult::parameters). On failure nullopt, and why says what failed
+// and what to do.
 std::optional<Attribution> attribute_app(const Paths &paths, const std::filesystem::path &dir,
-                                         const std::string &name, const std::string &port, std::string &why);
+                                         const std::string &name, const std::string &port,
+                                         const ParameterValues &parameters, std::string &why);
 
 }  // namespace openswarm

@@ -9,6 +9,7 @@
 
 #include "json_checks.hpp"
 #include "regular_file.hpp"
+#include "sweep/mark_placement.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -90,14 +91,6 @@ void load_reference(const fs::path &f, const json &doc, Experiment &e) {
         real_at(f, "reference.largest_cluster", require(f, r, "largest_cluster", "reference"), 0, 1);
 }
 
-// splitmix64: the same draws on every machine.
-uint64_t next(uint64_t &s) {
-    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
 }  // namespace
 
 std::string controller_folder(const std::string &name) {
@@ -167,38 +160,18 @@ fs::path native_program(const fs::path &program) {
 }
 
 std::string trial_world(const Experiment &e, uint32_t seed, const fs::path &program) {
-    // Marks in a random order: the first robots + objects of it are taken.
-    int n = e.columns * e.rows;
-    std::vector<int> marks(n);
-    for (int k = 0; k < n; k++) marks[k] = k;
-    uint64_t s = 0x6578706572696D65ull ^ ((uint64_t)seed << 17);
-    for (int k = n - 1; k > 0; k--) std::swap(marks[k], marks[next(s) % (uint64_t)(k + 1)]);
-    double x0 = (e.width_mm - (e.columns - 1) * e.spacing_mm) / 2;
-    double y0 = (e.height_mm - (e.rows - 1) * e.spacing_mm) / 2;
-    auto at = [&](int mark, json &j) {
-        j["x_mm"] = x0 + (mark % e.columns) * e.spacing_mm;
-        j["y_mm"] = y0 + (mark / e.columns) * e.spacing_mm;
-    };
     json world = {{"robot", "epuck"},
                   {"arena", {{"width_mm", e.width_mm}, {"height_mm", e.height_mm}}},
                   {"seed", seed},
                   {"duration_s", e.duration_s},
                   {"sample_period_s", e.sample_period_s}};
     if (e.native) world["fidelity"] = "native";
-    json poses = json::array(), objects = json::array();
-    for (int k = 0; k < e.robots; k++) {
-        json p;
-        at(marks[k], p);
-        p["heading_deg"] = (double)(next(s) % 360);
-        poses.push_back(p);
-    }
-    for (int k = 0; k < e.objects; k++) {
-        json o = {{"radius_mm", e.object_radius_mm}, {"mass_g", e.object_mass_g}, {"friction", e.object_friction}};
-        at(marks[e.robots + k], o);
-        objects.push_back(o);
-    }
+    json objects = json::array();
+    for (int k = 0; k < e.objects; k++)
+        objects.push_back({{"radius_mm", e.object_radius_mm}, {"mass_g", e.object_mass_g}, {"friction", e.object_friction}});
     world["objects"] = objects;
-    world["robots"] = json::array({{{"poses", poses}, {"firmware", fs::absolute(program).string()}}});
+    world["robots"] = json::array({{{"count", e.robots}, {"firmware", fs::absolute(program).string()}}});
+    place_on_marks(world, {e.columns, e.rows, e.spacing_mm}, seed);
     return world.dump(2) + "\n";
 }
 

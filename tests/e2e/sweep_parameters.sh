@@ -5,7 +5,9 @@
 # 500 ms, 2 s runs) builds the app twice, once per value, and the blinks
 # follow the value (4 and 2); run again, it builds nothing and runs
 # nothing; in the native mode likewise. `build -D` and `run -D` give one
-# value; `config show` lists it; mistakes exit 2.
+# value, `test -D` runs the app's tests on the image built with it (a test
+# recorded at 250 ms fails at 1000), `size -D` measures that image;
+# `config show` lists it; mistakes exit 2.
 #   sweep_parameters.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2 here=$(cd "$(dirname "$0")" && pwd)
@@ -65,8 +67,22 @@ grep -q "^Built .*app/build/kilobot-p[0-9a-f]*/app.elf" build.log || fail "build
 "$openswarm" run -C app -D HALF_PERIOD_MS=1000 --time 2 >run.log 2>&1 || fail "run -D" run.log
 test "$(grep -c 'metric blinks' run.log)" -eq 1 || fail "1000 ms: 1 blink in 2 s" run.log
 
+set +e # check and expect count failures and go on
+# test -D and size -D: the tests run, and size measures, the image built with the value.
+"$openswarm" test -C app --record blink -- --time 2 >record.log 2>&1 || fail "test --record" record.log
+"$openswarm" test -C app blink >test.log 2>&1 || fail "the test at the default" test.log
+check "test -D: 1000 ms blinks other than the recorded 250" 1 'blink +FAILED' \
+    "$openswarm" test -C app -D HALF_PERIOD_MS=1000 blink
+check "test -D: the default's value passes" 0 'blink +PASSED' "$openswarm" test -C app -D HALF_PERIOD_MS=250 blink
+"$openswarm" size -C app -D HALF_PERIOD_MS=1000 --time 1 >size.log 2>&1 || fail "size -D" size.log
+grep -q "^Image app/build/kilobot-p[0-9a-f]*/app.elf" size.log || fail "size -D's image" size.log
+ls -d app/build/kilobot-size-p* >/dev/null 2>&1 || fail "size -D's attribution build in a folder of its own" size.log
+
 # Mistakes: each names the place and the fix (exit 2).
-set +e
+expect 2 '-D HALF_PERIOD_MS=9: parameter HALF_PERIOD_MS takes a whole number 10..5000' \
+    "$openswarm" test -C app -D HALF_PERIOD_MS=9
+expect 2 '-D HALF_PERIOD_MS=9: parameter HALF_PERIOD_MS takes a whole number 10..5000' \
+    "$openswarm" size -C app -D HALF_PERIOD_MS=9
 expect 2 '-D HALF_PERIOD_MS=9: parameter HALF_PERIOD_MS takes a whole number 10..5000 .*; give one in its range' \
     "$openswarm" build -C app -D HALF_PERIOD_MS=9
 expect 2 'declares no parameter "HALF_PERIOD" .*did you mean "HALF_PERIOD_MS"' "$openswarm" run -C app -D HALF_PERIOD=9

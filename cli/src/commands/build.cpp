@@ -109,8 +109,8 @@ std::vector<Share> measure_shares(const Paths &paths, const fs::path &dir, const
         progress == Progress::on_stdout ? stdout : stderr,
         "Measuring the kernel's and the app's shares: building once more, without link-time "
         "optimisation, in %s\n",
-        attribution_dir(dir, r.port).string().c_str());
-    auto a = attribute_app(paths, dir, r.name, r.port, why);
+        attribution_dir(dir, r.port, r.parameters).string().c_str());
+    auto a = attribute_app(paths, dir, r.name, r.port, r.parameters, why);
     return a ? shares_of(*a) : std::vector<Share>{};
 }
 

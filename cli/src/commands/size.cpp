@@ -161,12 +161,14 @@ void print_stack_use(const Paths &paths, const BuildResult &built, const Footpri
     print_thread_stacks(f, out, time);
 }
 
-int run_size(const std::string &dir, const Paths &paths, double seconds) {
-    auto built = build_app(paths, dir, "");
+int run_size(const std::string &dir, const Paths &paths, double seconds, const std::vector<std::string> &settings) {
+    auto parameters = parameter_options(settings);
+    if (!parameters) return exit_code;
+    auto built = build_app(paths, dir, "", Progress::on_stdout, Variant::release, false, *parameters);
     if (!built) return exit_code;
     std::printf("Building once more without link-time optimisation, to attribute every byte\n");
     std::string why;
-    auto attribution = attribute_app(paths, dir, built->name, built->port, why);
+    auto attribution = attribute_app(paths, dir, built->name, built->port, built->parameters, why);
     if (!attribution) {
         report("cannot attribute the image's bytes: " + why);
         return EXIT_FAILED;
@@ -188,13 +190,19 @@ int run_size(const std::string &dir, const Paths &paths, double seconds) {
 void add_size_command(CLI::App &app, const Paths &paths) {
     auto dir = std::make_shared<std::string>(".");
     auto seconds = std::make_shared<double>(5.0);
+    auto settings = std::make_shared<std::vector<std::string>>();
     CLI::App *cmd = app.add_subcommand("size", "Show where the app's flash and RAM go");
     cmd->add_option("-C,--directory", *dir, "the app's folder")->capture_default_str();
     cmd->add_option("-t,--time", *seconds,
                     "simulated seconds to run the app for to measure its stacks' worst use (Kilobot)")
         ->capture_default_str()
         ->check(finite_seconds("--time", 0.001, 3600, "5"));
-    cmd->callback([dir, seconds, &paths] { exit_code = run_size(*dir, paths, *seconds); });
+    cmd->add_option("-D,--param", *settings,
+                    "a value for a parameter openswarm.json declares (\"parameters\"): the size of the image "
+                    "built with it (in a folder of its own, as build -D)")
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
+    cmd->callback([dir, seconds, settings, &paths] { exit_code = run_size(*dir, paths, *seconds, *settings); });
 }
 
 }  // namespace openswarm

@@ -287,6 +287,7 @@ struct TestOptions {
     std::string dir = ".";
     std::string record;               // a test to write from a run
     std::vector<std::string> options; // the run's, after -- (--record); else the tests to run
+    std::vector<std::string> parameters; // -D NAME=VALUE
     bool force = false;
 };
 
@@ -303,7 +304,9 @@ int record_test(const TestOptions &o, const Paths &paths) {
         return EXIT_USAGE;
     }
     if (runs_nowhere(o.dir)) return EXIT_FAILED;
-    auto built = build_app(paths, o.dir, "", Progress::brief);
+    auto parameters = parameter_options(o.parameters);
+    if (!parameters) return exit_code;
+    auto built = build_app(paths, o.dir, "", Progress::brief, Variant::release, false, *parameters);
     if (!built) return exit_code;
     std::vector<std::string> options = o.options.empty() ? std::vector<std::string>{"--time", "1"} : o.options;
     if (port_info(built->port).runner == Runner::qemu) {
@@ -366,7 +369,8 @@ bool select_tests(std::vector<fs::path> &files, const std::vector<std::string> &
     return true;
 }
 
-int run_tests(const std::string &dir, const std::vector<std::string> &names, const Paths &paths) {
+int run_tests(const std::string &dir, const std::vector<std::string> &names, const std::vector<std::string> &settings,
+              const Paths &paths) {
     fs::path tests = fs::path(dir) / "tests";
     std::vector<fs::path> files;
     if (fs::exists(tests))
@@ -388,7 +392,9 @@ int run_tests(const std::string &dir, const std::vector<std::string> &names, con
         return EXIT_USAGE;
     }
     if (runs_nowhere(dir)) return EXIT_FAILED;
-    auto built = build_app(paths, dir, "", Progress::brief);
+    auto parameters = parameter_options(settings);
+    if (!parameters) return exit_code;
+    auto built = build_app(paths, dir, "", Progress::brief, Variant::release, false, *parameters);
     if (!built) return exit_code;
     int passed = 0, failed = 0;
     std::vector<std::pair<std::string, std::string>> rows;
@@ -428,6 +434,11 @@ void add_test_command(CLI::App &app, const Paths &paths) {
                     "(simulator options after --; default --time 1)")
         ->type_name("NAME");
     cmd->add_flag("-f,--force", o->force, "with --record: replace an existing test");
+    cmd->add_option("-D,--param", o->parameters,
+                    "a value for a parameter openswarm.json declares (\"parameters\"): the tests run (or "
+                    "--record records) the image built with it, in a folder of its own as build -D")
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
     // One list for both: CLI11 gives the words after -- to the first
     // positional, so the names and --record's options cannot be two.
     cmd->add_option("names-or-options", o->options,
@@ -442,7 +453,7 @@ void add_test_command(CLI::App &app, const Paths &paths) {
             exit_code = EXIT_USAGE;
             return;
         }
-        exit_code = o->record.empty() ? run_tests(o->dir, o->options, paths) : record_test(*o, paths);
+        exit_code = o->record.empty() ? run_tests(o->dir, o->options, o->parameters, paths) : record_test(*o, paths);
     });
 }
 

@@ -44,6 +44,24 @@ bool parse_shard(const std::string &text, size_t &k, size_t &n) {
     return false;
 }
 
+// The trial runs another program of the app's build than its image (a
+// sweep's "program": the case study's plain loop); false after saying
+// that the build makes no such program.
+bool select_program(const Sweep &s, const std::string &program, SweepTrial &t) {
+    fs::path file = t.firmware.parent_path() / program;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) {
+        report(s.file.string() + ": \"program\": the app's build made no " + file.string() +
+               ": give the name of a program its CMakeLists.txt builds for this port (" +
+               t.firmware.filename().string() + " is the app's own), or build it first");
+        exit_code = EXIT_USAGE;
+        return false;
+    }
+    t.firmware = file;
+    t.firmware_hash = file_fingerprint(file);
+    return true;
+}
+
 // The app built once for each fidelity its points run in (the exact
 // mode's image, the native mode's shared object) and each set of its
 // parameters the points give (a folder each, kept: a resumed sweep
@@ -58,9 +76,10 @@ bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &t
         exit_code = EXIT_USAGE;
         return false;
     }
-    if (config.port != "kilobot") {
-        report(s.app.string() + ": a " + config.port + " app; a sweep runs Kilobot apps (the e-puck case study "
-               "runs as its clustering experiment file, docs/case-study.md): give a Kilobot app's \"app\"");
+    if (config.port != "kilobot" && config.port != "epuck_world") {
+        report(s.app.string() + ": a " + config.port + " app; a sweep runs apps for the world simulator, a "
+               "Kilobot's or an e-puck's (\"port\": \"kilobot\" or \"epuck_world\" in its openswarm.json): give "
+               "such an app's \"app\"");
         exit_code = EXIT_USAGE;
         return false;
     }
@@ -83,6 +102,7 @@ bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &t
         t.firmware = it->second.first;
         t.firmware_hash = it->second.second;
         t.parameters = b.second;
+        if (!point_program(s, t.point).empty() && !select_program(s, point_program(s, t.point), t)) return false;
     }
     return true;
 }

@@ -64,7 +64,7 @@ std::vector<json> values_at(const fs::path &f, const std::string &where, const j
 // A parameter's place, checked against the world: the world gives the
 // trials' seeds and durations its own way.
 void check_parameter(const Sweep &s, const std::string &where, const std::string &path) {
-    if (is_app_place(path)) return; // against the app, once its values are known (check_app_values)
+    if (is_app_place(path) || path == program_place) return; // their values are checked once known
     if (path == "seed")
         fail(s.file, where, "the seed is not swept: each trial t of a point runs with \"seed\" + t; "
                             "give \"trials\" and \"seed\" instead");
@@ -145,6 +145,51 @@ void check_app_values(const Sweep &s, bool grid) {
     }
 }
 
+// The base world with the places in it a point sets.
+json with_world_places(const Sweep &s, size_t point) {
+    json world = s.base_world;
+    for (size_t p = 0; p < s.parameters.size(); p++)
+        if (!is_app_place(s.parameters[p].path) && s.parameters[p].path != program_place)
+            set_world_path(world, s.parameters[p].path, s.points[point][p]);
+    return world;
+}
+
+// The values of the "program" place: names of files in the app's build
+// folder (whether each was built is known once the app is).
+void check_program_values(const Sweep &s, bool grid) {
+    for (size_t p = 0; p < s.parameters.size(); p++) {
+        if (s.parameters[p].path != program_place) continue;
+        for (size_t i = 0; i < s.points.size(); i++) {
+            const json &v = s.points[i][p];
+            if (!v.is_string() || v.get<std::string>().empty() ||
+                v.get<std::string>().find_first_of("/\\") != std::string::npos)
+                fail(s.file, grid ? "grid.program" : "points[" + std::to_string(i) + "].program",
+                     "expected the name of a program the app's build makes (a file name, e.g. \"clusters-plain\"), "
+                     "found " + found(v));
+        }
+    }
+}
+
+// "marks": every point's world places its robots and objects on them.
+void load_marks(Sweep &s, const json &doc) {
+    if (!doc.contains("marks")) return;
+    const fs::path &f = s.file;
+    const json &marks = doc["marks"];
+    if (!marks.is_object()) fail(f, "marks", "expected {\"columns\", \"rows\", \"spacing_mm\"}, found " + found(marks));
+    check_keys(f, "marks", marks, {"columns", "rows", "spacing_mm"});
+    Marks m;
+    m.columns = (int)number_at(f, "marks.columns", require(f, marks, "columns", "marks"), 1, 1000);
+    m.rows = (int)number_at(f, "marks.rows", require(f, marks, "rows", "marks"), 1, 1000);
+    m.spacing_mm = real_at(f, "marks.spacing_mm", require(f, marks, "spacing_mm", "marks"), 80, 10000);
+    s.marks = m;
+    for (size_t p = 0; p < s.points.size(); p++) {
+        std::string why = marks_problem(with_world_places(s, p), m);
+        if (!why.empty())
+            fail(f, "marks", why + " (in " + s.world.string() +
+                                 (s.parameters.empty() ? "" : ", at the point " + point_label(s, p)) + ")");
+    }
+}
+
 void load_metrics(Sweep &s, const json &doc) {
     if (doc.contains("metrics")) {
         const json &list = doc["metrics"];
@@ -195,7 +240,7 @@ Sweep load_sweep(const fs::path &file) {
     s.file = file;
     if (!doc.is_object()) fail(file, "", std::string("expected a JSON object { ... }; ") + example);
     check_keys(file, "", doc, {"description", "app", "world", "trials", "seed", "duration_s", "grid",
-                               "points", "metrics", "scripts", "every_s"});
+                               "points", "marks", "metrics", "scripts", "every_s"});
     if (doc.contains("description")) s.description = string_at(file, "description", doc["description"], "a text");
     s.app = app_of(file, doc);
     s.world = (fs::absolute(file).parent_path() /
@@ -214,16 +259,17 @@ Sweep load_sweep(const fs::path &file) {
     else if (doc.contains("points")) load_points(s, doc["points"]);
     else s.points.push_back({}); // the world as it is, trials times
     check_app_values(s, doc.contains("grid"));
+    check_program_values(s, doc.contains("grid"));
+    load_marks(s, doc);
     load_metrics(s, doc);
     return s;
 }
 
 json point_world(const Sweep &s, size_t point, int trial) {
-    json world = s.base_world;
-    for (size_t p = 0; p < s.parameters.size(); p++)
-        if (!is_app_place(s.parameters[p].path)) set_world_path(world, s.parameters[p].path, s.points[point][p]);
+    json world = with_world_places(s, point);
     world["seed"] = (uint64_t)s.seed + (uint64_t)trial;
     if (s.duration_s > 0) world["duration_s"] = s.duration_s;
+    if (s.marks) place_on_marks(world, *s.marks, world["seed"].get<uint32_t>());
     return world;
 }
 
@@ -235,6 +281,12 @@ ParameterValues point_parameters(const Sweep &s, size_t point) {
         if (is_app_place(s.parameters[p].path))
             values[s.parameters[p].path.substr(4)] = s.points[point][p].get<long>();
     return values;
+}
+
+std::string point_program(const Sweep &s, size_t point) {
+    for (size_t p = 0; p < s.parameters.size(); p++)
+        if (s.parameters[p].path == program_place) return s.points[point][p].get<std::string>();
+    return "";
 }
 
 std::string point_label(const Sweep &s, size_t point) {

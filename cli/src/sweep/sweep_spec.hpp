@@ -6,19 +6,22 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "../app_parameters.hpp"
+#include "mark_placement.hpp"
 
 namespace openswarm {
 
 // A value a sweep varies: a world field, named by its place in
 // world.json ("arena.width_mm", "robots[0].count", "ir.loss_percent"), or
 // a parameter of the app, "app.NAME" (openswarm.json's "parameters": each
-// set of them is a build of its own).
+// set of them is a build of its own), or "program": which program of the
+// app's build the robots run (the case study's two controllers).
 struct SweepParameter {
     std::string path;
     std::vector<nlohmann::json> values; // as the grid lists them (empty for a list of points)
@@ -33,6 +36,7 @@ struct Sweep {
     int trials = 1;
     uint32_t seed = 1;           // trial t (from 0) runs with seed + t
     double duration_s = 0;       // 0: the world's
+    std::optional<Marks> marks;  // each trial's robots and objects on marks drawn from its seed
     std::vector<SweepParameter> parameters;
     std::vector<std::vector<nlohmann::json>> points; // a value for each parameter
     std::vector<std::string> metrics;                // as `openswarm metrics --metric` takes them
@@ -57,6 +61,13 @@ ParameterValues point_parameters(const Sweep &s, size_t point);
 
 // Whether a sweep's place names an app parameter ("app.NAME"), not a world field.
 bool is_app_place(const std::string &path);
+
+// The place naming the program of the app's build a point runs.
+constexpr const char *program_place = "program";
+
+// The program a point runs, a file of the app's build folder ("" for the
+// app's own image).
+std::string point_program(const Sweep &s, size_t point);
 
 // "robots[0].count=10, ir.loss_percent=20" (the base world for no parameters).
 std::string point_label(const Sweep &s, size_t point);

@@ -82,7 +82,8 @@ bool stopped(SweepTrial &t, int status) {
 
 void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
     t.attempted = true;
-    const std::string world = point_world(s, t.point, t.trial).dump(2) + "\n";
+    const json point = point_world(s, t.point, t.trial);
+    const std::string world = point.dump(2) + "\n";
     // The app's parameters with the world (none: the world's alone, as
     // before there were any, so earlier sweeps resume).
     const std::string parameters = t.parameters.empty() ? "" : "parameters " + json(t.parameters).dump() + "\n";
@@ -110,11 +111,15 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
         t.failure = "cannot write " + (t.dir / "world.json").string() + " (the disk full?)";
         return;
     }
+    std::vector<std::string> command{simulator.string(), "--quiet",   "--no-progress", "--world",
+                                     (t.dir / "world.json").string(), "--out", t.dir.string()};
+    // e-pucks' controllers print to the simulator's standard error; the
+    // console's CSV is the Kilobots' (openswarm-sim refuses it beside e-pucks).
+    if (!point.contains("robot") || point["robot"] != "epuck")
+        command.insert(command.end(), {"--console-csv", (t.dir / "console.csv").string()});
+    command.push_back(t.firmware.string());
     std::string output;
-    int status = capture_program_and_errors(
-        {simulator.string(), "--quiet", "--no-progress", "--world", (t.dir / "world.json").string(), "--out",
-         t.dir.string(), "--console-csv", (t.dir / "console.csv").string(), t.firmware.string()},
-        output);
+    int status = capture_program_and_errors(command, output);
     if (status != 0 && stopped(t, status)) return;
     if (status != 0) {
         t.refused = status == 2;
