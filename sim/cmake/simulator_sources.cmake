@@ -29,6 +29,7 @@ endforeach()
 # link's format and whole-message I/O are the controllers' own (MIT,
 # ports/epuck/host).
 list(APPEND SIMULATOR_SOURCES ${WORLD_FILE_SOURCES} ${SIM_ROOT}/src/world/world.cpp
+  ${SIM_ROOT}/src/world/box2d_timer.cpp
   ${REPO_ROOT}/cli/src/suggest.cpp ${REPO_ROOT}/ports/epuck/host/src/link_io.c)
 # What a run in a world leaves behind (also a library of its own for
 # tests/world's driver).
