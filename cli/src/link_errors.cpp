@@ -57,7 +57,20 @@ std::string flash_explanation(long over, const AppConfig &config) {
 // carry 0x800000; the ATmega328P's RAM starts at 0x100 (2 KB).
 constexpr long avr_ram_end = 0x800000 + 0x100 + 2048;
 
+// Who wants a heap: on the Kilobot a call of malloc, calloc, realloc or
+// free, sent to an undefined __wrap_ function (ports/kilobot/cmake/
+// avr-gcc.cmake); on the e-puck2 newlib's malloc, which wants _sbrk, left
+// out on purpose.
+static bool wants_heap(const std::string &line) {
+    static const std::regex heap("undefined reference to `(__wrap_(malloc|calloc|realloc|free)|_sbrk)'");
+    return std::regex_search(line, heap);
+}
+
 void LinkOverflows::scan(const std::string &line) {
+    if (wants_heap(line)) {
+        heap_wanted = true;
+        return;
+    }
     static const std::regex overflow("region `?'?([A-Za-z_]+)'? overflowed by ([0-9]+) bytes");
     static const std::regex avr_bss("address (0x80[0-9a-fA-F]{4}) of .* is not within region `data'");
     std::smatch m;
@@ -76,7 +89,14 @@ void LinkOverflows::scan(const std::string &line) {
 std::optional<std::string> LinkOverflows::explain(const AppConfig &config,
                                                   const fs::path &generated_config) const {
     std::string text;
-    if (ram_over) text = ram_explanation(ram_over, config, generated_config);
+    // The linker's lines above name the Kilobot app's call (not newlib's
+    // on the e-puck2): the functions are named here.
+    if (heap_wanted)
+        text = "no heap on this robot: use static memory (the app calls malloc, calloc, realloc or "
+               "free; the " + config.port + "'s RAM is the kernel's pools and the stacks, sized at build "
+               "time): a static array or global instead of malloc, a pool of fixed slots if things "
+               "come and go, or an event declared in " + config.file.string() + " to pass data";
+    if (ram_over) text += (text.empty() ? "" : "\n") + ram_explanation(ram_over, config, generated_config);
     if (flash_over) text += (text.empty() ? "" : "\n") + flash_explanation(flash_over, config);
     if (text.empty()) return std::nullopt;
     return text;

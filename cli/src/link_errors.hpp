@@ -1,5 +1,6 @@
 // The linker's "region `data' overflowed by N bytes", said for a person:
-// which memory, by how much, who holds most of it and what to change.
+// which memory, by how much, who holds most of it and what to change; and
+// its "undefined reference" to the heap (malloc on a robot, which has none).
 #pragma once
 
 #include <filesystem>
@@ -20,6 +21,7 @@ class LinkOverflows {
 
   private:
     long flash_over = 0, ram_over = 0;
+    bool heap_wanted = false;
 };
 
 }  // namespace openswarm

@@ -10,10 +10,15 @@ namespace openswarm {
 int exit_code = EXIT_OK;
 
 // Flushed after what the command printed before it, in the order it came.
+static std::vector<std::string> reported;
+
 void report(const std::string &message) {
     std::fflush(stdout);
     std::fprintf(stderr, "openswarm: %s\n", message.c_str());
+    reported.push_back(message);
 }
+
+const std::vector<std::string> &reported_messages() { return reported; }
 
 }  // namespace openswarm
 

@@ -118,9 +118,10 @@ std::string simulator_failure(int status) {
     case 4: return "the firmware did not stop by itself in the time given";
     case 5: return "a robot jumped to the bootloader (a BOOT message)";
     case 6: return "the firmware reported a kernel fault, a stack overflowed or a pointer wrote "
-                   "into the CPU's registers (above: which, when): the run fails; a thread's stack "
-                   "overflow wants a bigger \"stack\" in openswarm.json";
+                   "into the CPU's registers (above: which, when, and what to do): the run fails";
     case 7: return "the firmware hung with interrupts masked (above: since when, where)";
+    case 8: return "the run ended with warnings (above: each with its fix), and --strict makes them "
+                   "errors; fix them, or run without --strict";
     case 128 + SIGINT:
     case 128 + SIGTERM:
         return std::string("the run was interrupted by ") + (status == 128 + SIGINT ? "SIGINT" : "SIGTERM") +

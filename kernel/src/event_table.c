@@ -188,6 +188,8 @@ static sys_status subscribe(sys_event_id event, sys_pid pid, sys_event_handler h
     port_irq_state_t s = port_irq_save();
     sys_status st = SYS_OK;
     if (!os_event_registered(event)) {
+        /* counted: the handler would never run, and the caller rarely checks */
+        os_count(&os_stats.subscriptions_refused);
         st = SYS_E_NOT_REGISTERED;
     } else if (pid != SYS_PID_SYSTEM &&
                (os_thread_of(pid) == NULL || os_thread_of(pid)->state == SYS_PROCESS_ZOMBIE)) {

@@ -51,7 +51,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     main_stack_paint(r, elf);
     stack_watch_attach(r, elf);
     register_store_watch_attach(r, elf);
-    if (o->counters_period >= 0) firmware_counters_locate(r, elf);
+    firmware_counters_locate(r, elf); /* the warnings at the end read them */
     if (index == 0) {
         nominal_hz = r->avr->frequency;
     } else if (r->avr->frequency != nominal_hz) {
@@ -93,17 +93,20 @@ static void report_crash(const robot *r, const options *o, double t) {
                 r->index, firmware_of(o, r->index), t, (unsigned)r->avr->pc, (unsigned)r->avr->flashend);
         return;
     }
-    fprintf(stderr, "openswarm-sim: %sthe firmware crashed at %.6f s (PC 0x%04x): a bad "
+    char place[400];
+    fprintf(stderr, "openswarm-sim: %sthe firmware crashed at %.6f s in %s: a bad "
                     "jump or a stack overflow; run it with avr-gdb to see where\n",
-            r->console.prefix, t, (unsigned)r->avr->pc);
+            r->console.prefix, t, code_place(firmware_of(o, r->index), r->avr->pc, place, sizeof place));
 }
 
 static int report(int n, const options *o) {
     int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, memory_broken = 0;
     unsigned faults = 0;
+    int warnings = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         faults += r->console.faults;
+        warnings += firmware_warnings_report(r);
         hung |= r->hung;
         /* a stack past its room, a store into the registers: told when it happened */
         memory_broken |= main_stack_report(r, o->main_stack);
@@ -141,6 +144,11 @@ static int report(int n, const options *o) {
         return EXIT_FAULT;
     }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
+    if (warnings != 0 && o->strict) {
+        fprintf(stderr, "openswarm-sim: %d warning%s (above) and --strict: the run fails\n", warnings,
+                warnings == 1 ? "" : "s");
+        return EXIT_WARNINGS;
+    }
     if (running && !o->quiet) progress_summary(o->seconds, n);
     return status;
 }
@@ -205,7 +213,10 @@ static void run(const options *o) {
         ir_channel_hand_over(LOCKSTEP_CYCLES);
         faults_after_window(end);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
-        for (int i = 0; i < o->robots; i++) interrupt_watch_check(&robots[i], o->mask_limit_ms);
+        for (int i = 0; i < o->robots; i++) {
+            interrupt_watch_check(&robots[i], o->mask_limit_ms);
+            fault_place_after_window(&robots[i], firmware_of(o, i));
+        }
         progress_update(end);
         if ((all_stopped && o->robots > 0) || end == limit) break; /* none: run to the end */
         if (interrupt_stop_here((double)end / nominal_hz)) break;

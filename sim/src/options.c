@@ -31,6 +31,8 @@ static void usage(FILE *out) {
             "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
             "      --allow-faults   a kernel fault the firmware reports does not fail the run\n"
             "                       (for tests that provoke one on purpose)\n"
+            "      --strict         the warnings at the end (a refused subscription, a lost\n"
+            "                       event, printing from an interrupt) fail the run, exit 8\n"
             "      --mask-limit MS  a firmware running with interrupts masked for longer fails\n"
             "                       the run, exit 7 (default 1000; 0: never)\n"
             "      --main-stack     print each robot's main stack's worst use at the end\n"
@@ -110,6 +112,7 @@ static void usage(FILE *out) {
             "stack it is on (a thread's past its guard, the main stack into the RAM\n"
             "below it) or it stored through a pointer into the CPU's registers (a NULL\n"
             "pointer), unless --allow-faults, 7 a firmware hung with interrupts masked,\n"
+            "8 warnings at the end with --strict,\n"
             "130 stopped by SIGINT (Ctrl-C), 143 by SIGTERM: the outputs then hold the run\n"
             "up to that time (a second Ctrl-C ends it at once).\n");
 }
@@ -268,7 +271,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
         {"ids", no_argument, 0, 'i' + 256},
         {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
-        {"allow-faults", no_argument, 0, 'A' + 256},
+        {"allow-faults", no_argument, 0, 'A' + 256}, {"strict", no_argument, 0, 's' + 256},
         {"mask-limit", required_argument, 0, 'M' + 256}, {"main-stack", no_argument, 0, 'S' + 256},
         {"timestamps", no_argument, 0, 'T' + 256},
         {"faults", required_argument, 0, 'f' + 256}, {"fault-log", required_argument, 0, 'l' + 256},
@@ -293,6 +296,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'n': if ((v = number("--robots", optarg, 1, MAX_ROBOTS, "2")) < 0) return -1; o->robots = (int)v; place.robots_given = 1; o->given |= GIVEN_ROBOTS; break;
         case 's': o->expect_stop = 1; break;
         case 'A' + 256: o->allow_faults = 1; break;
+        case 's' + 256: o->strict = 1; break;
         case 'M' + 256: if ((v = number("--mask-limit", optarg, 0, 3600000, "1000")) < 0) return -1; o->mask_limit_ms = (double)v; break;
         case 'S' + 256: o->main_stack = 1; break;
         case 'T' + 256: o->timestamps = 1; break;

@@ -35,7 +35,7 @@
 #define MAX_OHC_MESSAGES 16
 
 enum { EXIT_USAGE = 2, EXIT_CRASH = 3, EXIT_TIMEOUT = 4, EXIT_BOOTLOADER = 5, EXIT_FAULT = 6,
-       EXIT_HANG = 7 };
+       EXIT_HANG = 7, EXIT_WARNINGS = 8 };
 
 /* Where a Kilobot's IR bootloader starts (a byte address): the ATmega328P's
  * 4 KB boot section. The overhead controller's BOOT message jumps there. */
@@ -63,6 +63,7 @@ typedef struct options {
     int quiet;
     int expect_stop;
     int allow_faults; /* kernel faults do not fail the run */
+    int strict;       /* the warnings at the end fail the run (EXIT_WARNINGS) */
     double mask_limit_ms; /* interrupts masked longer than this fail the run; 0: never */
     int main_stack;     /* print each robot's main stack's worst use */
     int timestamps;     /* console and serial lines begin with their time */
@@ -145,6 +146,9 @@ typedef struct console {
     uint8_t record[2];    /* a kernel fault record being received */
     int record_left;      /* its bytes still to come */
     unsigned faults;      /* kernel faults reported */
+    int overrun_pending;  /* a handler past its limit, to be named (code_place.c) */
+    unsigned from_interrupt;   /* characters written from an interrupt handler */
+    double from_interrupt_at;  /* the first one's time */
     /* Thread names the firmware told (kilobot_sim.h: 0x02, pid, name, 0),
      * by the pid's slot (its low 4 bits); the pid they were told for. */
     char thread_name[16][32];
@@ -307,6 +311,18 @@ int stack_guard_at(const uint8_t *ram, uint32_t i, uint32_t end);
 void firmware_counters_locate(robot *r, const char *elf_path);
 void firmware_counters_print(const robot *r, double seconds);
 int main_stack_report(const robot *r, int print);
+
+/* firmware_warnings.c: at the end of a run, what robot r's firmware lost
+ * or refused (its kernel's counters) and printed from an interrupt, as
+ * warnings on stderr with the fix; how many. */
+int firmware_warnings_report(const robot *r);
+
+/* code_place.c: "stuck, main.c:17 (PC 0x1a2)", where a byte address is in
+ * the sources of the ELF (avr-addr2line), as far as it can tell, in out. */
+const char *code_place(const char *elf, uint32_t pc, char *out, size_t size);
+/* After a window: a handler reported past its limit is named by where
+ * robot r runs now (the tick that reported it has returned into it). */
+void fault_place_after_window(robot *r, const char *elf);
 
 /* interrupt_watch.c: a robot running with interrupts masked for more than
  * limit_ms (0: never reported) is reported once and marked hung. Each

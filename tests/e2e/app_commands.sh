@@ -8,32 +8,25 @@
 set -euo pipefail
 openswarm=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-expect() { # expect STATUS REGEX COMMAND...: the status, and REGEX in its output
-    local want=$1 regex=$2 status=0
-    shift 2
-    "$@" > out.log 2>&1 || status=$?
-    cat out.log
-    test "$status" = "$want"
-    grep -Eq "$regex" out.log
-}
+source "$(dirname "$0")/check.sh"
 "$openswarm" new app --template blinky >/dev/null
 cd app
 # test NAME: one test; an unknown name is refused before the build.
 cp tests/blinks.trace tests/other.trace
 sed -i 's/^0.002,led,0,3,0$/0.002,led,3,3,3/' tests/other.trace
-expect 0 "^1 passed, 0 failed$" "$openswarm" test blinks
+logged 0 "^1 passed, 0 failed$" "$openswarm" test blinks
 grep -q "^blinks  *PASSED$" out.log
 ! grep -q "^other" out.log
-expect 2 "no test 'blink' \(./tests/blink.trace\) \(did you mean 'blinks'\?\); tests: blinks, other" "$openswarm" test blink
-expect 1 "^0 passed, 1 failed$" "$openswarm" test other
+logged 2 "no test 'blink' \(./tests/blink.trace\) \(did you mean 'blinks'\?\); tests: blinks, other" "$openswarm" test blink
+logged 1 "^0 passed, 1 failed$" "$openswarm" test other
 # clean: the build folder goes, and it says so; nothing left, it says that.
 test -d build
-expect 0 "^Removed ./build \([0-9]+ files, [0-9.]+ MB\)" "$openswarm" clean
+logged 0 "^Removed ./build \([0-9]+ files, [0-9.]+ MB\)" "$openswarm" clean
 test ! -e build
-expect 0 "^Nothing to remove: ./build does not exist$" "$openswarm" clean
-expect 2 "^openswarm: tests/openswarm.json: not found; .*-C DIR$" "$openswarm" clean -C tests
+logged 0 "^Nothing to remove: ./build does not exist$" "$openswarm" clean
+logged 2 "^openswarm: tests/openswarm.json: not found; .*-C DIR$" "$openswarm" clean -C tests
 test -f tests/blinks.trace
-expect 0 "Remove the app's build folder" "$openswarm" clean --help
+logged 0 "Remove the app's build folder" "$openswarm" clean --help
 # Completion: every command of `openswarm --help`, and a working bash function.
 commands=$("$openswarm" --help | sed -n '/^Subcommands:/,$p' | awk 'NR > 1 && /^  [a-z]/ {print $1}')
 test -n "$commands"
@@ -47,15 +40,15 @@ bash -n completion.bash
     COMP_WORDS=(openswarm cle); COMP_CWORD=1; _openswarm; test "${COMPREPLY[*]}" = "clean"
     COMP_WORDS=(openswarm config check --p); COMP_CWORD=3; _openswarm; test "${COMPREPLY[*]}" = "--port"
 )
-expect 2 "Argument 'fish'|fish" "$openswarm" completion fish
+logged 2 "Argument 'fish'|fish" "$openswarm" completion fish
 # --port: checked, with a did-you-mean; a device the port has not, named.
-expect 2 "unknown port 'kilobt'; ports: .*did you mean 'kilobot'" "$openswarm" build --port kilobt
-expect 2 "unknown port 'epuk2'.*did you mean 'epuck2'" "$openswarm" config check --port epuk2
-expect 0 "openswarm.json is valid for epuck2$" "$openswarm" config check --port epuck2
+logged 2 "unknown port 'kilobt'; ports: .*did you mean 'kilobot'" "$openswarm" build --port kilobt
+logged 2 "unknown port 'epuk2'.*did you mean 'epuck2'" "$openswarm" config check --port epuk2
+logged 0 "openswarm.json is valid for epuck2$" "$openswarm" config check --port epuck2
 sed -i 's/^  "port": "kilobot",$/&\n  "devices": { "light": { "processor": "raw" } },/' openswarm.json
-expect 0 "openswarm.json is valid$" "$openswarm" config check
-expect 2 "devices.light.*no device \"light\" on epuck2 \(--port epuck2; the file's \"port\" is kilobot\): build for kilobot \(leave --port out\), or remove this device for epuck2" \
+logged 0 "openswarm.json is valid$" "$openswarm" config check
+logged 2 "devices.light.*no device \"light\" on epuck2 \(--port epuck2; the file's \"port\" is kilobot\): build for kilobot \(leave --port out\), or remove this device for epuck2" \
     "$openswarm" config check --port epuck2
-expect 2 "no device \"light\" on epuck2 \(--port epuck2" "$openswarm" build --port epuck2
+logged 2 "no device \"light\" on epuck2 \(--port epuck2" "$openswarm" build --port epuck2
 ! grep -q "writable" out.log
 echo "1 passed, 0 failed"

@@ -65,6 +65,15 @@ printf '{"name": "keep", "port": "kilobot", "kernel": {"stack_check": 0}}' > kee
 expect 2 "\"kernel.stack_check\": expected true or false, found number 0" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "events": [{"name": "hop", "type": "int61"}]}' > keep/openswarm.json
 expect 2 "\"events\[0\].type\": unknown type \"int61\".*did you mean \"int16\"" "$openswarm" build -C keep
+printf '{"name": "keep", "port": "kilobot", "events": [{"name": "hop", "type": "unit16"}]}' > keep/openswarm.json
+expect 2 "\"events\[0\].type\": unknown type \"unit16\".*did you mean \"uint16\"" "$openswarm" build -C keep
+# build --json: the failure as JSON on standard output too (it printed nothing there).
+check "build --json's failure is JSON on stdout" 0 "unknown type .unit16" python3 -c '
+import json, subprocess, sys
+r = subprocess.run([sys.argv[1], "build", "--json", "-C", "keep"], capture_output=True, text=True)
+j = json.loads(r.stdout)
+assert r.returncode == 2 and j["exit_code"] == 2, (r.returncode, j)
+print(j["error"][0])' "$openswarm"
 printf '{"name": "keep", "port": "kilobot", "events": [{"name": "a"}, {"name": "a"}]}' > keep/openswarm.json
 expect 2 "\"events\[1\].name\": \"a\" is declared twice" "$openswarm" build -C keep
 printf '{"name": "keep", "port": "kilobot", "kernel": {"max_threads": 2}, "threads": [{"entry": "a"}, {"entry": "b"}]}' > keep/openswarm.json

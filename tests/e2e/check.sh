@@ -39,3 +39,16 @@ expect() {
 # fail WHAT [FILE...]: stops the script with "FAILED: WHAT" and each FILE's
 # contents, to see why.
 fail() { echo "FAILED: $1"; shift; for f in "$@"; do echo "--- $f"; cat "$f"; done; exit 1; }
+
+# logged STATUS REGEX COMMAND...: runs COMMAND into out.log (shown) and
+# stops the script unless its exit status is STATUS and a line of its
+# output (standard output and error) matches REGEX (grep -E); out.log
+# stays for further greps.
+logged() {
+    local want=$1 regex=$2 status=0
+    shift 2
+    "$@" > out.log 2>&1 || status=$?
+    cat out.log
+    [ "$status" = "$want" ] || fail "$* exited $status, not $want"
+    grep -Eq -- "$regex" out.log || fail "$*: no line matches $regex"
+}

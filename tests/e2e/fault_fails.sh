@@ -25,8 +25,8 @@ cp main.c main.c.orig
 sed -i 's|    for (;;) {|    volatile uint8_t big[200];\n    for (uint8_t i = 0; i < sizeof big; i++) big[i] = i;\n    for (;;) {|' main.c
 grep -q "volatile uint8_t big\[200\]" main.c
 fails run.log run --time 1
-grep -Eq "^openswarm-sim: kernel fault: stack overflow in thread [0-9]+ \(blinker\) at 0\.[0-9]+ s$" run.log
-grep -q "^openswarm: the firmware reported a kernel fault, a stack overflowed or a pointer wrote into the CPU's registers (above: which, when): the run fails" run.log
+grep -Eq "^openswarm-sim: kernel fault: stack overflow in thread [0-9]+ \(blinker\) at 0\.[0-9]+ s: give the thread a bigger \"stack\" in openswarm.json$" run.log
+grep -q "^openswarm: the firmware reported a kernel fault, a stack overflowed or a pointer wrote into the CPU's registers (above: which, when, and what to do): the run fails$" run.log
 fails test.log test
 grep -Eq "^blinks +FAILED$" test.log
 grep -q "^0 passed, 1 failed$" test.log

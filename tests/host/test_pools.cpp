@@ -125,6 +125,20 @@ TEST_F(Pools, SubscriptionsRunOut) {
     EXPECT_EQ(1u, stats().subscription_pool_full);
 }
 
+// A handler subscribed to an event nobody registered never runs: counted,
+// so that the end of a run can say so (issue 31).
+TEST_F(Pools, SubscriptionToAnUnregisteredEventIsCounted) {
+    sys_status st = SYS_OK;
+    boot([&] {
+        st = Sys_Subscribe_to_Event(
+            EV_A, SYS_PID_SYSTEM, [](sys_pid, sys_event_id, const sys_event_data *) { return true; },
+            nullptr);
+    });
+    settle();
+    EXPECT_STATUS(SYS_E_NOT_REGISTERED, st);
+    EXPECT_EQ(1u, stats().subscriptions_refused);
+}
+
 TEST_F(Pools, FullEventQueueRefusesSendsAndLosesNoneItAccepted) {
     static std::atomic<int> handled{0};
     handled = 0;

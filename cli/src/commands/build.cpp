@@ -190,6 +190,41 @@ void print_json(const BuildResult &r, const std::vector<Share> &shares, const st
     std::printf("%s\n", j.dump().c_str());
 }
 
+// A failed build --json: its errors (also said on standard error) as JSON
+// on standard output, where the caller reads the result (issue 31: it
+// printed nothing there).
+void print_json_failure() {
+    nlohmann::ordered_json j = {{"error", reported_messages()}, {"exit_code", exit_code}};
+    std::printf("%s\n", j.dump().c_str());
+}
+
+// build, once its options are parsed: exit_code says how it went.
+void build_command(const BuildOptions &o, const Paths &paths) {
+    Progress progress = o.json ? Progress::on_stderr : Progress::on_stdout;
+    if (o.debug && o.native) {
+        report("--debug and --native: give one (a debug image runs in the exact mode)");
+        exit_code = EXIT_USAGE;
+        return;
+    }
+    Variant variant = o.debug ? Variant::debug : o.native ? Variant::native : Variant::release;
+    auto parameters = parameter_options(o.parameters);
+    if (!parameters) return;
+    auto r = build_app(paths, o.dir, o.port, progress, variant, o.werror, *parameters);
+    if (!r) return;
+    std::string why = "not measured for a debug image (it has no link-time optimisation "
+                      "to see through)";
+    const bool host = port_info(r->port).flash_bytes == 0;
+    if (host) why = "a host program has no robot's memory to share";
+    if (r->native) why = "the native mode's build has no robot's memory to share";
+    auto shares = o.debug || host || r->native ? std::vector<Share>{}
+                                   : measure_shares(paths, o.dir, *r, progress, why);
+    if (o.json)
+        print_json(*r, shares, why);
+    else
+        print_summary(*r, shares, why);
+    exit_code = EXIT_OK;
+}
+
 }  // namespace
 
 std::vector<std::string> configure_command(const Paths &paths, const fs::path &dir, const std::string &name,
@@ -412,29 +447,8 @@ void add_build_command(CLI::App &app, const Paths &paths) {
         ->type_name("NAME=VALUE")
         ->allow_extra_args(false);
     cmd->callback([o, &paths] {
-        Progress progress = o->json ? Progress::on_stderr : Progress::on_stdout;
-        if (o->debug && o->native) {
-            report("--debug and --native: give one (a debug image runs in the exact mode)");
-            exit_code = EXIT_USAGE;
-            return;
-        }
-        Variant variant = o->debug ? Variant::debug : o->native ? Variant::native : Variant::release;
-        auto parameters = parameter_options(o->parameters);
-        if (!parameters) return;
-        auto r = build_app(paths, o->dir, o->port, progress, variant, o->werror, *parameters);
-        if (!r) return;
-        std::string why = "not measured for a debug image (it has no link-time optimisation "
-                          "to see through)";
-        const bool host = port_info(r->port).flash_bytes == 0;
-        if (host) why = "a host program has no robot's memory to share";
-        if (r->native) why = "the native mode's build has no robot's memory to share";
-        auto shares = o->debug || host || r->native ? std::vector<Share>{}
-                                       : measure_shares(paths, o->dir, *r, progress, why);
-        if (o->json)
-            print_json(*r, shares, why);
-        else
-            print_summary(*r, shares, why);
-        exit_code = EXIT_OK;
+        build_command(*o, paths);
+        if (o->json && exit_code != EXIT_OK) print_json_failure();
     });
 }
 

@@ -53,4 +53,8 @@ inline CLI::Validator finite_seconds(const std::string &option, double lo, doubl
 // "openswarm: <message>" on standard error.
 void report(const std::string &message);
 
+// Every message report() printed so far, in order: `build --json` repeats
+// them in its JSON when the build fails.
+const std::vector<std::string> &reported_messages();
+
 }  // namespace openswarm

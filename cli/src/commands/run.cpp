@@ -53,6 +53,7 @@ struct RunOptions {
     bool ids = false;
     bool trace = false; // with --world; without it the trace is always on
     bool native = false; // --native, or the world's "fidelity": "native"
+    bool strict = false; // the simulator's warnings at the end fail the run
     std::vector<std::string> simavr_only; // such options given, for a port QEMU runs
 };
 
@@ -305,6 +306,7 @@ int run_app(RunOptions o, const Paths &paths) {
     if (!o.vcd.empty()) argv.insert(argv.end(), {"--vcd", o.vcd});
     for (const auto &message : o.ohc) argv.insert(argv.end(), {"--ohc", message});
     if (o.profile) argv.push_back("--profile");
+    if (o.strict) argv.push_back("--strict");
     if (o.timestamps) argv.push_back("--timestamps");
     if (o.ir_log) argv.push_back("--ir-log");
     if (!o.clock_spread.empty()) argv.insert(argv.end(), {"--clock-spread", o.clock_spread});
@@ -400,6 +402,9 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                   "timing charged per basic block rather than cycle-exact (docs/world.md, \"Native "
                   "mode\"; a world's \"fidelity\": \"native\" asks for it too)");
     cmd->add_flag("--profile", o->profile, "print where the CPU cycles went, by function");
+    cmd->add_flag("--strict", o->strict,
+                  "the warnings at the end of the run (a refused subscription or registration, a "
+                  "lost event, printing from an interrupt) fail it, exit 1");
     cmd->add_flag("--timestamps", o->timestamps,
                   "begin every console line with its simulated time, as the trace's lines");
     cmd->add_flag("--ir-log", o->ir_log,

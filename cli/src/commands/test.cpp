@@ -181,10 +181,13 @@ struct TestRun {
     std::string failure;
 };
 
+// The simulator's warnings (what the firmware lost or refused) are shown
+// even when the test passes; with --strict they fail it.
 TestRun run_in_simulator(const std::string &name, const std::vector<std::string> &options,
-                         const fs::path &image, const Paths &paths) {
+                         const fs::path &image, const Paths &paths, bool strict) {
     fs::path csv = image.parent_path() / (name + ".trace.csv");
     std::vector<std::string> argv = {paths.simulator.string(), "--no-progress", "--trace-csv", csv.string()};
+    if (strict) argv.push_back("--strict");
     argv.insert(argv.end(), options.begin(), options.end());
     argv.push_back(image.string());
     std::string output;
@@ -193,10 +196,12 @@ TestRun run_in_simulator(const std::string &name, const std::vector<std::string>
     std::istringstream lines(output);
     std::string simulator_said; // its own lines: shown when the run failed
     for (std::string line; std::getline(lines, line);) {
-        if (line.rfind("openswarm-sim:", 0) == 0)
-            simulator_said += line + "\n";
-        else
+        if (line.rfind("openswarm-sim:", 0) != 0)
             run.console.push_back(line);
+        else if (line.find(" warning: ") != std::string::npos && status == 0)
+            std::fprintf(stderr, "%s\n", line.c_str());
+        else
+            simulator_said += line + "\n";
     }
     if (status != 0) {
         std::fprintf(stderr, "%s", simulator_said.c_str());
@@ -246,19 +251,19 @@ TestRun run_in_qemu(const std::vector<std::string> &options, const fs::path &ima
 
 // A run of the image where its port runs; options already checked.
 TestRun run_on_port(const std::string &port, const std::string &name, const std::vector<std::string> &options,
-                    const fs::path &image, const Paths &paths) {
+                    const fs::path &image, const Paths &paths, bool strict) {
     if (port_info(port).runner == Runner::qemu) return run_in_qemu(options, image);
-    return run_in_simulator(name, options, image, paths);
+    return run_in_simulator(name, options, image, paths, strict);
 }
 
 std::vector<std::string> run_and_compare(const std::string &port, const fs::path &file, const Expectation &e,
-                                         const fs::path &image, const Paths &paths) {
+                                         const fs::path &image, const Paths &paths, bool strict) {
     if (port_info(port).runner == Runner::qemu) {
         QemuRun unused;
         std::string wrong = qemu_options(e.options, unused);
         if (!wrong.empty()) return {file.string() + ":1: " + wrong};
     }
-    TestRun run = run_on_port(port, file.stem().string(), e.options, image, paths);
+    TestRun run = run_on_port(port, file.stem().string(), e.options, image, paths, strict);
     if (!run.failure.empty()) return {run.failure};
     auto problems = compare(file, e.changes, run.changes);
     for (auto &p : compare_console(file, e.console, run.console)) problems.push_back(p);
@@ -289,6 +294,7 @@ struct TestOptions {
     std::vector<std::string> options; // the run's, after -- (--record); else the tests to run
     std::vector<std::string> parameters; // -D NAME=VALUE
     bool force = false;
+    bool strict = false; // the simulator's warnings fail the test
 };
 
 // tests/NAME.trace from a run with the options given: what the robots
@@ -317,7 +323,7 @@ int record_test(const TestOptions &o, const Paths &paths) {
             return EXIT_USAGE;
         }
     }
-    TestRun run = run_on_port(built->port, o.record, options, built->image, paths);
+    TestRun run = run_on_port(built->port, o.record, options, built->image, paths, o.strict);
     if (!run.failure.empty()) {
         report("the run failed, so nothing was recorded: " + run.failure);
         return EXIT_FAILED;
@@ -370,7 +376,7 @@ bool select_tests(std::vector<fs::path> &files, const std::vector<std::string> &
 }
 
 int run_tests(const std::string &dir, const std::vector<std::string> &names, const std::vector<std::string> &settings,
-              const Paths &paths) {
+              bool strict, const Paths &paths) {
     fs::path tests = fs::path(dir) / "tests";
     std::vector<fs::path> files;
     if (fs::exists(tests))
@@ -404,7 +410,7 @@ int run_tests(const std::string &dir, const std::vector<std::string> &names, con
         std::string name = file.stem().string();
         std::vector<std::string> problems;
         try {
-            problems = run_and_compare(built->port, file, e, built->image, paths);
+            problems = run_and_compare(built->port, file, e, built->image, paths, strict);
         } catch (const std::exception &ex) {
             problems.push_back(ex.what());
         }
@@ -439,6 +445,9 @@ void add_test_command(CLI::App &app, const Paths &paths) {
                     "--record records) the image built with it, in a folder of its own as build -D")
         ->type_name("NAME=VALUE")
         ->allow_extra_args(false);
+    cmd->add_flag("--strict", o->strict,
+                  "the warnings at the end of a run (a refused subscription or registration, a lost "
+                  "event, printing from an interrupt) fail the test");
     // One list for both: CLI11 gives the words after -- to the first
     // positional, so the names and --record's options cannot be two.
     cmd->add_option("names-or-options", o->options,
@@ -453,7 +462,8 @@ void add_test_command(CLI::App &app, const Paths &paths) {
             exit_code = EXIT_USAGE;
             return;
         }
-        exit_code = o->record.empty() ? run_tests(o->dir, o->options, o->parameters, paths) : record_test(*o, paths);
+        exit_code = o->record.empty() ? run_tests(o->dir, o->options, o->parameters, o->strict, paths)
+                                      : record_test(*o, paths);
     });
 }
 

@@ -42,6 +42,7 @@ typedef struct sys_stats {
     uint16_t critical_leaks;
     uint16_t cpu_faults;             /* threads ended by a CPU trap (ports that catch them) */
     uint16_t handler_overruns;       /* handlers that ran past OS_CFG_HANDLER_LIMIT_MS */
+    uint16_t subscriptions_refused;  /* subscriptions to an event not registered (yet) */
     uint8_t event_queue_peak;        /* most bytes ever queued */
 } sys_stats;
 

@@ -46,8 +46,15 @@ set(CMAKE_ASM_FLAGS_INIT "-mmcu=${OPENSWARM_MCU} -DF_CPU=${OPENSWARM_F_CPU}UL")
 # flash below the Kilobot's bootloader (0x7000, the ATmega328P's 4 KB boot
 # section): a bigger image fails at link time instead of on the robot.
 set(OPENSWARM_FLASH_BYTES 0x7000 CACHE STRING "flash the program may use (below the bootloader)")
+# No heap on the robot (2 KB hold the kernel's pools and the stacks):
+# avr-libc's malloc returned NULL there, stored through unchecked. Every
+# call of malloc, calloc, realloc or free goes to a __wrap_ function nobody
+# defines, so the link stops at the caller, and `openswarm build` says "no
+# heap on this robot" (cli/src/link_errors.cpp). A port's own malloc would
+# not do: with LTO the call appears after the linker takes LTO code.
+set(_no_heap "-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free")
 set(CMAKE_EXE_LINKER_FLAGS_INIT
-    "-mmcu=${OPENSWARM_MCU} ${_opt} ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000 -Wl,--defsym=__TEXT_REGION_LENGTH__=${OPENSWARM_FLASH_BYTES}")
+    "-mmcu=${OPENSWARM_MCU} ${_opt} ${_lto} -mrelax -Wl,--gc-sections -Wl,--undefined=_mmcu,--section-start=.mmcu=0x910000 -Wl,--defsym=__TEXT_REGION_LENGTH__=${OPENSWARM_FLASH_BYTES} ${_no_heap}")
 set(CMAKE_EXECUTABLE_SUFFIX_C .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_CXX .elf)
 set(CMAKE_EXECUTABLE_SUFFIX_ASM .elf)

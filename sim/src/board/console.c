@@ -57,7 +57,17 @@ static void keep_row(console_rows *rows, double time_s, int index, const char *l
     rows->len += (size_t)n;
 }
 
+/* A character from an interrupt handler lands in the middle of whatever
+ * line a thread is printing: counted, for the warning at the end. simavr
+ * keeps the stack of interrupts being served (RETI pops it). */
+static void note_interrupt_context(console *c) {
+    if (c->avr->interrupts.running_ptr == 0) return;
+    if (c->from_interrupt++ == 0)
+        c->from_interrupt_at = (double)c->avr->cycle / (double)c->avr->frequency;
+}
+
 static void put(console *c, uint8_t v) {
+    note_interrupt_context(c);
     if (c->quiet && c->rows == NULL) return;
     if (v == '\n' || c->len == sizeof c->line - 1) {
         c->line[c->len] = '\0';
@@ -102,6 +112,25 @@ static const char *thread_label(const console *c, uint8_t pid, char *out, size_t
     return out;
 }
 
+/* A handler past its limit is reported by the tick with the system
+ * thread's pid, which runs every handler: "thread 0" would point at the
+ * kernel. The handler is named once the tick has returned into it
+ * (fault_place_after_window). */
+static void report_fault(console *c) {
+    char label[40];
+    double t = (double)c->avr->cycle / (double)c->avr->frequency;
+    c->faults++;
+    if (c->record[0] == 4) { /* SYS_FAULT_HANDLER_OVERRUN */
+        fprintf(stderr, "openswarm-sim: %skernel fault: %s at %.6f s\n", c->prefix,
+                kernel_fault_name(c->record[0]), t);
+        c->overrun_pending = 1;
+        return;
+    }
+    fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u%s at %.6f s%s\n", c->prefix,
+            kernel_fault_name(c->record[0]), c->record[1], thread_label(c, c->record[1], label, sizeof label),
+            t, c->record[0] == 1 ? ": give the thread a bigger \"stack\" in openswarm.json" : "");
+}
+
 static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param) {
     console *c = param;
     avr->data[addr] = v;
@@ -109,14 +138,7 @@ static void console_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param
         thread_record(c, v);
     } else if (c->record_left > 0) {
         c->record[2 - c->record_left--] = v;
-        if (c->record_left == 0) {
-            char label[40];
-            c->faults++;
-            fprintf(stderr, "openswarm-sim: %skernel fault: %s in thread %u%s at %.6f s\n", c->prefix,
-                    kernel_fault_name(c->record[0]), c->record[1],
-                    thread_label(c, c->record[1], label, sizeof label),
-                    (double)avr->cycle / (double)avr->frequency);
-        }
+        if (c->record_left == 0) report_fault(c);
     } else if (v == THREAD_RECORD) {
         c->naming = 1;
     } else if (v == FAULT_RECORD) {

@@ -4,7 +4,7 @@
  *   counters t=SECONDS robot=INDEX process_pool_full=0 ... event_queue_peak=12
  *     ir_sent=310 ... main_stack=180/1024 thread_stacks=57/120,33/88
  * The kernel's resource counters are os_stats (sys_stats, kernel/include/
- * openswarm/fault.h: eleven 16-bit counters, then the queue's peak byte),
+ * openswarm/fault.h: twelve 16-bit counters, then the queue's peak byte),
  * the Kilobot IR driver's ir_stats (kilobot_ir_stats: seven 16-bit
  * counters); a firmware without one of them (a classic-library build)
  * shows "none" for it, one with another layout "unknown layout". The
@@ -17,7 +17,7 @@
 static const char *const kernel_names[] = {
     "process_pool_full", "stack_pool_full", "event_data_full", "subscription_pool_full",
     "event_queue_full", "device_table_full", "events_discarded", "stack_overflows",
-    "critical_leaks", "cpu_faults", "handler_overruns"};
+    "critical_leaks", "cpu_faults", "handler_overruns", "subscriptions_refused"};
 #define KERNEL_COUNTERS (sizeof kernel_names / sizeof kernel_names[0])
 #define KERNEL_BYTES (2 * KERNEL_COUNTERS + 1) /* and event_queue_peak */
 

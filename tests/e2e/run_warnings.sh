@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# End to end, issue 31 "no silent failure": what a firmware lost or was
+# refused ends `openswarm run` and `openswarm test` with a warning naming
+# it and the fix (before, such runs said nothing and exited 0); --strict
+# makes the warnings fail them (exit 1). Three apps:
+#   - a handler subscribed to KILOBOT_EVENT_LIGHT without
+#     kilobot_sensors_init() (the event was never registered);
+#   - a kilolib program calling kilobot_sensors_init() (kilolib's pools
+#     leave no device slot for the sensors);
+#   - a kilolib program printing from an interrupt.
+#   run_warnings.sh OPENSWARM WORKDIR
+set -euo pipefail
+openswarm=$1 work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+source "$(dirname "$0")/check.sh"
+
+# A handler on the light sensor's event, which nothing registered.
+"$openswarm" new light --template blinky >/dev/null
+cd light
+sed -i 's|^    Sys_Subscribe_to_Event(EV_BLINK, SYS_PID_SYSTEM, count_blink, NULL);|&\n    Sys_Subscribe_to_Event(KILOBOT_EVENT_LIGHT, SYS_PID_SYSTEM, count_blink, NULL);|' main.c
+grep -q KILOBOT_EVENT_LIGHT main.c
+refused="^openswarm-sim: warning: 1 subscription\(s\) refused: the event was not registered, the handler never runs .*KILOBOT_EVENT_LIGHT.*; register the event before subscribing to it: call kilobot_sensors_init\(\)"
+logged 0 "$refused" "$openswarm" run --time 0.5
+logged 1 "^openswarm: the run ended with warnings \(above: each with its fix\), and --strict makes them errors" \
+    "$openswarm" run --time 0.5 --strict
+grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
+logged 0 "^1 passed, 0 failed$" "$openswarm" test
+grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
+logged 1 "^0 passed, 1 failed$" "$openswarm" test --strict
+grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
+# With the sensors initialised first, nothing to say.
+sed -i 's|^    robot_devices_init();|&\n    kilobot_sensors_init();|' main.c
+logged 0 "^Running" "$openswarm" run --time 0.5 --strict
+if grep -q "warning" out.log; then fail "a warning with the sensors initialised" out.log; fi
+cd ..
+
+# A kilolib program that asks for the analog sensors: kilolib's pools hold
+# neither their events' data nor their devices.
+"$openswarm" new classic --template kilolib >/dev/null
+cd classic
+sed -i 's|^    spinup_motors();|    kilobot_sensors_init();\n&|' main.c
+sed -i 's|^#include <kilolib.h>|&\n#include <openswarm/kilobot.h>|' main.c
+logged 0 "^openswarm-sim: warning: 1 event registration\(s\) refused: no room for the event's data, its handlers never run \(a kilolib program's pool holds kilolib's own: kilobot_sensors_init\(\) needs 6 bytes more\); .*raise \"event_data\"" \
+    "$openswarm" run --time 0.5
+# Room for their data: then the devices find no slot.
+printf '{"name": "classic", "port": "kilobot", "kernel": {"event_data": 64}}' > openswarm.json
+logged 0 "^openswarm-sim: warning: 1 device registration\(s\) refused: no free device slot .*kilobot_sensors_init\(\) needs 3 more\); raise \"max_devices\" in openswarm.json's \"kernel\"" \
+    "$openswarm" run --time 0.5
+printf '{"name": "classic", "port": "kilobot", "kernel": {"event_data": 64, "max_devices": 6}}' > openswarm.json
+logged 0 "^Running" "$openswarm" run --time 0.5 --strict
+cd ..
+
+# A kilolib program printing once from an interrupt of its own (Timer0's
+# compare B, which the port leaves free): its 20 characters ("\r\n" ends
+# the line on the debug serial port) cut into loop()'s line.
+"$openswarm" new noisy --template kilolib >/dev/null
+cd noisy
+cat > main.c <<'EOF'
+#include <avr/interrupt.h>
+#include <kilolib.h>
+#include <debug.h>
+
+ISR(TIMER0_COMPB_vect) {
+    TIMSK0 &= (uint8_t)~_BV(OCIE0B); /* once */
+    printf("from the interrupt\n");
+}
+
+void setup(void) {
+    TIMSK0 |= _BV(OCIE0B);
+}
+
+void loop(void) {
+    printf("from loop\n");
+    delay(100);
+}
+
+int main(void) {
+    kilo_init();
+    debug_init();
+    kilo_start(setup, loop);
+    return 0;
+}
+EOF
+logged 0 "^openswarm-sim: warning: 20 character\(s\) printed from an interrupt \(the first at 0\.[0-9]+ s\): they cut into the lines threads print; print from a thread or an event handler" \
+    "$openswarm" run --time 0.5
+logged 1 "--strict: the run fails" "$openswarm" run --time 0.5 --strict
+echo "1 passed, 0 failed"
