@@ -33,16 +33,6 @@ unsigned console_baud(const std::string &port) {
     return 0;
 }
 
-// The robot: --port, else the app's in dir.
-std::string robot_of(const MonitorOptions &o) {
-    if (!o.port.empty()) return o.port;
-    try {
-        return load_app_config(o.dir).port;
-    } catch (const std::exception &) {
-        return "";
-    }
-}
-
 // Copies the port to standard output until a signal or the port closes.
 int copy_console(SerialPort &port) {
     char buffer[4096];
@@ -64,7 +54,7 @@ int copy_console(SerialPort &port) {
 }
 
 int monitor(const MonitorOptions &o) {
-    std::string robot = robot_of(o);
+    std::string robot = port_given_or_app(o.port, o.dir);
     unsigned baud = o.baud != 0 ? o.baud : console_baud(robot);
     if (baud == 0) {
         report(robot.empty() ? "which robot? no openswarm.json in " + o.dir +
