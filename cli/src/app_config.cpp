@@ -354,6 +354,15 @@ bool is_kernel_switch(const std::string &key) {
     return false;
 }
 
+std::string port_given_or_app(const std::string &port, const fs::path &dir) {
+    if (!port.empty()) return port;
+    try {
+        return load_app_config(dir).port;
+    } catch (const std::exception &) {
+        return "";
+    }
+}
+
 AppConfig load_app_config(const fs::path &dir, const std::string &port) {
     AppConfig config;
     config.file = dir / "openswarm.json";

@@ -88,6 +88,11 @@ bool is_kernel_switch(const std::string &key);
 // for the file's own) if given: what `--port` builds.
 AppConfig load_app_config(const std::filesystem::path &dir, const std::string &port = "");
 
+// The port a command will use, when it can be told before a build: port
+// if given, else the app's in dir; "" when dir's openswarm.json is missing
+// or broken (the build reports that itself).
+std::string port_given_or_app(const std::string &port, const std::filesystem::path &dir);
+
 // "file:line:column: message" plus the line and a caret, for a byte offset.
 std::string located_message(const std::filesystem::path &file, const std::string &text,
                             size_t byte, const std::string &message);

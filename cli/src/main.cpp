@@ -48,6 +48,8 @@ int main(int argc, char **argv) {
     add_config_command(app, paths);
     add_doctor_command(app, paths);
     add_clean_command(app, paths);
+    add_upload_command(app, paths);
+    add_monitor_command(app, paths);
     add_completion_command(app, paths);
     std::vector<std::string> names;
     for (const auto *sub : app.get_subcommands({})) names.push_back(sub->get_name());

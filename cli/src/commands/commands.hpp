@@ -29,6 +29,8 @@ void add_test_command(CLI::App &app, const Paths &paths);
 void add_experiment_command(CLI::App &app, const Paths &paths);
 void add_metrics_command(CLI::App &app, const Paths &paths);
 void add_clean_command(CLI::App &app, const Paths &paths);
+void add_upload_command(CLI::App &app, const Paths &paths);
+void add_monitor_command(CLI::App &app, const Paths &paths);
 // Registered last: its script lists every command registered before it.
 void add_completion_command(CLI::App &app, const Paths &paths);
 

@@ -57,17 +57,6 @@ struct RunOptions {
     std::vector<std::string> simavr_only; // such options given, for a port QEMU runs
 };
 
-// The port the app will be built for, if it can be told before the build
-// (the build reports a missing or broken openswarm.json itself).
-std::string port_to_build(const RunOptions &o) {
-    if (!o.port.empty()) return o.port;
-    try {
-        return load_app_config(o.dir).port;
-    } catch (const std::exception &) {
-        return "";
-    }
-}
-
 // "2.5", "2.5s" or "20%" (suffix): the number, if it is one in [lo, hi].
 std::optional<double> number_in(std::string text, char suffix, double lo, double hi) {
     if (!text.empty() && text.back() == suffix) text.pop_back();
@@ -247,7 +236,7 @@ bool keep_world_beside_run(const std::string &world_path, const std::string &out
 
 int run_app(RunOptions o, const Paths &paths) {
     if (!run_options_usable(o)) return EXIT_USAGE;
-    std::string port = port_to_build(o);
+    std::string port = port_given_or_app(o.port, o.dir);
     if (is_port(port) && refuse_unrunnable(port, "run")) return EXIT_FAILED;
     if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
     if (is_port(port) && port_info(port).runner == Runner::world && !world_options_usable(o, port))
