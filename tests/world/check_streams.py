@@ -9,32 +9,22 @@ zero (about +-0.07 over 200 samples); a robot whose random stream is
 another's shifted by a few draws repeats that robot's steps a moment
 later, and the pair correlates near 1.
 """
-import csv
 import math
+import os
 import statistics
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from behaviour import paths, run  # noqa: E402
 
 TWINS = 0.5  # far above chance (7 standard deviations), far below a shared stream
 
 
-def run(sim, elf, world, out):
-    done = subprocess.run([sim, "--world", world, "--out", out, "-q", elf],
-                          capture_output=True, text=True, timeout=240)
-    if done.returncode != 0:
-        sys.exit(f"openswarm-sim failed ({done.returncode}):\n{done.stderr}")
-
-
 def steps(out):
     """Each robot's (distance moved, angle turned) between samples."""
-    paths = {}
-    with open(f"{out}/trajectories.csv") as f:
-        for row in csv.DictReader(f):
-            paths.setdefault(int(row["robot"]), []).append(
-                (float(row["x_mm"]), float(row["y_mm"]), float(row["heading_deg"])))
-    return {r: ([math.dist(a[:2], b[:2]) for a, b in zip(p, p[1:])],
-                [(b[2] - a[2] + 180.0) % 360.0 - 180.0 for a, b in zip(p, p[1:])])
-            for r, p in paths.items()}
+    return {r: ([math.dist(a[1:3], b[1:3]) for a, b in zip(p, p[1:])],
+                [(b[3] - a[3] + 180.0) % 360.0 - 180.0 for a, b in zip(p, p[1:])])
+            for r, p in paths(out).items()}
 
 
 def correlation(a, b):
