@@ -43,6 +43,7 @@ TEST_F(WorldFile, ReadsEverySection) {
     EXPECT_EQ(w.ambient_light_mv, 300);
     ASSERT_EQ(w.n_lights, 1); // beyond the arena's wall: allowed
     EXPECT_EQ(w.lights[0].at.x, 700);
+    EXPECT_EQ(w.lights[0].height_mm, 150); // a desk lamp unless the file says
     ASSERT_EQ(w.n_obstacles, 2);
     ASSERT_EQ(w.obstacles[0].n, 4);
     EXPECT_EQ(w.obstacles[0].v[2].x, 150);
@@ -210,6 +211,21 @@ TEST_F(WorldFile, AByteOrderMarkIsAccepted) {
               "world.json:1:10: seed: expected the random seed, a whole number 0..4294967295, found -3; e.g. \"seed\": 7\n"
               "    {\"seed\": -3, \"arena\": {\"width_mm\": 600, \"height_mm\": 400}}\n"
               "             ^\n");
+}
+
+// A lamp's height decides how the robot's battery shades it: a height
+// below the floor is refused where it stands, with the range and an example.
+TEST_F(WorldFile, LampHeight) {
+    world_spec w{};
+    ASSERT_EQ(load(R"({"arena": {"width_mm": 600, "height_mm": 400},
+"light": {"sources": [{"x_mm": 1, "y_mm": 2, "intensity_mv": 3, "height_mm": 40}]}})", &w), "");
+    EXPECT_EQ(w.lights[0].height_mm, 40);
+    world_spec_free(&w);
+    std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400},
+"light": {"sources": [{"x_mm": 1, "y_mm": 2, "intensity_mv": 3, "height_mm": -5}]}})");
+    EXPECT_NE(err.find("world.json:2:78: light.sources[0].height_mm: expected the bulb's height above the floor in mm"),
+              std::string::npos) << err;
+    EXPECT_NE(err.find("\"height_mm\": 150"), std::string::npos) << err;
 }
 
 TEST_F(WorldFile, WindowsLineEndings) {
