@@ -55,7 +55,8 @@ double kilobot_light_mv(const world_spec *spec, double x_mm, double y_mm, double
         double d = hypot(hypot(lamp.x - sensor.x, lamp.y - sensor.y), rise);
         if (d < NEAREST_MM) d = NEAREST_MM;
         double fall = (REFERENCE_MM / d) * (REFERENCE_MM / d);
-        mv += l->intensity_mv * fall * unshaded(sensor, centre, lamp, rise);
+        double seen = spec->light_unshaded ? 1.0 : unshaded(sensor, centre, lamp, rise);
+        mv += l->intensity_mv * fall * seen;
     }
     return mv;
 }

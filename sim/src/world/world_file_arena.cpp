@@ -179,10 +179,16 @@ void Reader::movable_object(const Node &n) {
 void Reader::light(const Node &n, world_spec &w) {
     const std::string example = "\"light\": {\"ambient_mv\": 300, \"sources\": [{\"x_mm\": 500, \"y_mm\": 200, "
                                 "\"intensity_mv\": 2000}]}";
-    object(n, {"ambient_mv", "sources"}, example);
+    object(n, {"ambient_mv", "shadow", "sources"}, example);
     if (auto a = get(n, "ambient_mv"))
         w.ambient_light_mv = number(*a, 0, 5000, false, "the light sensor's input with no source near, in mV",
                                     "\"ambient_mv\": 300");
+    if (auto s = get(n, "shadow")) {
+        if (!s.value()->is_boolean())
+            fail(*s, "expected true (the robot's battery shades its light sensor) or false (no shadow), found " +
+                         found(**s) + "; e.g. \"shadow\": false");
+        w.light_unshaded = !s.value()->get<bool>();
+    }
     auto sources = get(n, "sources");
     if (!sources) return;
     const std::string ex = "{\"x_mm\": 500, \"y_mm\": 200, \"intensity_mv\": 2000, \"height_mm\": 150}";
