@@ -99,9 +99,9 @@ CROSS = (("disperse", "disperse", "template_disperse.elf", "native_disperse.so",
          ("synchronisation", "synchronisation", "synchronise.elf", "native_synchronise.so",
           os.path.join(WORLDS, "synchronise.json"), None),
          ("move_to_light, `int` sum", "phototaxis", "move_to_light_int.elf", "native_move_to_light_int.so",
-          os.path.join(WORLDS, "phototaxis.json"), None),
+          os.path.join(WORLDS, "move_to_light.json"), None),
          ("move_to_light, `long` sum", "phototaxis", "move_to_light_long.elf", "native_move_to_light_long.so",
-          os.path.join(WORLDS, "phototaxis.json"), None))
+          os.path.join(WORLDS, "move_to_light.json"), None))
 
 
 def cross_rows(seeds):

@@ -18,7 +18,7 @@ foreach(piece options progress written interrupt inputs lockstep window_workers
     board/firmware_counters board/firmware_warnings board/code_place board/wide_memories board/thread_stacks board/stack_watch board/register_store_watch
     air/ir_channel air/ir_frame air/ir_log air/overhead_controller air/ir_faults
     faults/fault_plan faults/fault_log
-    world/placement world/world_random world/kilobot_motion world/world_run
+    world/placement world/world_random world/kilobot_motion world/kilobot_light world/world_run
     world/world_stepper world/world_avr native/native_load native/native_swarm
     native/native_air native/native_run world/epuck_sensors world/epuck_link world/epuck_pipes world/epuck_run native/native_epuck
     tools/debug tools/profile tools/measure)

@@ -7,13 +7,14 @@ its IR distance estimates, which starts 80 mm away facing away from the star
 (it is in the band within about 5 s), and checks:
   the star stays where it is;
   after SETTLE_S the planet's centre stays within ORBIT_MM +- BAND_MM of the
-  star's, and on average within +- 10 mm: the firmware walks straight only
-  within +- 5 mm, but it decides twice a second (one message each 0.52 s),
-  a turn on one motor also moves the centre (it pivots about a rear leg),
-  and the estimate itself is off by a few mm, so +- 20 mm (a third of the
-  radius; the IR range is 100 mm) is what "keeps its distance" means;
+  star's, and on average within +- 10 mm: the firmware turns one way or
+  the other at every message (one each 0.52 s) and walks straight only
+  nearer than 40 mm, a turn on one motor also moves the centre (it pivots
+  about a rear leg), and the estimate itself is off by a few mm, so +- 20
+  mm (a third of the radius; the IR range is 100 mm) is what "keeps its
+  distance" means;
   it goes round: its angle around the star sweeps one full turn or more
-  counter-clockwise after SETTLE_S.
+  clockwise after SETTLE_S (the classic planet keeps the star on its right).
 """
 import math
 import sys
@@ -46,9 +47,9 @@ def main():
     for _, dx, dy in late:
         a = math.degrees(math.atan2(dy, dx))
         if last is not None:
-            swept += (a - last + 180.0) % 360.0 - 180.0
+            swept -= (a - last + 180.0) % 360.0 - 180.0
         last = a
-    checks.expect(swept >= 360.0, f"it goes round the star counter-clockwise: {swept:.0f} deg "
+    checks.expect(swept >= 360.0, f"it goes round the star clockwise: {swept:.0f} deg "
                   f"({swept / 360.0:.1f} turns) in {late[-1][0] - late[0][0]:.0f} s")
     checks.finish()
 

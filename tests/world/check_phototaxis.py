@@ -2,12 +2,22 @@
 """Robots that walk up the light reach the lamp (world_phototaxis.elf).
 
 check_phototaxis.py SIM ELF WORLD OUT: runs worlds/phototaxis.json, a lamp
-and robots 400 mm from it facing away, and checks:
-  every robot ends less than half as far from the lamp as it started;
-  in the same world without the lamp (OUT/dark.json: same robots, same
-  seed, ambient light only) the same firmware brings none of them as near:
-  each ends more than half as far as it started from where the lamp was
-  (the approach is the light's doing, not the walk's).
+and robots 400 mm from it facing away, and the same world without the lamp
+(OUT/dark.json: same robots, same seed, ambient light only), and checks
+that with the lamp every robot ends nearer than NEAR of its starting
+distance from the lamp, and without it none does (the approach is the
+light's doing, not the walk's).
+
+Why NEAR is 0.7 (measured on this world, exact and native alike): without
+the lamp the robots end at 0.95-1.04 of their start (378-414 mm; the
+nearest any comes at any time is 0.84, 336 mm); with it they settle from
+about 30 s on at 0.35-0.47 (140-190 mm) and stay there, because there the
+150 mm lamp stands above the battery's reach (docs/world.md, "Light") and
+the sensor reads full light whatever the heading - a longer run would not
+bring them nearer. 0.7 lies midway between the two groups, so each has
+93-98 mm to spare, more than twice the spread of either group's ends
+(31-36 mm). Half the distance, the earlier threshold, left the farthest
+lit robot 13 mm.
 """
 import json
 import math
@@ -15,6 +25,9 @@ import os
 import sys
 
 from behaviour import Checks, paths, run
+
+
+NEAR = 0.7
 
 
 def distances(robots, lamp):
@@ -32,7 +45,8 @@ def main():
     run(sim, elf, world, f"{out}/light")
     robots = paths(f"{out}/light")
     for i, (start, end) in distances(robots, lamp).items():
-        checks.expect(end < 0.5 * start, f"with the lamp robot {i} ends nearer: {start:.0f} -> {end:.0f} mm")
+        checks.expect(end < NEAR * start, f"with the lamp robot {i} ends nearer than {NEAR} of its start: "
+                      f"{start:.0f} -> {end:.0f} mm")
 
     spec["description"] = "phototaxis.json without its lamp (written by check_phototaxis.py)"
     spec["light"]["sources"] = []
@@ -43,7 +57,7 @@ def main():
     run(sim, elf, dark, f"{out}/dark")
     robots = paths(f"{out}/dark")
     for i, (start, end) in distances(robots, lamp).items():
-        checks.expect(end > 0.5 * start, f"without the lamp robot {i} does not close in on its place: "
+        checks.expect(end > NEAR * start, f"without the lamp robot {i} does not close in on its place: "
                       f"{start:.0f} -> {end:.0f} mm")
     checks.finish()
 

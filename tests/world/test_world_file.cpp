@@ -43,6 +43,7 @@ TEST_F(WorldFile, ReadsEverySection) {
     EXPECT_EQ(w.ambient_light_mv, 300);
     ASSERT_EQ(w.n_lights, 1); // beyond the arena's wall: allowed
     EXPECT_EQ(w.lights[0].at.x, 700);
+    EXPECT_EQ(w.lights[0].height_mm, 150); // a desk lamp unless the file says
     ASSERT_EQ(w.n_obstacles, 2);
     ASSERT_EQ(w.obstacles[0].n, 4);
     EXPECT_EQ(w.obstacles[0].v[2].x, 150);
@@ -212,6 +213,8 @@ TEST_F(WorldFile, AByteOrderMarkIsAccepted) {
               "             ^\n");
 }
 
+// A lamp's height decides how the robot's battery shades it: a height
+// below the floor is refused where it stands, with the range and an example.
 TEST_F(WorldFile, WindowsLineEndings) {
     std::string err = error_of("{\r\n\"arena\": {\"width_mm\": 600, \"height_mm\": 400},\r\n\"seed\": -3\r\n}\r\n");
     EXPECT_EQ(err.substr(0, err.find('\n')),

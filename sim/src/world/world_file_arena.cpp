@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "world/kilobot_light.h"
 #include "world/world_file_reader.hpp"
 
 namespace world_file {
@@ -178,24 +179,34 @@ void Reader::movable_object(const Node &n) {
 void Reader::light(const Node &n, world_spec &w) {
     const std::string example = "\"light\": {\"ambient_mv\": 300, \"sources\": [{\"x_mm\": 500, \"y_mm\": 200, "
                                 "\"intensity_mv\": 2000}]}";
-    object(n, {"ambient_mv", "sources"}, example);
+    object(n, {"ambient_mv", "shadow", "sources"}, example);
     if (auto a = get(n, "ambient_mv"))
         w.ambient_light_mv = number(*a, 0, 5000, false, "the light sensor's input with no source near, in mV",
                                     "\"ambient_mv\": 300");
+    if (auto s = get(n, "shadow")) {
+        if (!s.value()->is_boolean())
+            fail(*s, "expected true (the robot's battery shades its light sensor) or false (no shadow), found " +
+                         found(**s) + "; e.g. \"shadow\": false");
+        w.light_unshaded = !s.value()->get<bool>();
+    }
     auto sources = get(n, "sources");
     if (!sources) return;
-    const std::string ex = "{\"x_mm\": 500, \"y_mm\": 200, \"intensity_mv\": 2000}";
+    const std::string ex = "{\"x_mm\": 500, \"y_mm\": 200, \"intensity_mv\": 2000, \"height_mm\": 150}";
     if (!sources.value()->is_array())
         fail(*sources, "expected a list of light sources, found " + found(**sources) + "; e.g. [" + ex + "]");
     for (size_t k = 0; k < sources.value()->size(); k++) {
         Node s = item(*sources, k);
-        object(s, {"x_mm", "y_mm", "intensity_mv"}, ex);
+        object(s, {"x_mm", "y_mm", "intensity_mv", "height_mm"}, ex);
         world_light l{};
         /* A lamp may stand beyond the arena's walls, as beside a table. */
         l.at.x = number(need(s, "x_mm", ex), -FAR_MM, FAR_MM, false, "x in mm", "\"x_mm\": 500");
         l.at.y = number(need(s, "y_mm", ex), -FAR_MM, FAR_MM, false, "y in mm", "\"y_mm\": 200");
         l.intensity_mv = number(need(s, "intensity_mv", ex), 0, 100000, false,
                                 "what it adds to a light sensor 100 mm away, in mV", "\"intensity_mv\": 2000");
+        l.height_mm = s->contains("height_mm")
+                          ? number(child(s, "height_mm"), 0, FAR_MM, false,
+                                   "the bulb's height above the floor in mm", "\"height_mm\": 150")
+                          : KILOBOT_LIGHT_DEFAULT_HEIGHT_MM;
         lights_.push_back(l);
     }
 }

@@ -18,13 +18,11 @@
 #include "world/epuck_run.h"
 #include "native/native_epuck.h"
 #include "native/native_load.h"
+#include "world/kilobot_light.h"
 #include "world/world.h"
 #include "world/world_stepper.h"
 
 #define ROOM_TEMPERATURE_MV 314   /* the ATmega328P's sensor at 25 C (datasheet) */
-#define LIGHT_REFERENCE_MM 100.0 /* a source adds its intensity at this distance */
-#define LIGHT_NEAREST_MM 10.0     /* closer, the sensor sees the source's own size */
-#define LIGHT_SENSOR_BACK_MM 15.5 /* the sensor looks up from the robot's back */
 
 static world_spec spec;
 static world *physics;
@@ -216,24 +214,9 @@ static double distance_between(int a, int b, void *ctx) {
     return d;
 }
 
-/* Ambient light plus each source's, falling with the square of the
- * distance (the sensor saturates near a bright one: the input clips). */
-static double light_at(double x, double y) {
-    double mv = spec.ambient_light_mv;
-    for (int k = 0; k < spec.n_lights; k++) {
-        double d = hypot(x - spec.lights[k].at.x, y - spec.lights[k].at.y);
-        if (d < LIGHT_NEAREST_MM) d = LIGHT_NEAREST_MM;
-        double fall = (LIGHT_REFERENCE_MM / d) * (LIGHT_REFERENCE_MM / d);
-        mv += spec.lights[k].intensity_mv * fall;
-    }
-    return mv;
-}
-
 static void sense_light(int i) {
     const output_robot *p = &poses[i];
-    double h = p->heading_deg * M_PI / 180.0;
-    int mv = (int)lround(light_at(p->x_mm - LIGHT_SENSOR_BACK_MM * cos(h),
-                                  p->y_mm - LIGHT_SENSOR_BACK_MM * sin(h)));
+    int mv = (int)lround(kilobot_light_mv(&spec, p->x_mm, p->y_mm, p->heading_deg));
     if (mv > KILOBOT_AVCC_MV) mv = KILOBOT_AVCC_MV; /* the input clips at the supply */
     if (mv == light_mv[i]) return;
     light_mv[i] = mv;

@@ -50,10 +50,12 @@ typedef struct world_object {
 } world_object;
 
 /* A light source: it adds intensity_mv to a light sensor 100 mm away,
- * falling with the square of the distance beyond that. */
+ * falling with the square of the distance beyond that; its bulb stands
+ * height_mm above the floor (kilobot_light.h). */
 typedef struct world_light {
     world_point at;
     double intensity_mv;
+    double height_mm;
 } world_light;
 
 typedef struct world_robot {
@@ -75,6 +77,7 @@ typedef struct world_spec {
     world_light *lights;
     int n_lights;
     double ambient_light_mv; /* the light sensor's input with no source near */
+    int light_unshaded;      /* "light": {"shadow": false}: no battery shadow on the sensor */
     world_robot *robots;
     int n_robots;
     char **firmware; /* ELF paths named in the file, relative to the file resolved */
