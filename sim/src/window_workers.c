@@ -20,7 +20,8 @@
 
 #define SPINS_BEFORE_SLEEP 500
 
-static window_share_fn run_share;
+static window_share_fn run_share; /* each window's */
+static window_share_fn job;       /* this round's: run_share, or another job */
 static int n_threads = 1;
 static pthread_t *workers;
 static atomic_uint generation; /* a new window; the workers start it */
@@ -64,7 +65,7 @@ static void *worker(void *arg) {
     for (;;) {
         seen = wait_for_window(seen);
         if (atomic_load(&stopping)) return NULL;
-        if (!run_share(t)) atomic_store_explicit(&any_running, 1, memory_order_relaxed);
+        if (!job(t)) atomic_store_explicit(&any_running, 1, memory_order_relaxed);
         if (atomic_fetch_sub(&pending, 1) == 1 && atomic_load(&main_asleep)) futex_wake(&pending);
     }
 }
@@ -113,15 +114,22 @@ void window_workers_begin(int threads, window_share_fn share) {
     }
 }
 
-int window_workers_run(void) {
-    if (n_threads == 1) return run_share(0);
+int window_workers_run(void) { return window_workers_run_job(run_share); }
+
+/* job is written before the generation moves on, and read by the workers
+ * after they see it move: the atomic orders them. */
+int window_workers_run_job(window_share_fn each) {
+    if (n_threads == 1) return each(0);
+    job = each;
     atomic_store_explicit(&any_running, 0, memory_order_relaxed);
     atomic_store(&pending, n_threads - 1);
     start_window();
-    int mine_stopped = run_share(0);
+    int mine_stopped = each(0);
     wait_for_workers();
     return mine_stopped && !atomic_load_explicit(&any_running, memory_order_relaxed);
 }
+
+int window_workers_threads(void) { return n_threads; }
 
 void window_workers_end(void) {
     if (n_threads == 1) return;

@@ -13,6 +13,11 @@ typedef int (*window_share_fn)(int t);
 void window_workers_begin(int threads, window_share_fn share);
 /* One window, every share run; 1 when every share said it has stopped. */
 int window_workers_run(void);
+/* Between windows: job(t) on every thread t, as a window's shares run
+ * (the same result on any number of threads is job's to keep). */
+int window_workers_run_job(window_share_fn job);
+/* The threads begun (1: the main thread alone). */
+int window_workers_threads(void);
 void window_workers_end(void);
 /* threads for requested (0: by the machine's cores, at least per_thread
  * items each) and n items. */

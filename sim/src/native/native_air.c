@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "window_workers.h"
 #include "world/world_random.h"
 #include "world/world_run.h"
 
@@ -25,9 +26,14 @@ static ir_distance_fn distance_of;
 static void *distance_ctx;
 static uint64_t *receiver_rng; /* each receiver's loss and noise draws */
 static uint64_t *last_start;   /* each sender's last frame's start, nominal cycles; 0: none */
-static delivery *pending;
-static size_t n_pending, pending_room;
-static uint64_t overflowed;
+/* Each thread's: the frames on their way to its receivers, and those
+ * that found an inbox full. */
+typedef struct deliveries {
+    delivery *pending;
+    size_t n_pending, pending_room;
+    uint64_t overflowed;
+} deliveries;
+static deliveries *by_thread;
 
 void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t nominal_hz, uint64_t lat) {
     n_robots = n;
@@ -190,18 +196,18 @@ static int16_t reading(int model, uint64_t *rng) {
     return (int16_t)(r < 0 ? 0 : r > 1023 ? 1023 : r);
 }
 
-static void deliver_to(int receiver, int sender, const native_sent *s, double mm) {
+static void deliver_to(deliveries *out, int receiver, int sender, const native_sent *s, double mm) {
     uint64_t *rng = &receiver_rng[receiver];
     double chance = loss * (mm / range_mm) * (mm / range_mm);
     if (chance > 0 && world_random_uniform(rng) < chance) return;
     uint32_t from_hz = native_swarm_robot(sender)->hz, to_hz = native_swarm_robot(receiver)->hz;
     uint64_t start = s->at * nominal / from_hz + latency; /* nominal cycles */
-    if (n_pending == pending_room) {
-        pending_room = pending_room ? 2 * pending_room : 256;
-        pending = realloc(pending, pending_room * sizeof *pending);
-        if (pending == NULL) exit(EXIT_CRASH);
+    if (out->n_pending == out->pending_room) {
+        out->pending_room = out->pending_room ? 2 * out->pending_room : 256;
+        out->pending = realloc(out->pending, out->pending_room * sizeof *out->pending);
+        if (out->pending == NULL) exit(EXIT_CRASH);
     }
-    delivery *d = &pending[n_pending++];
+    delivery *d = &out->pending[out->n_pending++];
     memset(d, 0, sizeof *d);
     d->receiver = receiver;
     d->sender = sender;
@@ -211,23 +217,6 @@ static void deliver_to(int receiver, int sender, const native_sent *s, double mm
     int rounded = (int)lround(mm);
     d->frame.high_gain = reading(ir_high_gain_reading(rounded), rng);
     d->frame.low_gain = reading(ir_low_gain_reading(rounded), rng);
-}
-
-typedef struct sending {
-    int sender;
-    const native_sent *frame;
-} sending;
-
-static void deliver_one(int j, double mm, void *ctx) {
-    const sending *s = ctx;
-    deliver_to(j, s->sender, s->frame, mm);
-}
-
-void native_air_send(int sender, const native_sent *frames, unsigned n) {
-    for (unsigned k = 0; k < n; k++) {
-        sending s = {sender, &frames[k]};
-        each_in_range(sender, deliver_one, &s);
-    }
 }
 
 static int by_receiver_then_start(const void *a, const void *b) {
@@ -240,10 +229,10 @@ static int by_receiver_then_start(const void *a, const void *b) {
 /* Into the receiver's inbox (kept by start: every frame handed over now
  * starts after those before it); frames that overlap there are broken,
  * both, as two senders' pulses interleave at the receiver. */
-static void enqueue(native_io *io, native_frame f) {
+static void enqueue(deliveries *out, native_io *io, native_frame f) {
     if (io->inbox_count == NATIVE_INBOX_ROOM) {
         io->frames_lost_inbox_full++;
-        overflowed++;
+        out->overflowed++;
         return;
     }
     for (unsigned k = 0; k < io->inbox_count; k++) {
@@ -254,14 +243,87 @@ static void enqueue(native_io *io, native_frame f) {
     io->inbox_count++;
 }
 
-void native_air_hand_over(void) {
-    if (n_pending == 0) return;
-    qsort(pending, n_pending, sizeof *pending, by_receiver_then_start);
-    for (size_t k = 0; k < n_pending; k++) {
-        enqueue(native_swarm_robot(pending[k].receiver)->io, pending[k].frame);
-        native_swarm_woken(pending[k].receiver);
+/* The window's senders (index order) and whom each reaches: found on
+ * every thread, senders t, t + T, ...; each sender's reach is the same
+ * for all its frames (nobody moves between windows' ends). */
+typedef struct reach {
+    int receiver;
+    double mm;
+} reach;
+typedef struct reach_list {
+    reach *all;
+    unsigned n, room;
+} reach_list;
+static const int *senders;
+static unsigned n_senders;
+static reach_list *reach_by_thread;
+static unsigned *reach_first, *reach_count, senders_room; /* per sender, in its thread's list */
+
+static void add_reach(int j, double mm, void *ctx) {
+    reach_list *l = ctx;
+    if (l->n == l->room) {
+        l->room = l->room ? 2 * l->room : 1024;
+        l->all = realloc(l->all, l->room * sizeof *l->all);
+        if (l->all == NULL) exit(EXIT_CRASH);
     }
-    n_pending = 0;
+    l->all[l->n++] = (reach){j, mm};
 }
 
-uint64_t native_air_overflowed(void) { return overflowed; }
+static int find_reach(int t) {
+    int threads = window_workers_threads();
+    reach_list *l = &reach_by_thread[t];
+    l->n = 0;
+    for (unsigned p = (unsigned)t; p < n_senders; p += (unsigned)threads) {
+        reach_first[p] = l->n;
+        each_in_range(senders[p], add_reach, l);
+        reach_count[p] = l->n - reach_first[p];
+    }
+    return 1;
+}
+
+/* Thread t's receivers (index mod T = t): each one's draws in the order
+ * the frames were sent (sender, then frame), as on one thread; then into
+ * their inboxes by start. */
+static int deliver_share(int t) {
+    int threads = window_workers_threads();
+    deliveries *out = &by_thread[t];
+    for (unsigned p = 0; p < n_senders; p++) {
+        const native_log *log = &native_swarm_robot(senders[p])->log;
+        const reach *r = reach_by_thread[p % (unsigned)threads].all + reach_first[p];
+        for (unsigned k = 0; k < log->n_sent; k++)
+            for (unsigned q = 0; q < reach_count[p]; q++)
+                if (r[q].receiver % threads == t) deliver_to(out, r[q].receiver, senders[p], &log->sent[k], r[q].mm);
+    }
+    qsort(out->pending, out->n_pending, sizeof *out->pending, by_receiver_then_start);
+    for (size_t k = 0; k < out->n_pending; k++) {
+        enqueue(out, native_swarm_robot(out->pending[k].receiver)->io, out->pending[k].frame);
+        native_swarm_woken(out->pending[k].receiver);
+    }
+    out->n_pending = 0;
+    return 1;
+}
+
+void native_air_deliver(const int *sent_by, unsigned n) {
+    if (n == 0) return;
+    if (n > senders_room) {
+        senders_room = 2 * n;
+        reach_first = realloc(reach_first, senders_room * sizeof *reach_first);
+        reach_count = realloc(reach_count, senders_room * sizeof *reach_count);
+        if (reach_first == NULL || reach_count == NULL) exit(EXIT_CRASH);
+    }
+    if (by_thread == NULL) { /* the threads are known once the robots have booted */
+        by_thread = calloc((size_t)window_workers_threads(), sizeof *by_thread);
+        reach_by_thread = calloc((size_t)window_workers_threads(), sizeof *reach_by_thread);
+        if (by_thread == NULL || reach_by_thread == NULL) exit(EXIT_CRASH);
+    }
+    senders = sent_by;
+    n_senders = n;
+    window_workers_run_job(find_reach);
+    window_workers_run_job(deliver_share);
+}
+
+uint64_t native_air_overflowed(void) {
+    uint64_t n = 0;
+    for (int t = 0; by_thread != NULL && t < window_workers_threads(); t++) n += by_thread[t].overflowed;
+    return n;
+}

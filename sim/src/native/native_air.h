@@ -26,10 +26,10 @@ void native_air_place(ir_distance_fn distance, void *ctx, const double *xy);
 int native_air_clear(int sender, uint64_t at);
 /* The receivers sender reaches (up to room of them), and their count. */
 int native_air_links(int sender, int *receivers, int room);
-/* After a window, in robot order: what sender sent in it. */
-void native_air_send(int sender, const native_sent *frames, unsigned n);
-/* Then: every frame sent into the receivers' inboxes. */
-void native_air_hand_over(void);
+/* After a window: what the robots sent in it (senders in index order,
+ * n of them, their frames in their logs) into the receivers' inboxes, on
+ * every thread (window_workers). */
+void native_air_deliver(const int *senders, unsigned n);
 /* Frames lost because a receiver's inbox had no room (0 in any sane swarm). */
 uint64_t native_air_overflowed(void);
 

@@ -101,7 +101,8 @@ static void configure(int index, const options *o) {
     io->charging = (uint8_t)o->charging;
     io->noise = seed | 1u;
     io->noise_counts = WORLD_ANALOG_NOISE_COUNTS;
-    double spread = o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
+    /* robot_clock_error ranks the robot among all: n steps a robot. */
+    double spread = o->clock_spread_pct == 0 ? 0 : o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
     r->hz = (uint32_t)lround(nominal_hz * (1.0 + spread));
 }
 
@@ -150,8 +151,10 @@ static void print_faults(int index, const native_robot *r) {
     }
 }
 
+static int *senders; /* the window's, in index order */
+
 static void after_window(void) {
-    unsigned n_ran;
+    unsigned n_ran, n_senders = 0;
     const int *ran = native_swarm_ran(&n_ran);
     for (unsigned at = 0; at < n_ran; at++) {
         int i = ran[at];
@@ -162,10 +165,10 @@ static void after_window(void) {
             for (unsigned k = 0; k < r->log.n_motors; k++)
                 world_run_motors(i, r->log.motors[k].left, r->log.motors[k].right,
                                  seconds_of(r, r->log.motors[k].at));
-        native_air_send(i, r->log.sent, r->log.n_sent);
-        native_log_clear(&r->log);
+        if (r->log.n_sent != 0) senders[n_senders++] = i;
     }
-    native_air_hand_over();
+    native_air_deliver(senders, n_senders);
+    for (unsigned at = 0; at < n_ran; at++) native_log_clear(&native_swarm_robot(ran[at])->log);
 }
 
 /* ---- the run ---- */
@@ -200,7 +203,8 @@ static int start(const options *o, const char *path) {
     nominal_hz = copies[0].entry.cpu_hz;
     if (native_swarm_create(copies, threads, o->robots) != 0) return -1;
     lines = calloc((size_t)o->robots, sizeof *lines);
-    if (lines == NULL) return -1;
+    senders = malloc((size_t)o->robots * sizeof *senders);
+    if (lines == NULL || senders == NULL) return -1;
     uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
     native_air_start(o->robots, o->ir_range_mm, o->ir_loss_pct, 0x2545F4914F6CDD1Dull, nominal_hz, window);
     for (int i = 0; i < o->robots; i++) configure(i, o);

@@ -19,6 +19,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include "native/native_askers.h"
 #include "window_workers.h"
 
 /* A window of a sleeping swarm is little work: two threads only pay
@@ -320,25 +321,16 @@ void native_swarm_boot(void) {
     window_workers_begin(n_threads, run_share);
 }
 
-/* The one that asked first (by the nominal clock, then by index), taken
- * off its list; -1: none. */
-static int first_asking(void) {
-    int first = -1, from = 0;
-    unsigned at_k = 0;
-    uint64_t first_at = 0;
-    for (int t = 0; t < n_threads; t++)
+/* The robots the threads noted asking, onto the askers' heap (by when
+ * they asked in the nominal clock). */
+static void gather_askers(void) {
+    for (int t = 0; t < n_threads; t++) {
         for (unsigned k = 0; k < asking[t].n; k++) {
             int i = asking[t].index[k];
-            uint64_t at = robots[i].io->now * nominal / robots[i].hz;
-            if (first < 0 || at < first_at || (at == first_at && i < first)) {
-                first = i;
-                first_at = at;
-                from = t;
-                at_k = k;
-            }
+            native_askers_push(robots[i].io->now * nominal / robots[i].hz, i);
         }
-    if (first >= 0) asking[from].index[at_k] = asking[from].index[--asking[from].n];
-    return first;
+        asking[t].n = 0;
+    }
 }
 
 /* Every robot runs to the window's end on its thread, or until it asks
@@ -349,7 +341,8 @@ int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn cle
     window_end = end;
     nominal = nominal_hz;
     int all_stopped = window_workers_run();
-    for (int i; (i = first_asking()) >= 0;) {
+    gather_askers();
+    for (int i; (i = native_askers_pop()) >= 0;) {
         native_robot *r = &robots[i];
         const native_sent *frame = &r->log.sent[r->log.n_sent - 1];
         if (clear(i, frame->at)) {
@@ -359,6 +352,7 @@ int native_swarm_window(uint64_t end, uint32_t nominal_hz, native_carrier_fn cle
             r->log.n_sent--; /* it never went out */
         }
         run_robot(0, i, own_end_of(r->hz));
+        gather_askers(); /* it, if it asks again */
     }
     return all_stopped;
 }

@@ -113,33 +113,46 @@ void Reader::check_outline(const Node &shape, const world_obstacle &o, const std
         }
 }
 
-/* The first obstacle a disc at c, radius r, reaches into; `radius` says
- * what r is ("its radius 20 mm"). */
-std::optional<Reader::Conflict> Reader::obstacle_conflict(P c, double r, const std::string &radius) const {
-    for (size_t k = 0; k < obstacles_.size(); k++) {
-        double d = obstacle_distance(c, obstacles_[k]);
-        if (d < r - EPS)
-            return Conflict{d == 0 ? "has its centre inside obstacles[" + std::to_string(k) + "]"
-                                   : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm_beside(d, r) +
-                                         " mm from it, " + radius,
-                            "move it at least " + num(r) + " mm clear of the obstacle"};
-    }
-    return std::nullopt;
+/* The first obstacle a disc at c, radius r, reaches into (-1: none), d
+ * its centre's distance from it. */
+int Reader::obstacle_hit(P c, double r, double &d) const {
+    for (size_t k = 0; k < obstacles_.size(); k++)
+        if ((d = obstacle_distance(c, obstacles_[k])) < r - EPS) return (int)k;
+    return -1;
 }
 
-/* The first object a disc at c, radius r, overlaps; `needed` says why the
- * centres must be that far apart ("(the radii added)"). */
-std::optional<Reader::Conflict> Reader::object_conflict(P c, double r, const std::string &needed) const {
+/* obstacle_hit's, described; `radius` says what r is ("its radius 20 mm"). */
+std::optional<Reader::Conflict> Reader::obstacle_conflict(P c, double r, const std::string &radius) const {
+    double d;
+    int k = obstacle_hit(c, r, d);
+    if (k < 0) return std::nullopt;
+    return Conflict{d == 0 ? "has its centre inside obstacles[" + std::to_string(k) + "]"
+                           : "overlaps obstacles[" + std::to_string(k) + "]: its centre is " + mm_beside(d, r) +
+                                 " mm from it, " + radius,
+                    "move it at least " + num(r) + " mm clear of the obstacle"};
+}
+
+/* The first object a disc at c, radius r, overlaps (-1: none), d the
+ * distance between their centres. */
+int Reader::object_hit(P c, double r, double &d) const {
     for (size_t k = 0; k < objects_.size(); k++) {
         const world_object &b = objects_[k];
-        double d = std::hypot(c.x - b.at.x, c.y - b.at.y);
-        if (d < r + b.radius_mm - EPS)
-            return Conflict{"overlaps objects[" + std::to_string(k) + "] at " + at_text(b.at.x, b.at.y) + ": centres " +
-                                mm_beside(d, r + b.radius_mm) + " mm apart, at least " + num(r + b.radius_mm) +
-                                " needed " + needed,
-                            "move them apart"};
+        if ((d = std::hypot(c.x - b.at.x, c.y - b.at.y)) < r + b.radius_mm - EPS) return (int)k;
     }
-    return std::nullopt;
+    return -1;
+}
+
+/* object_hit's, described; `needed` says why the centres must be that far
+ * apart ("(the radii added)"). */
+std::optional<Reader::Conflict> Reader::object_conflict(P c, double r, const std::string &needed) const {
+    double d;
+    int k = object_hit(c, r, d);
+    if (k < 0) return std::nullopt;
+    const world_object &b = objects_[(size_t)k];
+    return Conflict{"overlaps objects[" + std::to_string(k) + "] at " + at_text(b.at.x, b.at.y) + ": centres " +
+                        mm_beside(d, r + b.radius_mm) + " mm apart, at least " + num(r + b.radius_mm) +
+                        " needed " + needed,
+                    "move them apart"};
 }
 
 /* Whether a round thing (an object) at c, radius r, fits: in the arena,

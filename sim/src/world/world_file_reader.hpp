@@ -168,6 +168,8 @@ class Reader {
     void movable_object(const Node &n); /* "objects": one that robots push */
     void light(const Node &n, world_spec &w);
     std::optional<Conflict> round_conflict(P c, double r) const; /* an object's */
+    int obstacle_hit(P c, double r, double &d) const;
+    int object_hit(P c, double r, double &d) const;
     std::optional<Conflict> obstacle_conflict(P c, double r, const std::string &radius) const;
     std::optional<Conflict> object_conflict(P c, double r, const std::string &needed) const;
 
@@ -197,6 +199,9 @@ class Reader {
     void place(const Placing &p, P at, double heading, const std::string &how);
     void give_uids(const Node &blame, size_t start, long &next_uid);
     std::string robot_name(int r) const;
+    int wall_hit(P c, double gaps[4]) const;
+    int robot_hit(P c, double &d) const;
+    bool robot_fits(P c) const;
     std::optional<Conflict> robot_conflict(P c) const;
     void add_robot(const world_robot &r, const Origin &o);
     static int64_t cell_key(int64_t cx, int64_t cy) { return cx * 4000037 + cy; }
