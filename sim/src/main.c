@@ -52,6 +52,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     stack_watch_attach(r, elf);
     register_store_watch_attach(r, elf);
     firmware_counters_locate(r, elf); /* the warnings at the end read them */
+    handler_watch_attach(r, elf);
     if (index == 0) {
         nominal_hz = r->avr->frequency;
     } else if (r->avr->frequency != nominal_hz) {

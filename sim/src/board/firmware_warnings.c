@@ -79,5 +79,5 @@ static int console_warnings(const robot *r) {
 }
 
 int firmware_warnings_report(const robot *r) {
-    return kernel_warnings(r) + console_warnings(r);
+    return kernel_warnings(r) + handler_watch_report(r) + console_warnings(r);
 }
