@@ -238,6 +238,12 @@ bool keep_world_beside_run(const std::string &world_path, const std::string &out
 int run_app(RunOptions o, const Paths &paths) {
     if (!run_options_usable(o)) return EXIT_USAGE;
     std::string port = port_given_or_app(o.port, o.dir);
+    if (port == "epuck2" && !o.world.empty()) {
+        // QEMU runs one robot and no world: an e-puck2 app's e-pucks in a
+        // world are its sources built for the world simulator.
+        std::printf("--world: the e-puck2 app runs in the world as --port epuck_world (docs/epuck.md)\n");
+        o.port = port = "epuck_world";
+    }
     if (is_port(port) && refuse_unrunnable(port, "run")) return EXIT_FAILED;
     if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
     if (is_port(port) && port_info(port).runner == Runner::world && !world_options_usable(o, port))
