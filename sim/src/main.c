@@ -145,11 +145,7 @@ static int report(int n, const options *o) {
         return EXIT_FAULT;
     }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
-    if (warnings != 0 && o->strict) {
-        fprintf(stderr, "openswarm-sim: %d warning%s (above) and --strict: the run fails\n", warnings,
-                warnings == 1 ? "" : "s");
-        return EXIT_WARNINGS;
-    }
+    if (warnings_fail_run(warnings, o)) return EXIT_WARNINGS;
     if (running && !o->quiet) progress_summary(o->seconds, n);
     return status;
 }

@@ -329,6 +329,13 @@ int main_stack_report(const robot *r, int print);
  * or refused (its kernel's counters) and printed from an interrupt, as
  * warnings on stderr with the fix; how many. */
 int firmware_warnings_report(const robot *r);
+/* The same for a kernel's counters (os_stats' twelve, in order) wherever
+ * they were read from (the native mode: the host's), each line begun with
+ * prefix. */
+#define OS_STATS_COUNTERS 12
+int kernel_loss_warnings(const char *prefix, const uint16_t *counters);
+/* With --strict, warnings (a count) fail the run: said, and 1. */
+int warnings_fail_run(int warnings, const options *o);
 
 /* handler_watch.c: at load, where robot r's kernel keeps its
  * subscriptions; at every instruction, that it ran; at the end, each

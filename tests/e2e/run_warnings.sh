@@ -2,7 +2,8 @@
 # End to end, issue 31 "no silent failure": what a firmware lost or was
 # refused ends `openswarm run` and `openswarm test` with a warning naming
 # it and the fix (before, such runs said nothing and exited 0); --strict
-# makes the warnings fail them (exit 1). Three apps:
+# makes the warnings fail them (exit 1), in the exact and the native mode.
+# The apps:
 #   - a handler subscribed to KILOBOT_EVENT_LIGHT without
 #     kilobot_sensors_init() (the event was never registered);
 #   - a kilolib program calling kilobot_sensors_init() (kilolib's pools
@@ -29,6 +30,10 @@ logged 0 "^1 passed, 0 failed$" "$openswarm" test
 grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
 logged 1 "^0 passed, 1 failed$" "$openswarm" test --strict
 grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
+# The native mode reads the same counters from the host's kernel.
+logged 0 "$refused" "$openswarm" run --native --time 0.5
+logged 1 "--strict: the run fails" "$openswarm" run --native --time 0.5 --strict
+grep -Eq "$refused" out.log || fail "no warning of the refused subscription (native)" out.log
 # With the sensors initialised first, nothing to say.
 sed -i 's|^    robot_devices_init();|&\n    kilobot_sensors_init();|' main.c
 logged 0 "^Running" "$openswarm" run --time 0.5 --strict
