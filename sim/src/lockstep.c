@@ -99,6 +99,7 @@ static int run_robot(robot *r) {
             r->state = avr_run(r->avr);
         interrupt_watch_step(r);
         stack_watch_step(r);
+        handler_watch_step(r);
         power_down_after_step(r);
         if (robot_at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
     }

@@ -52,6 +52,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     stack_watch_attach(r, elf);
     register_store_watch_attach(r, elf);
     firmware_counters_locate(r, elf); /* the warnings at the end read them */
+    handler_watch_attach(r, elf);
     if (index == 0) {
         nominal_hz = r->avr->frequency;
     } else if (r->avr->frequency != nominal_hz) {
@@ -144,11 +145,7 @@ static int report(int n, const options *o) {
         return EXIT_FAULT;
     }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
-    if (warnings != 0 && o->strict) {
-        fprintf(stderr, "openswarm-sim: %d warning%s (above) and --strict: the run fails\n", warnings,
-                warnings == 1 ? "" : "s");
-        return EXIT_WARNINGS;
-    }
+    if (warnings_fail_run(warnings, o)) return EXIT_WARNINGS;
     if (running && !o->quiet) progress_summary(o->seconds, n);
     return status;
 }

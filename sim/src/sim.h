@@ -215,6 +215,7 @@ typedef struct watched_stack {
     uint16_t lowest; /* its lowest SP yet */
 } watched_stack;
 typedef struct stack_watch {
+    const char *elf; /* its firmware, to name the code that overflowed */
     uint16_t mark; /* SP below this is looked at: the lowest yet of the stack it is on */
     watched_stack stacks[MAX_WATCHED_STACKS]; /* [0]: main()'s, floor _end - 1; 0: unwatched */
     int n_stacks, on;                         /* on: the one SP is on */
@@ -228,6 +229,17 @@ typedef struct stack_watch {
     uint32_t switch_pc;              /* the last instruction ran there, at this address; 0: no */
     enum { STACKS_KEPT, THREAD_STACK_OVERFLOWED, MAIN_STACK_OVERFLOWED } overflowed; /* reported */
 } stack_watch;
+
+/* handler_watch.c: which instructions ran (a bit per flash word), and
+ * where the kernel keeps its subscriptions (data-space addresses), to
+ * name at the end every handler subscribed and never called. */
+typedef struct handler_watch {
+    uint8_t *ran; /* NULL: not watched (no OpenSwarm kernel in the image) */
+    const char *elf;
+    uint32_t subs, subs_size, subs_end;
+    uint32_t bound;      /* the kernel's trampoline for bindings, a byte address */
+    uint32_t library[2]; /* the kilolib layer's own handlers, byte addresses */
+} handler_watch;
 
 #define MAX_REGISTER_STORE_CODE 8
 typedef struct robot {
@@ -250,6 +262,7 @@ typedef struct robot {
     avr_cycle_count_t masked_since; /* interrupts off since this cycle; 0: they are on */
     int hung;                  /* reported: interrupts masked past the limit */
     stack_watch stack_watch;
+    handler_watch handler_watch;
     /* register_store_watch.c: reported, a store through a pointer into
      * r0-r31; and the code that does so on purpose (avr-libc's EEPROM
      * reads, which load their result into r22-r25 that way). */
@@ -316,6 +329,24 @@ int main_stack_report(const robot *r, int print);
  * or refused (its kernel's counters) and printed from an interrupt, as
  * warnings on stderr with the fix; how many. */
 int firmware_warnings_report(const robot *r);
+/* The same for a kernel's counters (os_stats' twelve, in order) wherever
+ * they were read from (the native mode: the host's), each line begun with
+ * prefix. */
+#define OS_STATS_COUNTERS 12
+int kernel_loss_warnings(const char *prefix, const uint16_t *counters);
+/* With --strict, warnings (a count) fail the run: said, and 1. */
+int warnings_fail_run(int warnings, const options *o);
+
+/* handler_watch.c: at load, where robot r's kernel keeps its
+ * subscriptions; at every instruction, that it ran; at the end, each
+ * handler subscribed and never called as a warning; how many. */
+void handler_watch_attach(robot *r, const char *elf_path);
+int handler_watch_report(const robot *r);
+static inline void handler_watch_step(robot *r) {
+    uint8_t *ran = r->handler_watch.ran;
+    uint32_t pc = r->avr->pc;
+    if (ran != NULL && pc <= r->avr->flashend) ran[pc >> 4] |= (uint8_t)(1u << ((pc >> 1) & 7u));
+}
 
 /* code_place.c: "stuck, main.c:17 (PC 0x1a2)", where a byte address is in
  * the sources of the ELF (avr-addr2line), as far as it can tell, in out. */

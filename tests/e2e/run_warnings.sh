@@ -2,12 +2,14 @@
 # End to end, issue 31 "no silent failure": what a firmware lost or was
 # refused ends `openswarm run` and `openswarm test` with a warning naming
 # it and the fix (before, such runs said nothing and exited 0); --strict
-# makes the warnings fail them (exit 1). Three apps:
+# makes the warnings fail them (exit 1), in the exact and the native mode.
+# The apps:
 #   - a handler subscribed to KILOBOT_EVENT_LIGHT without
 #     kilobot_sensors_init() (the event was never registered);
 #   - a kilolib program calling kilobot_sensors_init() (kilolib's pools
 #     leave no device slot for the sensors);
-#   - a kilolib program printing from an interrupt.
+#   - a kilolib program printing from an interrupt;
+#   - a handler subscribed to an event the app declares and never sends.
 #   run_warnings.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -28,6 +30,10 @@ logged 0 "^1 passed, 0 failed$" "$openswarm" test
 grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
 logged 1 "^0 passed, 1 failed$" "$openswarm" test --strict
 grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out.log
+# The native mode reads the same counters from the host's kernel.
+logged 0 "$refused" "$openswarm" run --native --time 0.5
+logged 1 "--strict: the run fails" "$openswarm" run --native --time 0.5 --strict
+grep -Eq "$refused" out.log || fail "no warning of the refused subscription (native)" out.log
 # With the sensors initialised first, nothing to say.
 sed -i 's|^    robot_devices_init();|&\n    kilobot_sensors_init();|' main.c
 logged 0 "^Running" "$openswarm" run --time 0.5 --strict
@@ -84,4 +90,23 @@ EOF
 logged 0 "^openswarm-sim: warning: 20 character\(s\) printed from an interrupt \(the first at 0\.[0-9]+ s\): they cut into the lines threads print; print from a thread or an event handler" \
     "$openswarm" run --time 0.5
 logged 1 "--strict: the run fails" "$openswarm" run --time 0.5 --strict
+# A handler subscribed to an event of the app's that nothing sends: it was
+# never called, and the run said nothing.
+"$openswarm" new quiet --template blinky >/dev/null
+cd quiet
+sed -i 's|{ "name": "blink", "type": "none" }|&,\n    { "name": "quiet", "type": "none" }|' openswarm.json
+sed -i 's|^void blinker(void) {|static bool on_quiet(sys_pid pid, sys_event_id event, const sys_event_data *data) {\n    (void)pid;\n    (void)event;\n    (void)data;\n    blinks += 100;\n    return true;\n}\n\n&|' main.c
+sed -i 's|^    Sys_Start_Kernel();|    Sys_Subscribe_to_Event(EV_QUIET, SYS_PID_SYSTEM, on_quiet, NULL);\n&|' main.c
+grep -q EV_QUIET main.c
+never="^openswarm-sim: warning: the handler on_quiet.*, subscribed to event [0-9]+ \(thread 0\), was never called in 0\.50[0-9] s: no occurrence of the event reached it .*; send the event, run longer, or unsubscribe"
+logged 0 "$never" "$openswarm" run --time 0.5
+if grep -q "count_blink" out.log; then fail "count_blink, which ran, named as never called" out.log; fi
+logged 1 "--strict: the run fails" "$openswarm" run --time 0.5 --strict
+logged 0 "^1 passed, 0 failed$" "$openswarm" test
+grep -Eq "^openswarm-sim: warning: the handler on_quiet" out.log || fail "no warning of the handler never called" out.log
+# Sent once: called, nothing to say.
+sed -i 's|^        Sys_Send_Event(EV_BLINK, NULL, 0);|&\n        Sys_Send_Event(EV_QUIET, NULL, 0);|' main.c
+logged 0 "^Running" "$openswarm" run --time 0.5 --strict
+if grep -q "warning" out.log; then fail "a warning with the event sent" out.log; fi
+cd ..
 echo "1 passed, 0 failed"

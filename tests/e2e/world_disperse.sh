@@ -32,6 +32,23 @@ test -s short/final.png -a -s short/viewer.html || { echo "--out short was not w
 cmp -s short/trajectories.csv short-ids/trajectories.csv || { echo "--ids changed the run"; exit 1; }
 if cmp -s short/final.png short-ids/final.png; then echo "--ids: final.png has no numbers"; exit 1; fi
 
+# Run again: the last run's outputs are kept beside the new ones (issue 31:
+# they were overwritten unseen), the one before them replaced; a folder
+# named with --out is overwritten, and that is said.
+cp app/out/packed/trajectories.csv first.csv
+for again in 1 2; do
+    "$openswarm" run -C app --world app/worlds/packed.json --time 1 >again.log 2>&1 || { cat again.log; exit 1; }
+    grep -q "^openswarm: the last run's outputs are kept in app/out/packed.last (the one before it is replaced); this run writes app/out/packed$" again.log \
+        || { echo "run $again: the last run's move not told"; cat again.log; exit 1; }
+done
+test -s app/out/packed/final.png || { echo "the new run wrote no app/out/packed/final.png"; exit 1; }
+cmp -s app/out/packed.last/trajectories.csv app/out/packed/trajectories.csv \
+    || { echo "app/out/packed.last is not the 1 s run before the last"; exit 1; }
+if cmp -s first.csv app/out/packed.last/trajectories.csv; then echo "the 120 s run was kept twice"; exit 1; fi
+"$openswarm" run -C app --world app/worlds/packed.json --out short --time 1 >again.log 2>&1 || { cat again.log; exit 1; }
+grep -q "^openswarm: short holds the outputs of an earlier run: this run's replace them" again.log \
+    || { echo "the overwrite of --out short not told"; cat again.log; exit 1; }
+
 # Mistakes: bad usage (exit 2), refused before building, with the file
 # and what to do.
 expect() {

@@ -14,6 +14,7 @@
 #include "../ports.hpp"
 #include "../process.hpp"
 #include "../qemu_run.hpp"
+#include "../run_outputs.hpp"
 #include "../suggest.hpp"
 #include "build.hpp"
 #include "commands.hpp"
@@ -237,13 +238,21 @@ bool keep_world_beside_run(const std::string &world_path, const std::string &out
 int run_app(RunOptions o, const Paths &paths) {
     if (!run_options_usable(o)) return EXIT_USAGE;
     std::string port = port_given_or_app(o.port, o.dir);
+    if (port == "epuck2" && !o.world.empty()) {
+        // QEMU runs one robot and no world: an e-puck2 app's e-pucks in a
+        // world are its sources built for the world simulator.
+        std::printf("--world: the e-puck2 app runs in the world as --port epuck_world (docs/epuck.md)\n");
+        o.port = port = "epuck_world";
+    }
     if (is_port(port) && refuse_unrunnable(port, "run")) return EXIT_FAILED;
     if (is_port(port) && port_info(port).runner == Runner::qemu) return run_app_in_qemu(o, paths, port);
     if (is_port(port) && port_info(port).runner == Runner::world && !world_options_usable(o, port))
         return EXIT_USAGE;
+    bool out_given = false;
     if (!o.world.empty()) {
         if (!world_file_usable(o)) return EXIT_USAGE;
-        if (o.out.empty())
+        out_given = !o.out.empty();
+        if (!out_given)
             o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
         o.native = o.native || world_wants_native(o.world);
     }
@@ -271,6 +280,7 @@ int run_app(RunOptions o, const Paths &paths) {
     // In a world, its duration_s applies unless --time was given.
     if (!world || o.time_given) argv.insert(argv.end(), {"--time", seconds});
     if (world) {
+        if (!keep_last_run(o.out, out_given, world_path)) return EXIT_FAILED;
         argv.insert(argv.end(), {"--world", world_path, "--out", o.out});
         if (o.video) argv.push_back("--video");
         if (o.ids) argv.push_back("--ids");

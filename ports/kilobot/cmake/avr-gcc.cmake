@@ -25,11 +25,16 @@ set(OPENSWARM_F_CPU 8000000 CACHE STRING "CPU clock in Hz")
 # `openswarm size`'s attribution build, whose link map must name each file.)
 option(OPENSWARM_LTO "link-time optimisation" ON)
 # A debug image (openswarm build --debug): -Og and no LTO, so avr-gdb
-# finds every line and variable where the source has them (avr-gcc 5.4
-# keeps no line table through LTO).
+# finds every line and variable where the source has them (-Os and LTO
+# move, merge and inline code, so a line's variables are often gone).
 option(OPENSWARM_DEBUG "debug image: -Og, no link-time optimisation" OFF)
 set(_lto "")
-set(_opt "-Os")
+# -g in every image: the simulator names a fault's or a warning's code by
+# file:line (avr-addr2line on the ELF). The debug sections stay in the
+# ELF: the flash image (.hex, what avr-size counts) is the same byte for
+# byte, and avr-gcc 5.4 keeps the line table through LTO when -g is given
+# at compile and link time alike.
+set(_opt "-Os -g")
 if(OPENSWARM_DEBUG)
   set(_opt "-Og -g")
 elseif(OPENSWARM_LTO)

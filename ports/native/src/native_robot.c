@@ -5,7 +5,10 @@
 
 #include <string.h>
 
+#include "openswarm/fault.h"
+
 int main(void); /* the app's */
+extern sys_stats os_stats; /* the kernel's counters (kernel/src/fault.c) */
 
 native_io *native_io_of_robot;
 static void *simulator_sp; /* the simulator's stack, while the robot runs */
@@ -80,6 +83,7 @@ __attribute__((visibility("default"))) void openswarm_native_describe(native_ent
     out->cpu_hz = NATIVE_CPU_HZ;
     out->stack_pool_bytes = os_stack_pool_bytes;
     out->main_stack_bytes = NATIVE_MAIN_STACK_BYTES;
+    out->kernel_stats = &os_stats;
     out->boot = boot;
     out->run = run;
 }

@@ -39,7 +39,7 @@ static int known_line(const char *line) {
 const char *code_place(const char *elf, uint32_t pc, char *out, size_t size) {
     char quoted[4200], command[4400], function[128] = "", line[256] = "";
     shell_quote(elf, quoted, sizeof quoted);
-    snprintf(command, sizeof command, "avr-addr2line -f -s -e %s 0x%x 2>/dev/null", quoted, (unsigned)pc);
+    snprintf(command, sizeof command, "avr-addr2line -f -C -s -e %s 0x%x 2>/dev/null", quoted, (unsigned)pc);
     FILE *p = popen(command, "r");
     if (p != NULL) {
         if (fgets(function, sizeof function, p) != NULL) chomp(function);

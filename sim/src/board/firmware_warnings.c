@@ -41,26 +41,29 @@ static const loss losses[] = {
      "Sys_Register_Event) first"},
 };
 
-#define KERNEL_BYTES 25 /* twelve 16-bit counters and the queue's peak byte */
+#define KERNEL_BYTES (2 * OS_STATS_COUNTERS + 1) /* and the queue's peak byte */
 
-static unsigned counter_at(const robot *r, unsigned index) {
-    uint32_t at = r->counters.kernel + 2u * index;
-    return r->avr->data[at] | (unsigned)r->avr->data[at + 1] << 8;
+int kernel_loss_warnings(const char *prefix, const uint16_t *counters) {
+    int warnings = 0;
+    for (size_t i = 0; i < sizeof losses / sizeof losses[0]; i++) {
+        unsigned n = counters[losses[i].index];
+        if (n == 0) continue;
+        fprintf(stderr, "openswarm-sim: %swarning: %u %s; %s\n", prefix, n, losses[i].what, losses[i].fix);
+        warnings++;
+    }
+    return warnings;
 }
 
 static int kernel_warnings(const robot *r) {
     const struct counter_symbols *s = &r->counters;
     if (s->kernel == 0 || s->kernel_size != KERNEL_BYTES || s->kernel + KERNEL_BYTES > r->avr->ramend + 1u)
         return 0; /* no kernel (a plain AVR program), or one this simulator does not know */
-    int warnings = 0;
-    for (size_t i = 0; i < sizeof losses / sizeof losses[0]; i++) {
-        unsigned n = counter_at(r, losses[i].index);
-        if (n == 0) continue;
-        fprintf(stderr, "openswarm-sim: %swarning: %u %s; %s\n", r->console.prefix, n,
-                losses[i].what, losses[i].fix);
-        warnings++;
+    uint16_t counters[OS_STATS_COUNTERS];
+    for (unsigned i = 0; i < OS_STATS_COUNTERS; i++) {
+        uint32_t at = r->counters.kernel + 2u * i;
+        counters[i] = (uint16_t)(r->avr->data[at] | r->avr->data[at + 1] << 8);
     }
-    return warnings;
+    return kernel_loss_warnings(r->console.prefix, counters);
 }
 
 static int console_warnings(const robot *r) {
@@ -78,6 +81,13 @@ static int console_warnings(const robot *r) {
     return warnings;
 }
 
+int warnings_fail_run(int warnings, const options *o) {
+    if (warnings == 0 || !o->strict) return 0;
+    fprintf(stderr, "openswarm-sim: %d warning%s (above) and --strict: the run fails\n", warnings,
+            warnings == 1 ? "" : "s");
+    return 1;
+}
+
 int firmware_warnings_report(const robot *r) {
-    return kernel_warnings(r) + console_warnings(r);
+    return kernel_warnings(r) + handler_watch_report(r) + console_warnings(r);
 }

@@ -64,6 +64,7 @@ void stack_watch_attach(robot *r, const char *elf_path) {
     stack_watch *w = &r->stack_watch;
     memset(w, 0, sizeof *w);
     image_stacks s = stacks_of(elf_path);
+    w->elf = elf_path;
     /* Unwatched: a .hex (no symbols). */
     if (s.end <= AVR_DATA_OFFSET || s.end - AVR_DATA_OFFSET > r->avr->ramend) return;
     w->stacks[0] = (watched_stack){(uint16_t)(s.end - AVR_DATA_OFFSET - 1u), (uint16_t)r->avr->ramend};
@@ -179,16 +180,18 @@ void stack_watch_below(robot *r) {
     w->overflowed = w->on == 0 ? MAIN_STACK_OVERFLOWED : THREAD_STACK_OVERFLOWED;
     unsigned deep = (unsigned)(on->floor - sp);
     double t = (double)r->avr->cycle / r->avr->frequency;
+    char place[400];
+    code_place(w->elf, r->avr->pc, place, sizeof place); /* the function and line that went past */
     if (w->overflowed == MAIN_STACK_OVERFLOWED)
         fprintf(stderr, "openswarm-sim: %sthe main stack (main, interrupts, event handlers) overflowed at "
-                        "%.6f s (PC 0x%04x): its stack pointer went %u byte%s into the RAM the image "
+                        "%.6f s in %s: its stack pointer went %u byte%s into the RAM the image "
                         "reserves (up to 0x%04x), whose variables its frames now overlay; give it more room "
                         "by lowering the threads' \"stack\" in openswarm.json\n",
-                r->console.prefix, t, (unsigned)r->avr->pc, deep, deep == 1 ? "" : "s", on->floor);
+                r->console.prefix, t, place, deep, deep == 1 ? "" : "s", on->floor);
     else
-        fprintf(stderr, "openswarm-sim: %sa thread's stack overflowed at %.6f s (PC 0x%04x): its stack "
+        fprintf(stderr, "openswarm-sim: %sa thread's stack overflowed at %.6f s in %s: its stack "
                         "pointer went %u byte%s below its stack's lowest byte (0x%04x, above its guard), "
                         "and its frames now overlay the guard and what lies below; give the thread a larger \"stack\" "
                         "in openswarm.json (openswarm-sim --counters shows each stack's worst use)\n",
-                r->console.prefix, t, (unsigned)r->avr->pc, deep, deep == 1 ? "" : "s", on->floor + 1u);
+                r->console.prefix, t, place, deep, deep == 1 ? "" : "s", on->floor + 1u);
 }

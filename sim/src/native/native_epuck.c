@@ -123,9 +123,20 @@ static int receive(int n, epuck_world_output *out) {
     return 0;
 }
 
+static int warnings(void) {
+    int n = 0;
+    for (int i = 0; i < n_robots; i++) {
+        char prefix[32];
+        snprintf(prefix, sizeof prefix, "[robot %d] ", i);
+        const uint16_t *counters = native_swarm_robot_stats(i);
+        if (counters != NULL) n += kernel_loss_warnings(prefix, counters);
+    }
+    return n;
+}
+
 static int stop(void) {
     if (booted) native_swarm_end();
     return 0;
 }
 
-const epuck_controllers native_epucks = {start, send, receive, stop};
+const epuck_controllers native_epucks = {start, send, receive, stop, warnings};

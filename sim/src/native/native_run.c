@@ -238,12 +238,15 @@ static void run(const options *o) {
 
 /* How the robots ended, as the exact mode reports it (main.c). */
 static int report(const options *o) {
-    int status = 0, running = 0, booted = 0, broken = 0;
+    int status = 0, running = 0, booted = 0, broken = 0, warnings = 0;
     for (int i = 0; i < n_robots; i++) {
         native_robot *r = native_swarm_robot(i);
         double t = seconds_of(r, r->io->now);
         char prefix[32] = "";
         if (n_robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", i);
+        /* what its kernel lost or refused, as the exact mode warns of it */
+        const uint16_t *counters = native_swarm_robot_stats(i);
+        if (counters != NULL) warnings += kernel_loss_warnings(prefix, counters);
         if (r->image_changed) {
             fprintf(stderr, "openswarm-sim: %sits RAM changed while it was not running: a stray "
                             "write from another robot's code; run the robots apart to find whose\n", prefix);
@@ -273,6 +276,7 @@ static int report(const options *o) {
         return EXIT_FAULT;
     }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
+    if (warnings_fail_run(warnings, o)) return EXIT_WARNINGS;
     if (running && !o->quiet) progress_summary(o->seconds, n_robots);
     return status;
 }

@@ -56,6 +56,15 @@ static uint8_t *has_run;
 
 native_robot *native_swarm_robot(int index) { return &robots[index]; }
 
+const void *native_swarm_robot_stats(int index) {
+    int t = index % n_threads;
+    const native_copy *c = &copies[t];
+    const uint8_t *at = c->entry.kernel_stats;
+    if (at == NULL || at < c->image || at >= c->image + c->image_bytes) return NULL;
+    /* robot index's RAM is in its copy while loaded, else in its saved image */
+    return (loaded[t] == index ? c->image : robots[index].image) + (at - c->image);
+}
+
 static uint64_t swap_halves(uint64_t x) { return x << 32 | x >> 32; }
 
 static uint64_t word_at(const uint8_t *p) {

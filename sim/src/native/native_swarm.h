@@ -47,6 +47,9 @@ int native_swarm_threads_for(int requested, int n);
  * message. */
 int native_swarm_create(native_copy *copies, int n_copies, int n);
 native_robot *native_swarm_robot(int index);
+/* Where robot index's kernel counters (sys_stats) are now, in its copy or
+ * its saved image; NULL if its image has none. */
+const void *native_swarm_robot_stats(int index);
 /* Power every robot up (after their native_io is filled), and start the
  * threads. */
 void native_swarm_boot(void);

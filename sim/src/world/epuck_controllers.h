@@ -22,6 +22,10 @@ typedef struct epuck_controllers {
     int (*receive)(int n, epuck_world_output *out);
     /* Stop them all: -1 if one failed to stop cleanly. */
     int (*stop)(void);
+    /* Before stop: what their kernels lost or refused, as warnings; how
+     * many. NULL: not known (the controllers over pipes, which are other
+     * processes). */
+    int (*warnings)(void);
 } epuck_controllers;
 
 extern const epuck_controllers epuck_pipes;

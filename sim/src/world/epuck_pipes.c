@@ -41,4 +41,4 @@ static int stop(void) {
     return failed;
 }
 
-const epuck_controllers epuck_pipes = {start, send, receive, stop};
+const epuck_controllers epuck_pipes = {start, send, receive, stop, NULL};

@@ -140,7 +140,7 @@ void kilolib_program(void) {
 
 /* Messages from other robots reach kilo_message_rx; the overhead
  * controller's system messages (types from 0x80) are kilolib's own. */
-static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d) {
+static bool kilolib_deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d) {
     (void)pid;
     (void)e;
     const kilobot_ir_rx *rx = d->value;
@@ -161,7 +161,7 @@ static bool deliver_message(sys_pid pid, sys_event_id e, const sys_event_data *d
  * from its timer interrupt, so they may do anything (print, compute a CRC). */
 static void transmitter_looks(void);
 
-static bool run_call(sys_pid pid, sys_event_id event, const sys_event_data *call) {
+static bool kilolib_run_call(sys_pid pid, sys_event_id event, const sys_event_data *call) {
     (void)pid;
     (void)event;
     if (*(const uint8_t *)call->value == KILOLIB_TX_DUE) transmitter_looks();
@@ -256,9 +256,9 @@ void kilo_start(void (*setup)(void), void (*loop)(void)) {
     kilo_ticks = 0;
     tick_fraction = 0;
     kilobot_elapsed_hook = count_time;
-    Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, deliver_message, 0);
+    Sys_Subscribe_to_Event(KILOBOT_EVENT_IR_RX, SYS_PID_SYSTEM, kilolib_deliver_message, 0);
     Sys_Register_Event_Sized(KILOLIB_EVENT_CALL, 1);
-    Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, run_call, 0);
+    Sys_Subscribe_to_Event(KILOLIB_EVENT_CALL, SYS_PID_SYSTEM, kilolib_run_call, 0);
     if (kilolib_restarted())
         kilolib_activity_start(WAKEUP, kilolib_status_lights);
     else

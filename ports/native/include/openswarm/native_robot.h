@@ -28,9 +28,9 @@
 extern "C" {
 #endif
 
-/* Changes whenever native_io changes shape: the simulator refuses a robot
- * built against another. */
-#define NATIVE_ROBOT_ABI 4
+/* Changes whenever native_io or native_entry changes shape: the simulator
+ * refuses a robot built against another. */
+#define NATIVE_ROBOT_ABI 5
 
 #define NATIVE_FRAME_BYTES 12
 #define NATIVE_EEPROM_BYTES 1024
@@ -134,6 +134,9 @@ typedef struct native_entry {
     uint32_t cpu_hz;         /* the robot's nominal clock */
     size_t stack_pool_bytes; /* the kernel's stacks (0: none) */
     size_t main_stack_bytes; /* what main's stack should have */
+    /* The kernel's counters (openswarm/fault.h's sys_stats) in the loaded
+     * image: the simulator reads each robot's at the end for its warnings. */
+    const void *kernel_stats;
     /* Power the loaded image up as a new robot whose clock reads now:
      * main() on main_stack, threads' stacks in pool. The image must be as
      * loaded (or a copy of it). */
