@@ -25,12 +25,17 @@ static ir_distance_fn distance_of;
 static void *distance_ctx;
 static uint64_t *receiver_rng; /* each receiver's loss and noise draws */
 static uint64_t *last_start;   /* each sender's last frame's start, nominal cycles; 0: none */
+static uint64_t *frames_sent;  /* each sender's frames so far: the distance error's frame count */
+static ir_distance_error distance_error;
 static delivery *pending;
 static size_t n_pending, pending_room;
 static uint64_t overflowed;
 
-void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t nominal_hz, uint64_t lat) {
+void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t nominal_hz, uint64_t lat,
+                      const ir_distance_error *distance) {
     n_robots = n;
+    distance_error = distance != NULL ? *distance : (ir_distance_error){0, 0, 0};
+    frames_sent = calloc((size_t)n, sizeof *frames_sent);
     range_mm = range;
     loss = loss_pct / 100.0;
     nominal = nominal_hz;
@@ -208,9 +213,9 @@ static void deliver_to(int receiver, int sender, const native_sent *s, double mm
     d->frame.start = start * to_hz / nominal;
     d->frame.end = d->frame.start + FRAME_CYCLES * to_hz / from_hz;
     memcpy(d->frame.bytes, s->bytes, sizeof d->frame.bytes);
-    int rounded = (int)lround(mm);
-    d->frame.high_gain = reading(ir_high_gain_reading(rounded), rng);
-    d->frame.low_gain = reading(ir_low_gain_reading(rounded), rng);
+    int sensed = ir_distance_sensed(&distance_error, sender, receiver, frames_sent[sender], mm);
+    d->frame.high_gain = reading(ir_high_gain_reading(sensed), rng);
+    d->frame.low_gain = reading(ir_low_gain_reading(sensed), rng);
 }
 
 typedef struct sending {
@@ -226,6 +231,7 @@ static void deliver_one(int j, double mm, void *ctx) {
 void native_air_send(int sender, const native_sent *frames, unsigned n) {
     for (unsigned k = 0; k < n; k++) {
         sending s = {sender, &frames[k]};
+        frames_sent[sender]++;
         each_in_range(sender, deliver_one, &s);
     }
 }

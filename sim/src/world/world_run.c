@@ -157,6 +157,10 @@ int world_options_check(options *o) {
     if (!(o->given & GIVEN_TIME) && spec.duration_s > 0) o->seconds = spec.duration_s;
     if (!(o->given & GIVEN_IR_RANGE) && spec.ir_range_mm > 0) o->ir_range_mm = spec.ir_range_mm;
     if (!(o->given & GIVEN_IR_LOSS) && spec.ir_loss_pct >= 0) o->ir_loss_pct = spec.ir_loss_pct;
+    /* Its own draws: not the robots' streams (world.cpp), which take the
+     * seed as it is. */
+    o->ir_distance = (ir_distance_error){spec.ir_distance_bias_mm, spec.ir_distance_noise_mm,
+                                         (uint64_t)spec.seed ^ 0x49524469737400ull};
     if (!(o->given & GIVEN_CLOCK_SPREAD) && spec.clock_spread_pct >= 0)
         o->clock_spread_pct = spec.clock_spread_pct;
     if (o->temperature_mv < 0) o->temperature_mv = ROOM_TEMPERATURE_MV;
