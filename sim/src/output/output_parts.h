@@ -91,10 +91,17 @@ void picture_to_pixel(const picture *p, double x_mm, double y_mm, double *px, do
 void picture_draw_footer(picture *p, const world_spec *w, double time_s, const output_robot *robots);
 int picture_write_png(picture *p, const char *path);
 void picture_free(picture *p);
-/* A Kilobot LED channel (0..3) as an 8-bit intensity. */
+/* A Kilobot LED channel (0..3) as an 8-bit intensity: 255 x the square
+ * root of level / 3. Brightness as the eye sees it grows about as the
+ * square root of the light (Stevens' power law), so the dimmest level,
+ * which the classic labs use for their dim white, reads as lit (147, a
+ * light grey) and not as a third of full (85, darker than an unlit
+ * robot's body was drawn). The viewer (viewer_page.html's ledColour)
+ * draws the same. */
 static inline int led_level_8bit(int level)
 {
-    return (level < 0 ? 0 : level > 3 ? 3 : level) * 85;
+    static const int drawn[4] = {0, 147, 208, 255};
+    return drawn[level < 0 ? 0 : level > 3 ? 3 : level];
 }
 
 /* ---- video.c: frames piped to ffmpeg, no files in between. */
