@@ -96,6 +96,7 @@ typedef struct options {
     const char *world;  /* --world FILE: robots move in it (world/) */
     const char *out_dir; /* --out DIR: what a run in a world leaves (output/) */
     int video;          /* --video: also video.mp4 */
+    double video_fps, video_speed; /* --video-fps, --video-speed; 0: the defaults (25, 1) */
     int ids;            /* --ids: final.png and the video number the robots */
     int progress;       /* a status line on stderr while it runs: -1 auto, 0 no, 1 yes */
     int threads;        /* --threads: 0 picks by the machine and the swarm */

@@ -1,7 +1,8 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* Drives sim/src/output alone, as the simulator will: a 400 x 300 mm arena
  * with an obstacle, an object, a light and three robots moving on known
- * paths with known LEDs, 50 samples 0.1 s apart (t = 0.0 .. 4.9 s).
+ * paths with known LEDs, 50 samples 0.1 s apart (t = 0.0 .. 4.9 s), and
+ * with --video the video's frames, 25 a second (t = 0.0 .. 4.96 s).
  *   robot 0: (50 + 20 t, 50), heading 0, LED red 3
  *   robot 1: on a circle of 60 mm about (200, 150), 36 degrees a second
  *            from the x axis, heading along it; LED green 2, green 3 from 2.5 s
@@ -54,8 +55,11 @@ int main(int argc, char **argv)
     if (output_open(&o, &w))
         return 1;
 
-    for (int k = 0; k < 50; k++) {
-        const double t = k / 10.0, a = 36 * t * M_PI / 180;
+    /* The world every 20 ms, as the simulator's steps: a sample every 0.1 s,
+     * the video's frames (--video) when it asks for them. */
+    for (int step = 0; step < 250; step++) {
+        const int k = step / 5; /* the sample it belongs to */
+        const double t = step / 50.0, a = 36 * t * M_PI / 180;
         output_robot r[3] = {
             {.x_mm = 50 + 20 * t, .y_mm = 50, .heading_deg = 0, .led_r = dim ? 1 : 3, .led_g = dim,
              .led_b = dim},
@@ -73,7 +77,8 @@ int main(int argc, char **argv)
                     links[n_links++] = (output_link){.sender = i, .receiver = j};
         output_sample s = {.time_s = t, .robots = r, .objects = objects, .links = links,
                            .n_links = n_links};
-        if (output_sample_add(&s)) {
+        if ((step % 5 == 0 && output_sample_add(&s)) ||
+            (o.video && t + 1e-9 >= output_next_frame_s() && output_frame_add(&s))) {
             output_close();
             return 1;
         }
