@@ -16,7 +16,7 @@ foreach(piece options progress written interrupt inputs lockstep window_workers
     board/power_down board/analog_noise board/main_stack board/interrupt_watch
     board/firmware_symbols board/elf_check board/ihex_check board/power_cycle
     board/firmware_counters board/firmware_warnings board/handler_watch board/code_place board/wide_memories board/thread_stacks board/stack_watch board/register_store_watch
-    air/ir_channel air/ir_frame air/ir_log air/overhead_controller air/ir_faults
+    air/ir_channel air/ir_distance_error air/ir_frame air/ir_log air/overhead_controller air/ir_faults
     faults/fault_plan faults/fault_log
     world/placement world/world_random world/kilobot_motion world/kilobot_light world/world_run
     world/world_stepper world/world_avr native/native_load native/native_swarm
@@ -34,7 +34,7 @@ list(APPEND SIMULATOR_SOURCES ${WORLD_FILE_SOURCES} ${SIM_ROOT}/src/world/world.
 # What a run in a world leaves behind (also a library of its own for
 # tests/world's driver).
 set(SIMULATOR_OUTPUT_SOURCES)
-foreach(piece output history trajectories picture picture_footer video viewer part_file)
+foreach(piece output history trajectories picture picture_footer video video_clock viewer part_file)
   list(APPEND SIMULATOR_OUTPUT_SOURCES ${SIM_ROOT}/src/output/${piece}.c)
 endforeach()
 set(SIMULATOR_INCLUDES ${SIM_ROOT}/src ${REPO_ROOT}/cli/src ${REPO_ROOT}/ports/native/include

@@ -98,6 +98,8 @@ static void usage(FILE *out) {
             "      --out DIR        with --world: write trajectories.csv, objects.csv,\n"
             "                       final.png and viewer.html into DIR\n"
             "      --video          with --out: also video.mp4 (needs ffmpeg)\n"
+            "      --video-fps F    the video's frames a second, 1..100 (default 25)\n"
+            "      --video-speed X  simulated seconds a second of video, 0.01..10000 (default 1)\n"
             "      --ids            with --out: number the robots in final.png and the video\n"
             "      --threads N      share the robots among N threads (default: one per core,\n"
             "                       at least 16 robots each); any N gives the same run\n"
@@ -155,6 +157,21 @@ static int percentage(const char *option, const char *text, double max, const ch
     if (*end != '\0' || !(v >= 0 && v <= max)) {
         fprintf(stderr, "openswarm-sim: %s '%s': expected a percentage from 0 to %g, e.g. %s %s\n",
                 option, text, max, option, example);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+/* --video-fps, --video-speed: a number in [lo, hi]; -1 with a message
+ * naming the option and an example. */
+static int video_rate(const char *option, const char *text, double lo, double hi, const char *example,
+                      double *out) {
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || !(v >= lo && v <= hi)) {
+        fprintf(stderr, "openswarm-sim: %s '%s': expected a number from %g to %g, e.g. %s %s\n", option,
+                text, lo, hi, option, example);
         return -1;
     }
     *out = v;
@@ -269,6 +286,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"ir-loss", required_argument, 0, 'X'},
         {"world", required_argument, 0, 'w'},      {"out", required_argument, 0, 'o'},
         {"video", no_argument, 0, 'v'},            {"progress", no_argument, 0, 'p'},
+        {"video-fps", required_argument, 0, 'F' + 512}, {"video-speed", required_argument, 0, 'S' + 512},
         {"ids", no_argument, 0, 'i' + 256},
         {"no-progress", no_argument, 0, 'P' + 256}, {"threads", required_argument, 0, 'j'},
         {"allow-faults", no_argument, 0, 'A' + 256}, {"strict", no_argument, 0, 's' + 256},
@@ -335,6 +353,8 @@ int parse_options(int argc, char **argv, options *o) {
         case 'c' + 512: o->console_csv = optarg; break;
         case 'o': o->out_dir = optarg; break;
         case 'v': o->video = 1; break;
+        case 'F' + 512: if (video_rate("--video-fps", optarg, 1, 100, "10", &o->video_fps) != 0) return -1; break;
+        case 'S' + 512: if (video_rate("--video-speed", optarg, 0.01, 10000, "10", &o->video_speed) != 0) return -1; break;
         case 'i' + 256: o->ids = 1; break;
         case 'p': o->progress = 1; break;
         case 'P' + 256: o->progress = 0; break;
@@ -352,6 +372,11 @@ int parse_options(int argc, char **argv, options *o) {
     }
     if (inputs_are_regular(argc - optind, argv + optind, &place, o) != 0) return -1;
     if (take_firmware(argc - optind, argv + optind, &place, o) != 0) return -1;
+    if ((o->video_fps > 0 || o->video_speed > 0) && !o->video) {
+        fprintf(stderr, "openswarm-sim: --video-fps and --video-speed set the rate of --video's "
+                        "video.mp4: give --video too, or drop them\n");
+        return -1;
+    }
     if (o->world != NULL) return world_options_check(o);
     if (o->out_dir != NULL || o->video || o->ids) {
         fprintf(stderr, "openswarm-sim: --out, --video and --ids record robots moving in a world: give "

@@ -20,6 +20,8 @@
 #include <sim_avr.h>
 #include <sim_vcd_file.h>
 
+#include "air/ir_distance_error.h"
+
 #define GPIOR0_ADDR 0x3E
 #define GPIOR1_ADDR 0x4A
 #define GPIOR2_ADDR 0x4B
@@ -85,6 +87,7 @@ typedef struct options {
     int ir_log;         /* print every frame on the air, decoded */
     double clock_spread_pct; /* robots' clocks differ by up to this, either way */
     double ir_loss_pct;      /* a frame's chance to be lost at the range's edge */
+    ir_distance_error ir_distance; /* the distance estimates' error: a world's "ir" (none without) */
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
@@ -93,6 +96,7 @@ typedef struct options {
     const char *world;  /* --world FILE: robots move in it (world/) */
     const char *out_dir; /* --out DIR: what a run in a world leaves (output/) */
     int video;          /* --video: also video.mp4 */
+    double video_fps, video_speed; /* --video-fps, --video-speed; 0: the defaults (25, 1) */
     int ids;            /* --ids: final.png and the video number the robots */
     int progress;       /* a status line on stderr while it runs: -1 auto, 0 no, 1 yes */
     int threads;        /* --threads: 0 picks by the machine and the swarm */
@@ -540,8 +544,9 @@ uint16_t ir_frame_crc(const uint8_t *bytes);
 
 /* ir_channel.c: every robot hears the IR LED of every other within range */
 /* loss_pct: the chance, in percent, that a frame is lost to a receiver at
- * the range's edge; closer, it falls with the distance squared. */
-void ir_channel_attach(robot *all, int n, int range_mm, double loss_pct);
+ * the range's edge; closer, it falls with the distance squared. distance:
+ * the error of the distance the receivers read (NULL: none). */
+void ir_channel_attach(robot *all, int n, int range_mm, double loss_pct, const ir_distance_error *distance);
 /* How far apart robots a and b are, in mm. */
 typedef double (*ir_distance_fn)(int a, int b, void *ctx);
 /* Who reaches whom, from where the robots are now; again when they move. */

@@ -46,6 +46,10 @@ for world in kilobots.json epucks.json; do
 done
 expect 2 "--video records the run into --out DIR's video.mp4: give --out DIR too" \
     "$sim" --quiet --no-progress --world kilobots.json --video "$elf"
+expect 2 "--video-fps and --video-speed set the rate of --video's video.mp4: give --video too, or drop them" \
+    "$sim" --quiet --no-progress --world kilobots.json --out run --video-fps 10 "$elf"
+expect 2 "--video-speed '0': expected a number from 0.01 to 10000, e.g. --video-speed 10" \
+    "$sim" --quiet --no-progress --world kilobots.json --out run --video --video-speed 0 "$elf"
 expect 2 "--ids numbers the robots in --out DIR's final.png: give --out DIR too, or drop --ids" \
     "$sim" --quiet --no-progress --world kilobots.json --ids "$elf"
 

@@ -27,8 +27,8 @@ if (image.width, image.height) != (800, 638):
 SCALE, LEFT, BOTTOM = 1.92, 16, 16 + 300 * 1.92
 
 
-def at(x, y):
-    return image.pixel(int(LEFT + x * SCALE), int(BOTTOM - y * SCALE))
+def at(x, y, img=None):
+    return (img or image).pixel(int(LEFT + x * SCALE), int(BOTTOM - y * SCALE))
 
 
 def expect(x, y, colour, what, tolerance=2):
@@ -37,10 +37,11 @@ def expect(x, y, colour, what, tolerance=2):
         failures.append(f"{what} at ({x}, {y}) mm: pixel {got}, expected {colour}")
 
 
-# The robots at 4.9 s, each in its LED's colour (2-bit channels times 85).
+# The robots at 4.9 s, each in its LED's colour (2-bit channels as 0, 147,
+# 208, 255: the square root of level / 3, as bright as the eye sees it).
 expect(148, 50, (255, 0, 0), "robot 0 (LED 3,0,0)")
 expect(140.12, 153.77, (0, 255, 0), "robot 1 (LED 0,3,0)")
-expect(320, 120, (85, 170, 255), "robot 2 (LED 1,2,3)")
+expect(320, 120, (147, 208, 255), "robot 2 (LED 1,2,3)")
 expect(300, 230, (80, 80, 88), "the obstacle")
 expect(109.8, 220, (205, 55, 45), "the object")
 expect(180, 40, (248, 247, 242), "the floor", tolerance=4)
@@ -56,7 +57,7 @@ if dark < 20:
 
 # The legend beside the time: a swatch of each LED colour shown at the end.
 strip = [image.pixel(x, y) for x in range(100, 520) for y in range(600, 636)]
-for colour in ((255, 0, 0), (0, 255, 0), (85, 170, 255)):
+for colour in ((255, 0, 0), (0, 255, 0), (147, 208, 255)):
     if colour not in strip:
         failures.append(f"no swatch of the LED colour {colour} in the legend below the arena")
 # Where robot 0 started, (50, 50): a dashed ring its size (16.5 mm), dark.
@@ -80,7 +81,19 @@ numbered = png.read(os.path.join(out + "-ids", "final.png"))
 if p.returncode != 0 or dark_beside(numbered, 148, 50) < 5:
     failures.append(f"--ids: no number written beside robot 0 (exit {p.returncode}) {p.stderr}")
 
+# --dim: robot 0 shows the classic labs' dim white, RGB(1,1,1), robot 2 is
+# off. The dim white is drawn lit: a light grey, far brighter than the
+# unlit robot's dark body (it was 85 against 150: darker than off).
+p = subprocess.run([driver, out + "-dim", "--quiet", "--dim"], capture_output=True, text=True)
+dimmed = png.read(os.path.join(out + "-dim", "final.png"))
+lit, off = at(148, 50, dimmed), at(320, 120, dimmed)
+if p.returncode != 0 or lit != (147, 147, 147):
+    failures.append(f"--dim: robot 0's dim white (LED 1,1,1) drawn {lit}, expected (147, 147, 147)")
+if off != (70, 70, 76) or sum(lit) - sum(off) < 3 * 60:
+    failures.append(f"--dim: the dim white {lit} is not clearly brighter than the unlit robot {off}")
+
 if failures:
     sys.exit("FAILED:\n  " + "\n  ".join(failures))
 print("final.png: 800x638, robots in their LED colours, obstacle, object, floor, time, "
-      "the LEDs' legend, the starts; --ids numbers the robots")
+      "the LEDs' legend, the starts; --ids numbers the robots; the dim white is drawn lit, "
+      "distinct from an unlit robot")

@@ -92,7 +92,7 @@ shot = os.path.join(out, "viewer-2.5.png")
 browse(page + "?t=2.5", "--screenshot=" + shot)
 image = png.read(shot)
 blobs = []
-for i, colour in enumerate([(255, 0, 0), (0, 255, 0), (85, 170, 255)]):
+for i, colour in enumerate([(255, 0, 0), (0, 255, 0), (147, 208, 255)]):
     xs = ys = n = 0
     for y in range(image.height):
         row = image.rows[y]

@@ -25,7 +25,9 @@
  * sender of the last flash gives at its distance: the firmware samples
  * them during a frame (ports/kilobot/src/devices/ir.c), so they show the
  * robot whose frame is being received. Before the first flash they read
- * 0 V, as in the dark.
+ * 0 V, as in the dark. The distance they read is off as a real robot's
+ * is (air/ir_distance_error.h): by the pair's own error, and by each
+ * frame's, drawn again at every frame's start pulse.
  *
  * Who reaches whom is worked out again whenever the robots move
  * (ir_channel_place, after every physics step in a world), into a spare
@@ -41,6 +43,7 @@
 #include <sim_io.h>
 
 #include "sim.h"
+#include "air/ir_distance_error.h"
 #include "air/ir_faults.h"
 
 #define AIN1_MV 500 /* the comparator's threshold */
@@ -49,6 +52,7 @@
 /* A sender and one receiver in its range. */
 typedef struct ir_link {
     int to;
+    double mm;                          /* how far apart the two are */
     uint32_t high_gain_mv, low_gain_mv; /* the receiver's distance sensors, from this sender */
     double loss;                        /* chance that a frame does not reach it (--ir-loss) */
     avr_cycle_count_t lost_until;       /* sender cycle: the current frame is lost here */
@@ -79,6 +83,7 @@ typedef struct ir_station {
     ir_sent *outbox;
     int n_out, out_room;
     avr_cycle_count_t last_flash;
+    uint64_t frames;      /* frames it started, counting the one on the air */
     uint32_t loss_random; /* its own fixed sequence: runs lose the same frames on any thread */
     char *frame_reach;    /* with --ir-log: "1, 2; lost at 2" for the frame on the air */
     int reach_room;
@@ -98,6 +103,7 @@ static ir_station *stations;
 static int n_stations;
 static int range_mm;
 static double loss_pct;
+static ir_distance_error distance_error;
 
 #define FRAME_CYCLES ((IR_FRAME_SLOTS + 1) * IR_BIT_CYCLES)
 /* A sender's flash this long after its last starts a new frame (within a
@@ -164,15 +170,30 @@ static void describe_reach(ir_station *from) {
     }
 }
 
+static uint32_t millivolts_of(const robot *r, int reading) {
+    return (uint32_t)reading * r->avr->avcc / 1024u;
+}
+
+/* What the link's receiver's distance sensors read during the sender's
+ * current frame. */
+static void sense_distance(const ir_station *from, ir_link *l) {
+    const robot *to = stations[l->to].robot;
+    int mm = ir_distance_sensed(&distance_error, (int)(from - stations), l->to, from->frames, l->mm);
+    l->high_gain_mv = millivolts_of(to, ir_high_gain_reading(mm));
+    l->low_gain_mv = millivolts_of(to, ir_low_gain_reading(mm));
+}
+
 /* At a frame's start pulse, each receiver in range loses the whole frame
- * or none of it. */
+ * or none of it, and reads the frame's own distance error. */
 static int draw_losses(ir_station *from, avr_cycle_count_t sent) {
     int starts = from->last_flash == 0 || sent - from->last_flash > FRAME_GAP_CYCLES;
     from->last_flash = sent;
     if (!starts) return 0;
+    from->frames++;
     for (int k = 0; k < from->n_links; k++) {
         ir_link *l = &from->links[k];
         l->lost_until = l->loss > 0 && next_random(from) < l->loss ? sent + FRAME_CYCLES : 0;
+        if (distance_error.noise_mm > 0) sense_distance(from, l);
     }
     if (ir_log_enabled()) describe_reach(from);
     return 1;
@@ -303,10 +324,6 @@ int ir_low_gain_reading(int mm) {
     return v > 1023 ? 1023 : v;
 }
 
-static uint32_t millivolts_of(const robot *r, int reading) {
-    return (uint32_t)reading * r->avr->avcc / 1024u;
-}
-
 /* The receivers sender s reaches now, built in the spare list and swapped
  * in. A receiver still in range keeps the loss drawn for the frame on the air. */
 static void link_sender(int s, ir_distance_fn distance, void *ctx) {
@@ -319,10 +336,9 @@ static void link_sender(int s, ir_distance_fn distance, void *ctx) {
         if (mm > range_mm) continue;
         from->spare = grow(from->spare, &from->spare_room, n + 1, sizeof(ir_link));
         ir_link *l = &from->spare[n++];
-        const robot *to = stations[j].robot;
         l->to = j;
-        l->high_gain_mv = millivolts_of(to, ir_high_gain_reading((int)lround(mm)));
-        l->low_gain_mv = millivolts_of(to, ir_low_gain_reading((int)lround(mm)));
+        l->mm = mm;
+        sense_distance(from, l);
         l->loss = loss_pct / 100.0 * (mm / range_mm) * (mm / range_mm);
         while (o < n_old && old[o].to < j) o++;
         int kept = o < n_old && old[o].to == j;
@@ -364,7 +380,7 @@ int ir_channel_links(int sender, int *receivers, int room) {
     return from->n_links;
 }
 
-void ir_channel_attach(robot *all, int n, int range, double loss) {
+void ir_channel_attach(robot *all, int n, int range, double loss, const ir_distance_error *distance) {
     stations = calloc((size_t)n, sizeof *stations);
     if (stations == NULL) {
         fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", n);
@@ -373,6 +389,7 @@ void ir_channel_attach(robot *all, int n, int range, double loss) {
     n_stations = n;
     range_mm = range;
     loss_pct = loss;
+    distance_error = distance != NULL ? *distance : (ir_distance_error){0, 0, 0};
     for (int i = 0; i < n; i++) {
         ir_station *s = &stations[i];
         s->robot = &all[i];

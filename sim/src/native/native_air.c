@@ -26,6 +26,8 @@ static ir_distance_fn distance_of;
 static void *distance_ctx;
 static uint64_t *receiver_rng; /* each receiver's loss and noise draws */
 static uint64_t *last_start;   /* each sender's last frame's start, nominal cycles; 0: none */
+static uint64_t *frames_sent;  /* each sender's frames so far: the distance error's frame count */
+static ir_distance_error distance_error;
 /* Each thread's: the frames on their way to its receivers, and those
  * that found an inbox full. */
 typedef struct deliveries {
@@ -35,8 +37,11 @@ typedef struct deliveries {
 } deliveries;
 static deliveries *by_thread;
 
-void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t nominal_hz, uint64_t lat) {
+void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t nominal_hz, uint64_t lat,
+                      const ir_distance_error *distance) {
     n_robots = n;
+    distance_error = distance != NULL ? *distance : (ir_distance_error){0, 0, 0};
+    frames_sent = calloc((size_t)n, sizeof *frames_sent);
     range_mm = range;
     loss = loss_pct / 100.0;
     nominal = nominal_hz;
@@ -196,7 +201,7 @@ static int16_t reading(int model, uint64_t *rng) {
     return (int16_t)(r < 0 ? 0 : r > 1023 ? 1023 : r);
 }
 
-static void deliver_to(deliveries *out, int receiver, int sender, const native_sent *s, double mm) {
+static void deliver_to(deliveries *out, int receiver, int sender, uint64_t frame, const native_sent *s, double mm) {
     uint64_t *rng = &receiver_rng[receiver];
     double chance = loss * (mm / range_mm) * (mm / range_mm);
     if (chance > 0 && world_random_uniform(rng) < chance) return;
@@ -214,9 +219,9 @@ static void deliver_to(deliveries *out, int receiver, int sender, const native_s
     d->frame.start = start * to_hz / nominal;
     d->frame.end = d->frame.start + FRAME_CYCLES * to_hz / from_hz;
     memcpy(d->frame.bytes, s->bytes, sizeof d->frame.bytes);
-    int rounded = (int)lround(mm);
-    d->frame.high_gain = reading(ir_high_gain_reading(rounded), rng);
-    d->frame.low_gain = reading(ir_low_gain_reading(rounded), rng);
+    int sensed = ir_distance_sensed(&distance_error, sender, receiver, frame, mm);
+    d->frame.high_gain = reading(ir_high_gain_reading(sensed), rng);
+    d->frame.low_gain = reading(ir_low_gain_reading(sensed), rng);
 }
 
 static int by_receiver_then_start(const void *a, const void *b) {
@@ -292,7 +297,8 @@ static int deliver_share(int t) {
         const reach *r = reach_by_thread[p % (unsigned)threads].all + reach_first[p];
         for (unsigned k = 0; k < log->n_sent; k++)
             for (unsigned q = 0; q < reach_count[p]; q++)
-                if (r[q].receiver % threads == t) deliver_to(out, r[q].receiver, senders[p], &log->sent[k], r[q].mm);
+                if (r[q].receiver % threads == t)
+                    deliver_to(out, r[q].receiver, senders[p], frames_sent[senders[p]] + k + 1, &log->sent[k], r[q].mm);
     }
     qsort(out->pending, out->n_pending, sizeof *out->pending, by_receiver_then_start);
     for (size_t k = 0; k < out->n_pending; k++) {
@@ -320,6 +326,7 @@ void native_air_deliver(const int *sent_by, unsigned n) {
     n_senders = n;
     window_workers_run_job(find_reach);
     window_workers_run_job(deliver_share);
+    for (unsigned p = 0; p < n; p++) frames_sent[sent_by[p]] += native_swarm_robot(sent_by[p])->log.n_sent;
 }
 
 uint64_t native_air_overflowed(void) {

@@ -2,7 +2,7 @@
 /* IR between native robots, at message level: a frame a robot sent in a
  * window reaches every robot in range one window later (the latency), in
  * each receiver's own clock, with the two gain readings its distance gives
- * (the exact mode's model: air/ir_channel.c), lost with the same chance
+ * (the exact mode's model: air/ir_channel.c, air/ir_distance_error.h), lost with the same chance
  * (--ir-loss), and broken where two frames overlap at a receiver. */
 #ifndef OPENSWARM_NATIVE_AIR_H
 #define OPENSWARM_NATIVE_AIR_H
@@ -13,9 +13,11 @@
 #include "native/native_swarm.h"
 
 /* latency: nominal cycles from a frame's start to its first pulse at the
- * receivers (at least a window: it must reach them in their future). */
+ * receivers (at least a window: it must reach them in their future);
+ * distance: the error of the distance they read (NULL: none), the exact
+ * mode's model (air/ir_distance_error.h). */
 void native_air_start(int n, int range_mm, double loss_pct, uint64_t seed, uint32_t nominal_hz,
-                      uint64_t latency);
+                      uint64_t latency, const ir_distance_error *distance);
 /* Where the robots are now (ir_channel_place's contract), and their
  * positions (x, y in mm, index order) when known: a grid then finds who is
  * in range of whom; NULL: every pair is asked. */

@@ -124,6 +124,20 @@ int history_add(output_history *h, const output_sample *s)
     return 0;
 }
 
+void history_forget_before(output_history *h, double t)
+{
+    int stale = 0;
+    while (stale < h->n - 1 && h->time_s[stale] < t)
+        stale++;
+    /* Moved only once half is stale: each sample moves about once. */
+    if (stale == 0 || stale < h->n / 2)
+        return;
+    for (int k = stale; k < h->n; k++)
+        move_sample(h, k, k - stale, k > stale ? h->link_start[k - stale] : 0);
+    h->n -= stale;
+    h->n_links = h->link_start[h->n];
+}
+
 void history_free(output_history *h)
 {
     free(h->number);

@@ -20,6 +20,7 @@ static struct {
     output_history history;
     picture picture;
     video video;
+    video_clock clock;
     int failed;
 } out;
 
@@ -77,6 +78,7 @@ static void close_all(void)
 {
     tables_close(&out.tables, 0);
     video_close(&out.video);
+    video_clock_free(&out.clock);
     picture_free(&out.picture);
     history_free(&out.history);
     free(out.dir);
@@ -110,8 +112,10 @@ int output_open(const output_options *o, const world_spec *w)
         goto fail;
     out.picture.ids = o->ids;
     if (o->video) {
+        const double fps = o->video_fps > 0 ? o->video_fps : 25, speed = o->video_speed > 0 ? o->video_speed : 1;
+        video_clock_init(&out.clock, w, fps, speed);
         char *mp4 = path_in(dir, "video.mp4");
-        rc = mp4 ? video_open(&out.video, mp4, out.picture.width, out.picture.height) : -1;
+        rc = mp4 ? video_open(&out.video, mp4, out.picture.width, out.picture.height, fps) : -1;
         free(mp4);
         if (rc)
             goto fail;
@@ -136,14 +140,36 @@ int output_sample_add(const output_sample *s)
                 out.dir, s->time_s);
         rc = -1;
     }
-    if (rc == 0 && out.options.video) {
-        picture_draw(&out.picture, &out.history, out.history.n - 1);
-        if (video_frame(&out.video, out.picture.surface))
-            rc = -1;
-    }
     if (rc)
         out.failed = 1;
     return rc;
+}
+
+double output_next_frame_s(void)
+{
+    return out.open && out.options.video ? video_clock_next_s(&out.clock) : INFINITY;
+}
+
+int output_frame_add(const output_sample *s)
+{
+    if (!out.open || !out.options.video)
+        return -1;
+    int frames = video_clock_add(&out.clock, s);
+    if (frames < 0) {
+        fprintf(stderr, "openswarm-sim: out of memory keeping the video's trails at %.3f s; give "
+                        "a lower --video-fps\n",
+                s->time_s);
+        out.failed = 1;
+        return -1;
+    }
+    if (frames > 0)
+        picture_draw(&out.picture, &out.clock.points, out.clock.points.n - 1);
+    for (int k = 0; k < frames; k++)
+        if (video_frame(&out.video, out.picture.surface)) {
+            out.failed = 1;
+            return -1;
+        }
+    return 0;
 }
 
 /* Writes one file that is written whole at the end, under path.part, then
@@ -203,9 +229,9 @@ int output_close(void)
     free(path);
 
     if (out.options.video) {
-        /* ffmpeg makes no file of no frames: a run without samples shows the
-         * start. */
-        if (out.history.n == 0)
+        /* ffmpeg makes no file of no frames: a run shorter than a frame
+         * shows its end. */
+        if (out.video.frames == 0)
             video_frame(&out.video, out.picture.surface);
         path = path_in(out.dir, "video.mp4");
         if (video_close(&out.video) == 0 && path)

@@ -2,7 +2,8 @@
 /* What a run in a world leaves in --out DIR: trajectories.csv, objects.csv,
  * final.png (a top view at the end), viewer.html (the run played back in a
  * browser, one file, no network) and, when asked, video.mp4 (Cairo frames
- * piped to ffmpeg). The simulator hands over one sample per sample period. */
+ * piped to ffmpeg). The simulator hands over one sample per sample period,
+ * and the video's frames at the video's own rate. */
 #ifndef OPENSWARM_OUTPUT_H
 #define OPENSWARM_OUTPUT_H
 
@@ -36,6 +37,8 @@ typedef struct output_options {
     int video;            /* also write video.mp4 (needs ffmpeg on the PATH) */
     int quiet;            /* no list of written files at the end */
     int ids;              /* final.png and the video number the robots (--ids) */
+    double video_fps;     /* the video's frames a second; 0: 25 */
+    double video_speed;   /* simulated seconds a second of video; 0: 1 (real time) */
     size_t history_bytes; /* the samples kept for final.png and viewer.html; 0: 64 MB */
 } output_options;
 
@@ -52,6 +55,13 @@ int output_check(const output_options *o);
 int output_open(const output_options *o, const world_spec *w);
 /* One sample, in time order. -1 on a write error (reported). */
 int output_sample_add(const output_sample *s);
+/* With a video: when it next wants the world (its frames every
+ * video_speed / video_fps simulated seconds, from 0, and points between
+ * them for the trails); INFINITY without. The caller hands it over with
+ * output_frame_add at that time or the first step after it, apart from
+ * the samples; -1 on a write error (reported). */
+double output_next_frame_s(void);
+int output_frame_add(const output_sample *s);
 /* Write what is written at the end (final.png, viewer.html), finish the
  * video, close the files; -1 if any of it failed (reported). Each file is
  * written as NAME.part and renamed to NAME once whole (part_file.c):

@@ -44,6 +44,9 @@ typedef struct output_history {
 
 void history_init(output_history *h, const world_spec *w, size_t budget); /* 0: the default */
 int history_add(output_history *h, const output_sample *s); /* -1: out of memory */
+/* Drops the samples before t (never the newest), a video's trails being
+ * only so long; in bulk, once they are half of those held. */
+void history_forget_before(output_history *h, double t);
 void history_free(output_history *h);
 static inline const output_robot *history_robots(const output_history *h, int k)
 {
@@ -91,10 +94,17 @@ void picture_to_pixel(const picture *p, double x_mm, double y_mm, double *px, do
 void picture_draw_footer(picture *p, const world_spec *w, double time_s, const output_robot *robots);
 int picture_write_png(picture *p, const char *path);
 void picture_free(picture *p);
-/* A Kilobot LED channel (0..3) as an 8-bit intensity. */
+/* A Kilobot LED channel (0..3) as an 8-bit intensity: 255 x the square
+ * root of level / 3. Brightness as the eye sees it grows about as the
+ * square root of the light (Stevens' power law), so the dimmest level,
+ * which the classic labs use for their dim white, reads as lit (147, a
+ * light grey) and not as a third of full (85, darker than an unlit
+ * robot's body was drawn). The viewer (viewer_page.html's ledColour)
+ * draws the same. */
 static inline int led_level_8bit(int level)
 {
-    return (level < 0 ? 0 : level > 3 ? 3 : level) * 85;
+    static const int drawn[4] = {0, 147, 208, 255};
+    return drawn[level < 0 ? 0 : level > 3 ? 3 : level];
 }
 
 /* ---- video.c: frames piped to ffmpeg, no files in between. */
@@ -107,12 +117,31 @@ typedef struct video {
     int failed;
 } video;
 
-/* Fails (with the fix) when ffmpeg is not on the PATH. */
-int video_open(video *v, const char *path, int width, int height);
+/* fps frames a second of the file; fails (with the fix) when ffmpeg is
+ * not on the PATH. */
+int video_open(video *v, const char *path, int width, int height, double fps);
 /* ffmpeg is on the PATH; -1 after a message naming the fix if not. */
 int video_check(void);
 int video_frame(video *v, cairo_surface_t *frame);
 int video_close(video *v); /* ffmpeg's exit status checked */
+
+/* ---- video_clock.c: the video's own clock, apart from the samples: a
+ * frame every speed / fps simulated seconds, and the world at points
+ * between them for the trails, the last VIDEO_TRAIL_S of them kept. */
+#define VIDEO_TRAIL_S 15.0
+typedef struct video_clock {
+    output_history points; /* the world at each point so far, links left out */
+    double point_s;        /* simulated seconds between points */
+    int points_per_frame;
+    long next;             /* the next point's number: due at next x point_s */
+} video_clock;
+
+void video_clock_init(video_clock *c, const world_spec *w, double fps, double speed);
+double video_clock_next_s(const video_clock *c);
+/* The world at s->time_s for every point due by then; how many of those
+ * are frames (each to be drawn from the newest point), -1 out of memory. */
+int video_clock_add(video_clock *c, const output_sample *s);
+void video_clock_free(video_clock *c);
 
 /* ---- viewer.c: viewer.html, the run and its player in one file. */
 int viewer_write(const char *path, const output_history *h);

@@ -13,8 +13,6 @@
 #include "output/output_parts.h"
 #include "output/picture_style.h"
 
-static const double video_trail_s = 15.0; /* how far back a frame's trails reach */
-
 int picture_init(picture *p, const world_spec *w)
 {
     memset(p, 0, sizeof *p);
@@ -173,7 +171,7 @@ static void draw_trails(picture *p, const output_history *h, int k)
 {
     cairo_t *cr = p->cr;
     const int nr = h->world->n_robots;
-    const double trail_s = p->trail_s > 0 ? p->trail_s : video_trail_s;
+    const double trail_s = p->trail_s > 0 ? p->trail_s : VIDEO_TRAIL_S;
     if (k < 1)
         return;
     int first = k;

@@ -21,7 +21,8 @@ typedef struct rgb {
 #define OBSTACLE RGB8(80, 80, 88)
 #define OBJECT RGB8(205, 55, 45)
 #define OBJECT_EDGE RGB8(130, 25, 20)
-#define ROBOT_OFF RGB8(150, 150, 150)
+/* An unlit robot: its dark circuit board, darker than any lit LED's grey. */
+#define ROBOT_OFF RGB8(70, 70, 76)
 #define ROBOT_EDGE RGB8(25, 25, 30)
 #define LIGHT_CORE RGB8(255, 214, 0)
 #define LIGHT_EDGE RGB8(190, 120, 0)

@@ -1,6 +1,6 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
-/* video.mp4: every sample's picture piped raw to ffmpeg, one frame per
- * sample at 30 frames a second, so no frame ever lands on the disk. ffmpeg
+/* video.mp4: the frames video_clock.c asks for, piped raw to ffmpeg at
+ * the video's frame rate, so no frame ever lands on the disk. ffmpeg
  * writes video.mp4.part, renamed to video.mp4 once it exits well
  * (part_file.c).
  * H.264 (libx264) when this ffmpeg has it, MPEG-4 part 2 otherwise;
@@ -123,7 +123,7 @@ static FILE *start_ffmpeg(const char *command, pid_t *pid)
     return f;
 }
 
-int video_open(video *v, const char *path, int width, int height)
+int video_open(video *v, const char *path, int width, int height, double fps)
 {
     memset(v, 0, sizeof *v);
     if (video_check() != 0)
@@ -140,8 +140,8 @@ int video_open(video *v, const char *path, int width, int height)
     char command[8192];
     snprintf(command, sizeof command,
              "ffmpeg -hide_banner -loglevel error -nostdin -y -f rawvideo -pix_fmt %s -s %dx%d "
-             "-r 30 -i - -c:v %s -pix_fmt yuv420p -f mp4 %s",
-             cairo_pixel_format(), width, height, has_libx264() ? "libx264 -preset veryfast -crf 20" : "mpeg4 -q:v 3",
+             "-r %g -i - -c:v %s -pix_fmt yuv420p -f mp4 %s",
+             cairo_pixel_format(), width, height, fps, has_libx264() ? "libx264 -preset veryfast -crf 20" : "mpeg4 -q:v 3",
              quoted);
     free(quoted);
     struct sigaction ignore;

@@ -87,6 +87,13 @@ static int record(double t) {
     return output_sample_add(&s);
 }
 
+/* The video's frames at its own times, before the run's end. */
+static int record_frame(double t, double end_s) {
+    if (t >= end_s - 1e-9 || t + 1e-9 < output_next_frame_s()) return 0;
+    output_sample s = {t, poses, object_centres, NULL, 0};
+    return output_frame_add(&s);
+}
+
 /* The run proper: steps until the time is up or a controller fails. */
 static int run_steps(const options *o, const world_spec *spec, world *physics, int recording) {
     uint32_t steps = (uint32_t)llround(o->seconds * 1000.0 / STEP_MS);
@@ -110,6 +117,7 @@ static int run_steps(const options *o, const world_spec *spec, world *physics, i
             if (record(t) != 0) return EXIT_USAGE;
             next_sample += spec->sample_period_s;
         }
+        if (recording && o->video && record_frame(t, o->seconds) != 0) return EXIT_USAGE;
     }
     return faults && !o->allow_faults ? EXIT_FAULT : 0;
 }
@@ -128,9 +136,10 @@ int epuck_world_run(const options *o, const world_spec *spec, world *physics, co
     int recording = 0;
     if (status == 0 && o->out_dir != NULL) {
         output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
-                          .ids = o->ids};
+                              .ids = o->ids, .video_fps = o->video_fps, .video_speed = o->video_speed};
         observe(physics, spec);
-        if (output_open(&out, spec) != 0 || record(0.0) != 0) status = EXIT_USAGE;
+        if (output_open(&out, spec) != 0 || record(0.0) != 0 || (o->video && record_frame(0.0, o->seconds) != 0))
+            status = EXIT_USAGE;
         else recording = 1;
     }
     if (status == 0) status = run_steps(o, spec, physics, recording);

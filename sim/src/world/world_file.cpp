@@ -101,6 +101,25 @@ int Reader::fidelity(const Node &n) {
     return WORLD_FIDELITY_EXACT;
 }
 
+/* "ir": the channel's range and losses, and the distance estimates' error
+ * (air/ir_distance_error.h). */
+void Reader::ir(const Node &n, world_spec &w) {
+    const std::string ex = "\"ir\": {\"range_mm\": 100, \"loss_pct\": 0, \"distance_bias_mm\": 2, \"distance_noise_mm\": 0.5}";
+    object(n, {"range_mm", "loss_pct", "distance_bias_mm", "distance_noise_mm"}, ex);
+    if (auto r = get(n, "range_mm"))
+        w.ir_range_mm = (int)whole(*r, 10, 1000, "mm at which robots still hear each other", "\"range_mm\": 100");
+    if (auto l = get(n, "loss_pct"))
+        w.ir_loss_pct = number(*l, 0, 100, false, "percent of frames lost at the range's edge", "\"loss_pct\": 20");
+    if (auto b = get(n, "distance_bias_mm"))
+        w.ir_distance_bias_mm = number(*b, 0, 20, false,
+                                       "mm within which each pair's distance estimates are off (0: exact)",
+                                       "\"distance_bias_mm\": 2, real Kilobots' accuracy");
+    if (auto s = get(n, "distance_noise_mm"))
+        w.ir_distance_noise_mm = number(*s, 0, 20, false,
+                                        "mm, the sd of each message's own distance error (0: none)",
+                                        "\"distance_noise_mm\": 0.5, real Kilobots' precision");
+}
+
 world_spec Reader::load(const json &doc) {
     Node root{&doc, "", ""};
     const std::string example = "{\"arena\": {\"width_mm\": 600, \"height_mm\": 400}, \"robots\": [{\"count\": 10}]}";
@@ -110,6 +129,8 @@ world_spec Reader::load(const json &doc) {
     world_spec w{};
     w.ir_range_mm = -1;
     w.ir_loss_pct = -1;
+    w.ir_distance_bias_mm = IR_DISTANCE_BIAS_MM;
+    w.ir_distance_noise_mm = IR_DISTANCE_NOISE_MM;
     w.clock_spread_pct = -1;
     w.duration_s = -1;
     w.sample_period_s = 0.1;
@@ -125,14 +146,7 @@ world_spec Reader::load(const json &doc) {
         w.duration_s = number(*d, 0, 1e6, true, "simulated seconds", "\"duration_s\": 120");
     if (auto p = get(root, "sample_period_s"))
         w.sample_period_s = number(*p, 0.001, 3600, false, "seconds between trajectory samples", "\"sample_period_s\": 0.1");
-    if (auto ir = get(root, "ir")) {
-        const std::string ex = "\"ir\": {\"range_mm\": 100, \"loss_pct\": 0}";
-        object(*ir, {"range_mm", "loss_pct"}, ex);
-        if (auto r = get(*ir, "range_mm"))
-            w.ir_range_mm = (int)whole(*r, 10, 1000, "mm at which robots still hear each other", "\"range_mm\": 100");
-        if (auto l = get(*ir, "loss_pct"))
-            w.ir_loss_pct = number(*l, 0, 100, false, "percent of frames lost at the range's edge", "\"loss_pct\": 20");
-    }
+    if (auto i = get(root, "ir")) ir(*i, w);
     if (auto c = get(root, "clock_spread_pct"))
         w.clock_spread_pct = number(*c, 0, 5, false, "percent the robots' clocks differ by", "\"clock_spread_pct\": 0.5");
     if (auto l = get(root, "light")) light(*l, w);

@@ -157,6 +157,7 @@ class Reader {
     /* world_file.cpp: the top level's settings. */
     void robot_kind(const Node &n);
     int fidelity(const Node &n);
+    void ir(const Node &n, world_spec &w);
 
     /* world_file_arena.cpp: the arena and what stands in it besides robots. */
     void arena(const Node &n);

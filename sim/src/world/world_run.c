@@ -32,6 +32,8 @@ static avr_cycle_count_t step_cycles, next_step;
 static int step_begun;   /* a step is begun that the robots do not see yet */
 static double step_t;    /* its time */
 static int sample_due;   /* at its time: the LEDs are noted, the rest follows it */
+static int frame_due;    /* the video's too, at its own times (output_next_frame_s) */
+static double end_s;     /* the run's end: the video's frames come before it */
 static double next_sample_s;
 static int recording;
 static int sample_failed; /* a sample could not be written (reported) */
@@ -157,6 +159,10 @@ int world_options_check(options *o) {
     if (!(o->given & GIVEN_TIME) && spec.duration_s > 0) o->seconds = spec.duration_s;
     if (!(o->given & GIVEN_IR_RANGE) && spec.ir_range_mm > 0) o->ir_range_mm = spec.ir_range_mm;
     if (!(o->given & GIVEN_IR_LOSS) && spec.ir_loss_pct >= 0) o->ir_loss_pct = spec.ir_loss_pct;
+    /* Its own draws: not the robots' streams (world.cpp), which take the
+     * seed as it is. */
+    o->ir_distance = (ir_distance_error){spec.ir_distance_bias_mm, spec.ir_distance_noise_mm,
+                                         (uint64_t)spec.seed ^ 0x49524469737400ull};
     if (!(o->given & GIVEN_CLOCK_SPREAD) && spec.clock_spread_pct >= 0)
         o->clock_spread_pct = spec.clock_spread_pct;
     if (o->temperature_mv < 0) o->temperature_mv = ROOM_TEMPERATURE_MV;
@@ -172,7 +178,7 @@ int world_options_check(options *o) {
         return -1;
     }
     output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
-                          .ids = o->ids};
+                          .ids = o->ids, .video_fps = o->video_fps, .video_speed = o->video_speed};
     if (o->out_dir != NULL && output_check(&out) != 0) return -1;
     if (sample_count_check(o) != 0) return -1;
     int status = options_check_robots(o);
@@ -270,6 +276,14 @@ static int sample(double t) {
     return output_sample_add(&s);
 }
 
+/* The same for the video, at its own times (it draws no links). */
+static int frame(double t) {
+    for (int k = 0; k < spec.n_objects; k++)
+        world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
+    output_sample s = {t, poses, object_centres, NULL, 0};
+    return output_frame_add(&s);
+}
+
 int world_run_start(int n, const options *o, const world_robots *all, uint32_t nominal_hz,
                     int physics_thread) {
     robots = all;
@@ -284,17 +298,18 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
      * may run fast or slow). */
     step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * nominal_hz);
     next_step = step_cycles;
-    step_begun = sample_due = 0;
+    step_begun = sample_due = frame_due = 0;
     world_stepper_start(physics, n, physics_thread);
     observe();
     if (o->out_dir == NULL) return 0;
     output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
-                          .ids = o->ids};
+                          .ids = o->ids, .video_fps = o->video_fps, .video_speed = o->video_speed};
     if (output_open(&out, &spec) != 0) return -1;
     recording = 1;
     next_sample_s = spec.sample_period_s;
+    end_s = o->seconds;
     note_leds();
-    return sample(0.0);
+    return sample(0.0) != 0 || (o->video && frame(0.0) != 0) ? -1 : 0;
 }
 
 /* The step begun is over: the robots sense where it left them, and its
@@ -304,9 +319,9 @@ static void step_over(void) {
     if (!step_begun) return;
     step_begun = 0;
     observe();
-    if (!sample_due) return;
-    sample_due = 0;
-    if (sample(step_t) != 0) sample_failed = 1;
+    if (sample_due && sample(step_t) != 0) sample_failed = 1;
+    if (frame_due && frame(step_t) != 0) sample_failed = 1;
+    sample_due = frame_due = 0;
 }
 
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
@@ -314,10 +329,11 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
         double t = (double)next_step / nominal_hz;
         step_over();
         if (recording && t + 1e-9 >= next_sample_s) {
-            note_leds();
             sample_due = 1;
             next_sample_s += spec.sample_period_s;
         }
+        frame_due = recording && t + 1e-9 >= output_next_frame_s() && t < end_s - 1e-9;
+        if (sample_due || frame_due) note_leds();
         world_stepper_begin(t);
         step_begun = 1;
         step_t = t;

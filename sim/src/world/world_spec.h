@@ -10,6 +10,8 @@
 
 #include <stdint.h>
 
+#include "air/ir_distance_error.h"
+
 #define WORLD_MAX_VERTICES 32
 /* What one world may hold (docs/world.md, "Limits"). Obstacles are edges
  * of one fixed body: Box2D pairs every two that overlap when the world
@@ -84,8 +86,10 @@ typedef struct world_spec {
     int n_firmware;
     int ir_range_mm;         /* -1: not given (the simulator's default) */
     double ir_loss_pct;      /* -1: not given */
+    double ir_distance_bias_mm;  /* each pair's estimates off by up to this; given or the default */
+    double ir_distance_noise_mm; /* each message's own error's sd; given or the default */
     double clock_spread_pct; /* -1: not given */
-    uint32_t seed;           /* motion noise, motor variation, analog noise, placement */
+    uint32_t seed;           /* motion noise, motor variation, analog noise, placement, IR distance error */
     double duration_s;       /* -1: not given (--time or its default) */
     double sample_period_s;  /* trajectories.csv's period; default 0.1 */
     int robot_kind;          /* WORLD_ROBOT_*: "robot" in the file, kilobot by default */
