@@ -53,9 +53,10 @@ static bool command_handler(sys_pid pid, sys_event_id event, const sys_event_dat
 }
 
 /* Register event with room for any device value unless it is already;
- * *made says whether this call registered it (to undo on a later failure). */
+ * *made says whether this call registered it (to undo on a later failure).
+ * Interrupts are masked (register_device): the table is read as it is. */
 static sys_status ensure_registered(sys_event_id event, bool *made) {
-    *made = !Sys_IsEventRegistered(event);
+    *made = !os_event_registered(event);
     return *made ? Sys_Register_Event_Sized(event, OS_CFG_HAL_MAX_VALUE) : SYS_OK;
 }
 

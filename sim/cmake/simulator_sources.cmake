@@ -16,6 +16,7 @@ foreach(piece options progress written interrupt inputs lockstep window_workers
     board/power_down board/analog_noise board/main_stack board/interrupt_watch
     board/firmware_symbols board/elf_check board/ihex_check board/power_cycle
     board/firmware_counters board/firmware_warnings board/handler_watch board/code_place board/wide_memories board/thread_stacks board/stack_watch board/register_store_watch
+    board/invalid_opcode
     air/ir_channel air/ir_distance_error air/ir_frame air/ir_log air/overhead_controller air/ir_faults
     faults/fault_plan faults/fault_log
     world/placement world/world_random world/kilobot_motion world/kilobot_light world/world_run

@@ -16,6 +16,13 @@
 
 extern "C" int openswarm_sim_main(int argc, char **argv); // sim/src/main.c's main, renamed
 
+// The wait for the child and the reading of its output are not
+// instrumented: their counters say nothing about the simulator, and they
+// vary from run to run (how often the wait polls depends on the machine's
+// load), so that libFuzzer, reading them as coverage, kept other inputs
+// on each run from the same seeds.
+#define PLUMBING __attribute__((no_sanitize("coverage")))
+
 // libFuzzer's edge counters (clang's inline-8bit-counters), bounded by the
 // linker's section symbols.
 extern "C" uint8_t __start___sancov_cntrs[] __attribute__((weak));
@@ -96,7 +103,7 @@ static void count_child_coverage(const uint8_t *child) {
     _exit(0); // no exit handlers: LeakSanitizer would report what a program may leave to exit
 }
 
-static std::string output_of(int fd) {
+PLUMBING static std::string output_of(int fd) {
     std::string text;
     char chunk[4096];
     for (off_t at = 0;;) {
@@ -109,7 +116,7 @@ static std::string output_of(int fd) {
 
 // The child's wait status, or -1 once the wall-time limit passed (the
 // child killed).
-static int wait_for(pid_t child) {
+PLUMBING static int wait_for(pid_t child) {
     auto started = std::chrono::steady_clock::now();
     auto pause = std::chrono::microseconds(20);
     for (;;) {
@@ -127,7 +134,7 @@ static int wait_for(pid_t child) {
     }
 }
 
-SimulatorRun run_simulator(const std::vector<std::string> &args) {
+PLUMBING SimulatorRun run_simulator(const std::vector<std::string> &args) {
     const ChildLink &link = child_link();
     link.result->returned = 0;
     link.result->status = 0;

@@ -8,6 +8,7 @@
 
 #include <sim_cycle_timers.h>
 
+#include "board/invalid_opcode.h"
 #include "window_workers.h"
 
 /* Robots a thread gets at least by default: fewer and the waiting costs
@@ -89,6 +90,10 @@ static int run_robot(robot *r) {
     while (!robot_finished(r) && r->avr->cycle < end) {
         if (!pc_in_flash(r->avr)) {
             r->state = cpu_Crashed; /* main.c's report says where the PC went */
+            break;
+        }
+        if (invalid_opcode_ahead(r->avr)) {
+            invalid_opcode_stop(r->avr, r->avr->pc); /* before simavr reads past the flash */
             break;
         }
         power_down_before_step(r);

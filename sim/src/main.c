@@ -8,6 +8,7 @@
 #include <sim_cycle_timers.h>
 
 #include "sim.h"
+#include "board/invalid_opcode.h"
 #include "faults/faults.h"
 #include "interrupt.h"
 #include "lockstep.h"
@@ -51,6 +52,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     main_stack_paint(r, elf);
     stack_watch_attach(r, elf);
     register_store_watch_attach(r, elf);
+    invalid_opcode_attach(r);
     firmware_counters_locate(r, elf); /* the warnings at the end read them */
     handler_watch_attach(r, elf);
     if (index == 0) {
@@ -85,6 +87,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
 /* A crash: where, and what to look for. A PC past the flash is ours to
  * catch (lockstep.c), so it is still there to name. */
 static void report_crash(const robot *r, const options *o, double t) {
+    if (invalid_opcode_report(r, firmware_of(o, r->index), t)) return;
     if (!pc_in_flash(r->avr)) {
         fprintf(stderr, "openswarm-sim: robot %d (%s) crashed at %.6f s: its program counter left the "
                         "flash: PC 0x%x, past its end at 0x%x. A return through a stack overwritten or "

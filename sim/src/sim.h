@@ -273,6 +273,10 @@ typedef struct robot {
     int register_store_watched, stored_to_register;
     uint32_t register_store_code[MAX_REGISTER_STORE_CODE][2];
     int n_register_store_code;
+    /* invalid_opcode.c: stopped at an invalid opcode, which, and where */
+    int at_invalid_opcode;
+    uint16_t invalid_opcode;
+    uint32_t invalid_opcode_pc;
     /* Powered off (--faults brownout) until this cycle of the nominal
      * clock: not run, deaf to IR. 0: powered. */
     avr_cycle_count_t off_until;

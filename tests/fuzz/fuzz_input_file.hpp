@@ -2,15 +2,26 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <unistd.h>
 
-// A folder of this process's own, made once, removed at exit.
+// A folder of this process's own, made once, removed at exit. Its name
+// is as long whatever the pid: the input's path reaches the code under
+// test (the simulator quotes it for a shell, prints it), whose loops over
+// it would otherwise run a different number of times from one run to the
+// next - coverage libFuzzer follows, so that a rerun from the same seeds
+// kept other inputs.
+inline std::string fixed_width_pid() {
+    char text[16];
+    std::snprintf(text, sizeof text, "%010ld", (long)getpid());
+    return text;
+}
+
 struct FuzzDir {
-    std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("openswarm-fuzz-" + std::to_string(getpid()));
+    std::filesystem::path path = std::filesystem::temp_directory_path() / ("openswarm-fuzz-" + fixed_width_pid());
     FuzzDir() { std::filesystem::create_directories(path); }
     ~FuzzDir() {
         std::error_code ec;
