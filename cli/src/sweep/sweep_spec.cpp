@@ -279,6 +279,7 @@ json point_world(const Sweep &s, size_t point, int trial) {
     json world = with_world_places(s, point);
     world["seed"] = (uint64_t)s.seed + (uint64_t)trial;
     if (s.duration_s > 0) world["duration_s"] = s.duration_s;
+    if (s.native) world["fidelity"] = "native";
     if (s.marks) place_on_marks(world, *s.marks, world["seed"].get<uint32_t>());
     return world;
 }

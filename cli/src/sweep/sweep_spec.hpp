@@ -46,6 +46,7 @@ struct Sweep {
     std::vector<std::string> metrics;                // as `openswarm metrics --metric` takes them
     std::vector<std::filesystem::path> scripts;
     double every_s = 0;
+    bool native = false; // every point's world in "fidelity": "native" (--native)
 };
 
 // Whether the experiment file at path is a sweep (it names a "world"),
