@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstdlib>
 
 #include "app_config.hpp"
@@ -46,12 +47,28 @@ std::string name_at(const fs::path &file, const std::string &name) {
     return name;
 }
 
+// "at": "eeprom" (else "build", the default): refused where the EEPROM
+// cannot tell an erased value from a set one, the full 32-bit range.
+void at_eeprom(const fs::path &file, const std::string &path, const json &at, AppParameter &a) {
+    std::string where = string_at(file, path + ".at", at, "\"build\" or \"eeprom\"");
+    if (where == "build") return;
+    if (where != "eeprom")
+        fail(file, path + ".at", "unknown choice \"" + where + "\"; expected \"build\" (a macro built in, the "
+                                 "default) or \"eeprom\" (read from the EEPROM at start, set per run by the world)" +
+                                     did_you_mean(where, {"build", "eeprom"}));
+    if ((unsigned long)(a.max - a.min) >= 0xFFFFFFFFul)
+        fail(file, path + ".at", "a value read from the EEPROM needs a range narrower than every 32-bit number "
+                                 "(an erased EEPROM must read as out of it, so as the default): give \"min\" and "
+                                 "\"max\"");
+    a.in_eeprom = true; // placed once every parameter is read
+}
+
 AppParameter parameter_at(const fs::path &file, const std::string &name, const json &p) {
     std::string path = "parameters." + name;
     if (!p.is_object())
         fail(file, path, std::string("expected {\"default\": N, \"min\": N, \"max\": N, \"doc\": \"...\"}, found ") +
                              found(p) + "; " + example);
-    check_keys(file, path, p, {"default", "min", "max", "doc"});
+    check_keys(file, path, p, {"default", "min", "max", "doc", "at"});
     AppParameter a;
     a.name = name;
     a.min = p.contains("min") ? number_at(file, path + ".min", p["min"], value_min, value_max) : value_min;
@@ -63,7 +80,25 @@ AppParameter parameter_at(const fs::path &file, const std::string &name, const j
     if (p.contains("doc")) a.doc = string_at(file, path + ".doc", p["doc"], "a sentence for people");
     if (a.doc.find("*/") != std::string::npos)
         fail(file, path + ".doc", "\"*/\" would end the generated header's comment: write it another way");
+    if (p.contains("at")) at_eeprom(file, path, p["at"], a);
     return a;
+}
+
+// The EEPROM values one after another from eeprom_parameters_start, in
+// the order of their names: every parameter fits.
+static_assert(eeprom_parameters_start + max_app_parameters * eeprom_parameter_bytes <= eeprom_bytes,
+              "the app's part of the EEPROM holds a value of every parameter");
+void place_in_eeprom(const fs::path &file, AppConfig &c) {
+    unsigned next = eeprom_parameters_start;
+    for (auto &p : c.parameters) {
+        if (!p.in_eeprom) continue;
+        if (c.port != "kilobot")
+            fail(file, "parameters." + p.name + ".at", "\"eeprom\": only a Kilobot's values are read from its "
+                                                      "EEPROM, and this app's port is " + c.port +
+                                                      "; drop \"at\" (the value is built in)");
+        p.eeprom_address = next;
+        next += eeprom_parameter_bytes;
+    }
 }
 
 std::vector<std::string> names_of(const AppConfig &c) {
@@ -82,12 +117,23 @@ void load_parameters(const fs::path &file, const json &list, AppConfig &c) {
         fail(file, "parameters", std::to_string(list.size()) + " parameters: at most " +
                                      std::to_string(max_app_parameters) + "; keep the ones a run varies");
     for (const auto &[name, p] : list.items()) c.parameters.push_back(parameter_at(file, name_at(file, name), p));
+    place_in_eeprom(file, c);
+}
+
+const AppParameter *find_parameter(const AppConfig &c, const std::string &name) {
+    for (const auto &p : c.parameters)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+std::vector<unsigned> eeprom_parameter_bytes_of(const AppParameter &p, long value) {
+    unsigned long stored = (unsigned long)(value - p.min);
+    return {unsigned(stored & 0xFF), unsigned(stored >> 8 & 0xFF), unsigned(stored >> 16 & 0xFF),
+            unsigned(stored >> 24 & 0xFF)};
 }
 
 std::string parameter_problem(const AppConfig &c, const std::string &name, const json &value) {
-    const AppParameter *p = nullptr;
-    for (const auto &candidate : c.parameters)
-        if (candidate.name == name) p = &candidate;
+    const AppParameter *p = find_parameter(c, name);
     if (p == nullptr)
         return c.file.string() + " declares no parameter \"" + name + "\"" +
                (c.parameters.empty() ? "" : " (it declares " + join(names_of(c)) + ")") +
@@ -138,15 +184,54 @@ std::string parameters_folder_suffix(const ParameterValues &values) {
     return values.empty() ? "" : "-p" + fingerprint(parameters_cmake_list(values));
 }
 
+namespace {
+
+// A number as C reads it with the type long on every port: the least
+// long is no literal of its own.
+std::string c_long(long v) {
+    if (v == value_min) return "(-2147483647L - 1)";
+    return v < 0 ? "(" + std::to_string(v) + "L)" : std::to_string(v) + "L";
+}
+
+// The reader of "at": "eeprom" values: the EEPROM holds value - min as a
+// little-endian 32-bit number; anything above max - min (an erased
+// EEPROM's 0xFFFFFFFF) reads as the default.
+const char *eeprom_reader =
+    "\n#include <avr/eeprom.h>\n#include <stdint.h>\n\n"
+    "/* A value the world sets per run (\"at\": \"eeprom\"): value - min at address. */\n"
+    "static inline long openswarm_eeprom_parameter(uint16_t address, long min, uint32_t span, long fallback) {\n"
+    "    uint32_t stored = eeprom_read_dword((const uint32_t *)(uintptr_t)address);\n"
+    "    return stored > span ? fallback : (long)(int32_t)((uint32_t)min + stored);\n"
+    "}\n";
+
+std::string eeprom_definition(const AppParameter &p) {
+    char address[16];
+    std::snprintf(address, sizeof address, "0x%03X", p.eeprom_address);
+    return "#define " + p.name + "_EEPROM_ADDRESS " + address + "\n#ifndef " + p.name + "\n#define " + p.name +
+           " openswarm_eeprom_parameter(" + p.name + "_EEPROM_ADDRESS, " + c_long(p.min) + ", " +
+           std::to_string((unsigned long)(p.max - p.min)) + "UL, " + c_long(p.value) + ")\n#endif\n";
+}
+
+}  // namespace
+
 std::string parameters_header(const AppConfig &c) {
     std::string h = "/* Generated by `openswarm build` from openswarm.json's \"parameters\": edit that, not this.\n"
                     " * Each is a macro in the app's sources; a build given other values\n"
-                    " * (openswarm build -D NAME=VALUE, a sweep's \"app.NAME\") defines them first. */\n"
+                    " * (openswarm build -D NAME=VALUE, a sweep's \"app.NAME\") defines them first.\n"
+                    " * One \"at\": \"eeprom\" reads the robot's EEPROM where it is used, its\n"
+                    " * default when the EEPROM holds none (docs/openswarm-json.md). */\n"
                     "#ifndef OPENSWARM_PARAMETERS_H\n#define OPENSWARM_PARAMETERS_H\n";
+    bool reader = false;
     for (const auto &p : c.parameters) {
+        if (p.in_eeprom && !reader) h += eeprom_reader;
+        reader = reader || p.in_eeprom;
         h += "\n/* " + (p.doc.empty() ? p.name : p.doc) + " (" + std::to_string(p.min) + ".." +
-             std::to_string(p.max) + ") */\n#ifndef " + p.name + "\n#define " + p.name + " " +
-             (p.value < 0 ? "(" + std::to_string(p.value) + ")" : std::to_string(p.value)) + "\n#endif\n";
+             std::to_string(p.max) + (p.in_eeprom ? "; from the EEPROM" : "") + ") */\n";
+        if (p.in_eeprom)
+            h += eeprom_definition(p);
+        else
+            h += "#ifndef " + p.name + "\n#define " + p.name + " " +
+                 (p.value < 0 ? "(" + std::to_string(p.value) + ")" : std::to_string(p.value)) + "\n#endif\n";
     }
     return h + "\n#endif\n";
 }

@@ -20,7 +20,17 @@ struct AppParameter {
     long value = 0;   // the default
     long min = 0, max = 0;
     std::string doc;
+    // "at": "eeprom": the firmware reads the value from the EEPROM at
+    // eeprom_address, so a run sets it without a build.
+    bool in_eeprom = false;
+    unsigned eeprom_address = 0;
 };
+
+// Where the app's EEPROM values go on a Kilobot: kilolib keeps OSCCAL,
+// the motor calibration, the distance tables, the IR mask and the uid
+// below 0x100 (ports/kilobot/include/openswarm/kilobot.h); the rest of the
+// 1 KB is the app's. Each value takes 4 bytes.
+constexpr unsigned eeprom_parameters_start = 0x100, eeprom_bytes = 1024, eeprom_parameter_bytes = 4;
 
 // Values set for some parameters, by name (the others keep their defaults).
 using ParameterValues = std::map<std::string, long>;
@@ -39,6 +49,13 @@ std::string parameter_problem(const AppConfig &c, const std::string &name, const
 // "NAME=VALUE" (from -D) into values; false with why (the syntax only:
 // parameter_problem checks the value against the app).
 bool parse_parameter_setting(const std::string &text, ParameterValues &values, std::string &why);
+
+// The parameter the app declares by name (nullptr: none).
+const AppParameter *find_parameter(const AppConfig &c, const std::string &name);
+
+// The 4 bytes the EEPROM holds for value of p (little-endian, value - min:
+// an erased EEPROM, 0xFF bytes, reads as out of range, the default).
+std::vector<unsigned> eeprom_parameter_bytes_of(const AppParameter &p, long value);
 
 // The values that differ from the defaults (those make another build).
 ParameterValues changed_parameters(const AppConfig &c, const ParameterValues &values);

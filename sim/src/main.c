@@ -74,6 +74,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
         world_avr_robot_noise(r, index);
     }
     board_configure(r->avr, o, uid, calibration);
+    if (o->world != NULL) world_eeprom_fill(board_eeprom_write, r->avr);
     if (faults_blank_calibration(index)) board_erase_calibration(r->avr);
     adc_trigger_attach(r->avr);
     char prefix[sizeof r->console.prefix] = "";

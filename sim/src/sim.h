@@ -480,6 +480,8 @@ void board_configure(avr_t *avr, const options *o, int uid, const int calibratio
  * distance tables, its uid (-1: left as it is). */
 typedef void (*eeprom_write_fn)(void *ctx, uint16_t address, const uint8_t *bytes, uint32_t n);
 void kilobot_eeprom_fill(eeprom_write_fn write, void *ctx, int uid, const int calibration[4]);
+/* An eeprom_write_fn into the EEPROM of the avr_t ctx. */
+void board_eeprom_write(void *avr, uint16_t address, const uint8_t *bytes, uint32_t n);
 /* After a reset (simavr clears the I/O registers): the pins the board
  * drives read as they did. */
 void board_pins_again(avr_t *avr);

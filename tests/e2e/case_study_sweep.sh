@@ -5,7 +5,8 @@
 # largest_cluster and compactness) gives the same numbers as the
 # clustering experiment file (experiments/paper.json): 2 trials x 60 s x
 # both controllers, every sample of every trial equal to the printed
-# precision. The template's world runs on its own, too.
+# precision; with --native, the same values again. The template's world
+# runs on its own, too.
 #   case_study_sweep.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -38,6 +39,15 @@ for k in old:
     assert abs(a - b) <= 5e-5 + 5e-6 * abs(b) + 1e-12, (k, old[k], new[k])
 print("%d values, equal both ways" % len(old))
 PY
+# --native: every point in the native mode (the controllers built for the
+# host, in the simulator's process), the same values - the native e-puck
+# mode is the pipe mode's byte for byte (native.epuck_same_as_pipe).
+"$openswarm" experiment experiments/case-study.json --trials 2 --duration 60 --out native --native >native.log 2>&1 ||
+    fail "the sweep with --native" native.log
+grep -q "^Built .*build/epuck_world-native/clusters.so (native)$" native.log || fail "the native build" native.log
+grep -q '"fidelity": "native"' native/point-02/trial-02/world.json || fail "a native trial's world" native/point-02/trial-02/world.json
+test "$(wc -l <native/results.csv)" -eq "$((1 + 2 * 2 * 13 * 2))" && cmp -s new/results.csv native/results.csv ||
+    fail "--native gives the exact sweep's values" new/results.csv native/results.csv
 # The world the sweep starts from is a world of its own (trial 1's).
 "$openswarm" run --world worlds/arena.json >world.log 2>&1 || fail "the template's world" world.log
 echo "the case study as a sweep gives the clustering experiment's numbers"

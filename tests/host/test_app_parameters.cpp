@@ -118,3 +118,42 @@ TEST_F(AppParameters, TheHeaderDefinesEachDefaultUnlessTheBuildDid) {
     EXPECT_NE(h.find("/* motor duty (0..255) */\n#ifndef SPEED\n#define SPEED 50\n#endif\n"), std::string::npos) << h;
     EXPECT_NE(h.find("#ifndef GAP\n#define GAP (-3)\n#endif\n"), std::string::npos) << h;
 }
+
+TEST_F(AppParameters, EepromValuesGetAddressesAndAReaderFallingBackToTheDefault) {
+    AppConfig c = load(R"({"TURN": {"default": 3, "min": -5, "max": 5, "at": "eeprom"},
+                           "SPEED": {"default": 50, "min": 0, "max": 255, "at": "build"},
+                           "HALF": {"default": 250, "min": 10, "max": 5000, "at": "eeprom"}})");
+    // In the order of their names, from 0x100: kilolib's bytes lie below.
+    EXPECT_TRUE(find_parameter(c, "HALF")->in_eeprom);
+    EXPECT_EQ(find_parameter(c, "HALF")->eeprom_address, 0x100u);
+    EXPECT_FALSE(find_parameter(c, "SPEED")->in_eeprom);
+    EXPECT_EQ(find_parameter(c, "TURN")->eeprom_address, 0x104u);
+    // value - min, little-endian: an erased EEPROM reads above max - min.
+    EXPECT_EQ(eeprom_parameter_bytes_of(*find_parameter(c, "HALF"), 500), (std::vector<unsigned>{234, 1, 0, 0}));
+    EXPECT_EQ(eeprom_parameter_bytes_of(*find_parameter(c, "TURN"), -5), (std::vector<unsigned>{0, 0, 0, 0}));
+    std::string h = parameters_header(c);
+    EXPECT_NE(h.find("#include <avr/eeprom.h>"), std::string::npos) << h;
+    EXPECT_NE(h.find("#define TURN_EEPROM_ADDRESS 0x104\n#ifndef TURN\n#define TURN openswarm_eeprom_parameter("
+                     "TURN_EEPROM_ADDRESS, (-5L), 10UL, 3L)\n#endif\n"),
+              std::string::npos)
+        << h;
+    EXPECT_NE(h.find("#ifndef SPEED\n#define SPEED 50\n#endif\n"), std::string::npos) << h;
+}
+
+TEST_F(AppParameters, EepromValuesRefusedWithTheFix) {
+    EXPECT_NE(refusal(R"({"HALF": {"default": 250, "at": "eeprom"}})").find(
+                  "\"parameters.HALF.at\": a value read from the EEPROM needs a range narrower"),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"HALF": {"default": 250, "min": 0, "max": 900, "at": "epprom"}})")
+                  .find("unknown choice \"epprom\"; expected \"build\""),
+              std::string::npos);
+    std::ofstream(dir / "openswarm.json")
+        << R"({"name": "app", "port": "epuck_world", "parameters": {"HALF": {"default": 1, "min": 0, "max": 9, "at": "eeprom"}}})";
+    try {
+        load_app_config(dir);
+        ADD_FAILURE() << "an e-puck app's EEPROM value loaded";
+    } catch (const ConfigError &e) {
+        EXPECT_NE(std::string(e.what()).find("only a Kilobot's values are read from its EEPROM"), std::string::npos)
+            << e.what();
+    }
+}

@@ -69,9 +69,12 @@ void add_config_command(CLI::App &app, const Paths &) {
                     for (const auto &t : c.threads)
                         std::printf("thread %s, stack %u bytes%s, priority %u\n", t.entry.c_str(), t.stack,
                                     t.stack ? "" : " (default)", t.priority);
-                    for (const auto &a : c.parameters)
-                        std::printf("parameter %s %ld (%ld..%ld)%s%s\n", a.name.c_str(), a.value, a.min, a.max,
+                    for (const auto &a : c.parameters) {
+                        char at[32] = "";
+                        if (a.in_eeprom) std::snprintf(at, sizeof at, " at EEPROM 0x%03X", a.eeprom_address);
+                        std::printf("parameter %s %ld (%ld..%ld)%s%s%s\n", a.name.c_str(), a.value, a.min, a.max, at,
                                     a.doc.empty() ? "" : ": ", a.doc.c_str());
+                    }
                 } else {
                     std::printf("%s is valid%s\n", c.file.string().c_str(),
                                 port->empty() ? "" : (" for " + *port).c_str());

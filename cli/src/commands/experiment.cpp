@@ -378,8 +378,9 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
     cmd->add_option("--duration", o->duration_s, "seconds a trial lasts instead of the file's")
         ->check(finite_seconds("--duration", 1, 86400, "600"));
     cmd->add_flag("--native", o->native,
-                  "run the controllers in the simulator's process (each built with `openswarm build "
-                  "--native --port epuck_world`), as the file's \"fidelity\": \"native\" asks");
+                  "run the app or controllers built for the host, in the simulator's process (a sweep: every "
+                  "point's world in \"fidelity\": \"native\"; a clustering experiment: each controller built with "
+                  "`openswarm build --native --port epuck_world`, as the file's \"fidelity\": \"native\" asks)");
     cmd->add_option("--shard", o->shard,
                     "a sweep's K-th share of N (0-based), as a Slurm array task runs it: "
                     "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
@@ -388,12 +389,9 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
         Ranks ranks;
         int status;
         try {
-            if (is_sweep_file(o->file) && o->native) {
-                report("--native: for clustering experiments; " + o->file + " is a sweep: give its "
-                       "world \"fidelity\": \"native\" instead (docs/world.md)");
-                status = EXIT_USAGE;
-            } else if (is_sweep_file(o->file))
-                status = run_sweep({o->file, o->out, o->jobs, o->trials, o->duration_s, o->shard}, paths, ranks);
+            if (is_sweep_file(o->file))
+                status = run_sweep({o->file, o->out, o->jobs, o->trials, o->duration_s, o->shard, o->native}, paths,
+                                   ranks);
             else if (!o->shard.empty()) {
                 report("--shard: for sweep files (a \"world\" and what to vary in it); " + o->file +
                        " is a clustering experiment: spread it with mpirun instead (docs/case-study.md)");

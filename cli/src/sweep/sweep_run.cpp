@@ -48,7 +48,9 @@ bool parse_shard(const std::string &text, size_t &k, size_t &n) {
 // sweep's "program": the case study's plain loop); false after saying
 // that the build makes no such program.
 bool select_program(const Sweep &s, const std::string &program, SweepTrial &t) {
-    fs::path file = t.firmware.parent_path() / program;
+    // The native build's programs are shared objects beside the app's.
+    const std::string native = t.firmware.extension() == ".so" && fs::path(program).extension() != ".so" ? ".so" : "";
+    fs::path file = t.firmware.parent_path() / (program + native);
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
         report(s.file.string() + ": \"program\": the app's build made no " + file.string() +
@@ -201,6 +203,15 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
     }
     if (o.trials) s.trials = o.trials;
     if (o.duration_s > 0) s.duration_s = o.duration_s;
+    if (o.native) {
+        for (const auto &p : s.parameters)
+            if (p.path == "fidelity") {
+                report("--native: " + o.file + " sweeps \"fidelity\" itself: leave --native out, or drop "
+                       "\"fidelity\" from its points to run every one native");
+                return EXIT_USAGE;
+            }
+        s.native = true;
+    }
     size_t shard = 0, shards = 1;
     if (!parse_shard(o.shard, shard, shards)) return EXIT_USAGE;
     fs::path file(o.file);

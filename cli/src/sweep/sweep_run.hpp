@@ -18,6 +18,7 @@ struct SweepOptions {
     int trials = 0;         // 0: the file's
     double duration_s = 0;  // 0: the file's (or the world's)
     std::string shard;      // "K/N": every N-th trial from the K-th (0-based); empty: all
+    bool native = false;    // every point in the native mode (--native)
 };
 
 // The tool's exit status: 0 every trial done, 1 some failed (the rest

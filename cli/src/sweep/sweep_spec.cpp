@@ -130,8 +130,9 @@ void load_points(Sweep &s, const json &list) {
 }
 
 // The values of "app.NAME" places, against the app's openswarm.json: a
-// parameter it declares, a whole number in its range.
-void check_app_values(const Sweep &s, bool grid) {
+// parameter it declares, a whole number in its range; those it reads
+// from the EEPROM noted.
+void check_app_values(Sweep &s, bool grid) {
     std::optional<AppConfig> app;
     for (size_t p = 0; p < s.parameters.size(); p++) {
         if (!is_app_place(s.parameters[p].path)) continue;
@@ -142,15 +143,24 @@ void check_app_values(const Sweep &s, bool grid) {
             if (!why.empty())
                 fail(s.file, (grid ? "grid." : "points[" + std::to_string(i) + "].") + s.parameters[p].path, why);
         }
+        if (find_parameter(*app, name)->in_eeprom) s.eeprom_parameters[name] = *find_parameter(*app, name);
     }
 }
 
-// The base world with the places in it a point sets.
+// The base world with the places in it a point sets, the app's EEPROM
+// values as bytes of the world's "eeprom" (docs/world.md).
 json with_world_places(const Sweep &s, size_t point) {
     json world = s.base_world;
-    for (size_t p = 0; p < s.parameters.size(); p++)
-        if (!is_app_place(s.parameters[p].path) && s.parameters[p].path != program_place)
-            set_world_path(world, s.parameters[p].path, s.points[point][p]);
+    for (size_t p = 0; p < s.parameters.size(); p++) {
+        const std::string &path = s.parameters[p].path;
+        auto eeprom = is_app_place(path) ? s.eeprom_parameters.find(path.substr(4)) : s.eeprom_parameters.end();
+        if (eeprom != s.eeprom_parameters.end())
+            world["eeprom"].push_back(
+                {{"address", eeprom->second.eeprom_address},
+                 {"bytes", eeprom_parameter_bytes_of(eeprom->second, s.points[point][p].get<long>())}});
+        else if (!is_app_place(path) && path != program_place)
+            set_world_path(world, path, s.points[point][p]);
+    }
     return world;
 }
 
@@ -269,6 +279,7 @@ json point_world(const Sweep &s, size_t point, int trial) {
     json world = with_world_places(s, point);
     world["seed"] = (uint64_t)s.seed + (uint64_t)trial;
     if (s.duration_s > 0) world["duration_s"] = s.duration_s;
+    if (s.native) world["fidelity"] = "native";
     if (s.marks) place_on_marks(world, *s.marks, world["seed"].get<uint32_t>());
     return world;
 }
@@ -278,7 +289,7 @@ bool is_app_place(const std::string &path) { return path.rfind("app.", 0) == 0; 
 ParameterValues point_parameters(const Sweep &s, size_t point) {
     ParameterValues values;
     for (size_t p = 0; p < s.parameters.size(); p++)
-        if (is_app_place(s.parameters[p].path))
+        if (is_app_place(s.parameters[p].path) && !s.eeprom_parameters.count(s.parameters[p].path.substr(4)))
             values[s.parameters[p].path.substr(4)] = s.points[point][p].get<long>();
     return values;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,10 +39,14 @@ struct Sweep {
     double duration_s = 0;       // 0: the world's
     std::optional<Marks> marks;  // each trial's robots and objects on marks drawn from its seed
     std::vector<SweepParameter> parameters;
+    // The "app.NAME" places the firmware reads from the EEPROM ("at":
+    // "eeprom"): set in each point's world, one build for all, by name.
+    std::map<std::string, AppParameter> eeprom_parameters;
     std::vector<std::vector<nlohmann::json>> points; // a value for each parameter
     std::vector<std::string> metrics;                // as `openswarm metrics --metric` takes them
     std::vector<std::filesystem::path> scripts;
     double every_s = 0;
+    bool native = false; // every point's world in "fidelity": "native" (--native)
 };
 
 // Whether the experiment file at path is a sweep (it names a "world"),
@@ -56,7 +61,8 @@ Sweep load_sweep(const std::filesystem::path &file);
 // The world of one point (parameters set) and trial (seed, duration).
 nlohmann::json point_world(const Sweep &s, size_t point, int trial);
 
-// The app's parameters a point sets ("app.NAME" places), by name.
+// The app's parameters a point builds in ("app.NAME" places but those
+// read from the EEPROM), by name.
 ParameterValues point_parameters(const Sweep &s, size_t point);
 
 // Whether a sweep's place names an app parameter ("app.NAME"), not a world field.

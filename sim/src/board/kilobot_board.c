@@ -23,7 +23,7 @@ static void write_eeprom(avr_t *avr, uint16_t address, const uint8_t *bytes, uin
     avr_ioctl(avr, AVR_IOCTL_EEPROM_SET, &d);
 }
 
-static void write_eeprom_of(void *avr, uint16_t address, const uint8_t *bytes, uint32_t n) {
+void board_eeprom_write(void *avr, uint16_t address, const uint8_t *bytes, uint32_t n) {
     write_eeprom(avr, address, bytes, n);
 }
 
@@ -45,7 +45,7 @@ void board_configure(avr_t *avr, const options *o, int uid, const int calibratio
     set_analog(avr, ADC_IRQ_TEMP, o->temperature_mv);
     /* The charger's status output holds PD0 high, low while it charges. */
     avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('D'), IOPORT_IRQ_PIN0), !o->charging);
-    kilobot_eeprom_fill(write_eeprom_of, avr, uid, calibration);
+    kilobot_eeprom_fill(board_eeprom_write, avr, uid, calibration);
 }
 
 void kilobot_eeprom_fill(eeprom_write_fn write, void *ctx, int uid, const int calibration[4]) {

@@ -95,6 +95,7 @@ static void configure(int index, const options *o) {
     }
     memset(io->eeprom, 0xFF, sizeof io->eeprom);
     kilobot_eeprom_fill(write_eeprom, io, uid, calibration);
+    if (o->world != NULL) world_eeprom_fill(write_eeprom, io);
     io->adc_mv[NATIVE_ADC_LIGHT] = (uint16_t)analog_mv(o->light_mv, 0);
     io->adc_mv[NATIVE_ADC_VOLTAGE] = (uint16_t)analog_mv(o->voltage_mv, 0);
     io->adc_mv[NATIVE_ADC_TEMPERATURE] = (uint16_t)analog_mv(o->temperature_mv, 0);

@@ -6,7 +6,8 @@
  *   world_file_checks.cpp    the checks of single values, the words of messages
  *   world_file_geometry.cpp  distances and crossings
  *   world_file_arena.cpp     the arena, obstacles, objects, lights
- *   world_file_robots.cpp    the groups of robots, placed */
+ *   world_file_robots.cpp    the groups of robots, placed
+ *   world_file_eeprom.cpp    the bytes the robots' EEPROM holds */
 #ifndef OPENSWARM_WORLD_FILE_READER_HPP
 #define OPENSWARM_WORLD_FILE_READER_HPP
 
@@ -173,6 +174,9 @@ class Reader {
     int object_hit(P c, double r, double &d) const;
     std::optional<Conflict> obstacle_conflict(P c, double r, const std::string &radius) const;
     std::optional<Conflict> object_conflict(P c, double r, const std::string &needed) const;
+
+    /* world_file_eeprom.cpp: "eeprom", bytes every robot starts with. */
+    void eeprom(const Node &n, world_spec &w) const;
 
     /* world_file_limits.cpp: what one world may hold. */
     int obstacle_vertices_ = 0; /* the obstacles' so far */

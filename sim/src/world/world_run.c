@@ -202,6 +202,11 @@ void world_robot_identity(int index, int *uid, int calibration[4]) {
     for (int i = 0; i < 4; i++) calibration[i] = r->calibration[i] == -2 ? own[i] : r->calibration[i];
 }
 
+void world_eeprom_fill(eeprom_write_fn write, void *ctx) {
+    for (uint16_t a = 0; a < WORLD_EEPROM_BYTES; a++)
+        if (spec.eeprom_given[a]) write(ctx, a, &spec.eeprom[a], 1);
+}
+
 void world_run_motors(int index, uint8_t left, uint8_t right, double t) {
     world_stepper_motor(index, 0, left, t);
     world_stepper_motor(index, 1, right, t);

@@ -17,6 +17,9 @@ int world_options_check(options *o);
 uint64_t world_robot_noise_seed(int index);
 /* Robot index's uid and EEPROM calibration (-1: erased). */
 void world_robot_identity(int index, int *uid, int calibration[4]);
+/* The bytes the world's "eeprom" gives, as write(ctx, ...) calls: after
+ * kilobot_eeprom_fill, the same for every robot. */
+void world_eeprom_fill(eeprom_write_fn write, void *ctx);
 /* What the world needs of the robots, whichever simulator runs them (the
  * exact mode's world_avr.c, the native mode's native/native_world.c). */
 typedef struct world_robots {

@@ -69,6 +69,11 @@ typedef struct world_robot {
                            -2: the robot's own (factory) duties; -1: erased */
 } world_robot;
 
+/* A Kilobot's EEPROM, and where the app's part starts: kilolib keeps its
+ * calibration, distance tables, IR mask and uid below 0x100. */
+#define WORLD_EEPROM_BYTES 1024
+#define WORLD_EEPROM_APP_START 0x100
+
 typedef struct world_spec {
     const char *path; /* the file, for messages */
     double width_mm, height_mm;
@@ -95,6 +100,10 @@ typedef struct world_spec {
     int robot_kind;          /* WORLD_ROBOT_*: "robot" in the file, kilobot by default */
     int fidelity;            /* WORLD_FIDELITY_*: "fidelity" in the file, exact by default */
     double robot_radius_mm;  /* its body's */
+    /* "eeprom": bytes every robot's EEPROM holds before it starts (the
+     * app's values, "at": "eeprom"), where eeprom_given is set. */
+    uint8_t eeprom[WORLD_EEPROM_BYTES];
+    uint8_t eeprom_given[WORLD_EEPROM_BYTES];
 } world_spec;
 
 #ifdef __cplusplus
