@@ -167,6 +167,7 @@ class Reader {
     void check_outline(const Node &shape, const world_obstacle &o, const std::vector<Node> &where) const;
     void movable_object(const Node &n); /* "objects": one that robots push */
     void light(const Node &n, world_spec &w);
+    void noise(const Node &n, world_spec &w);
     std::optional<Conflict> round_conflict(P c, double r) const; /* an object's */
     std::optional<Conflict> obstacle_conflict(P c, double r, const std::string &radius) const;
     std::optional<Conflict> object_conflict(P c, double r, const std::string &needed) const;
