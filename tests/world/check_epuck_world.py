@@ -27,9 +27,12 @@ failures = []
 
 
 def world(name, robots, objects=(), duration=2.0, size=(1000, 800)):
+    """The wheels without their noise: these checks are of the drive's
+    geometry, to the millimetre (world.EpuckWheelNoise checks the noise)."""
     path = os.path.join(WORK, name + ".json")
     with open(path, "w") as f:
         json.dump({"robot": "epuck", "arena": {"width_mm": size[0], "height_mm": size[1]},
+                   "noise": {"wheels": False},
                    "duration_s": duration, "sample_period_s": 0.1, "objects": list(objects),
                    "robots": [{"poses": robots, "firmware": DOUBLE}]}, f)
     return path

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "group_comparison.hpp"
 #include "sweep_stats.hpp"
 
 namespace fs = std::filesystem;
@@ -82,6 +83,17 @@ bool close_checked(std::ofstream &out, const fs::path &file, std::string &why) {
     return false;
 }
 
+// Two points (the case study's two controllers): whether they differ at
+// the end, each metric by Welch's t test, and by how much (Cohen's d).
+void print_two_point_comparison(Finals &finals, std::FILE *to) {
+    for (const std::string &metric : finals.order) {
+        Comparison c = compare_groups(finals.at[0][metric], finals.at[1][metric]);
+        if (!c.valid) continue;
+        std::fprintf(to, "point 1 against point 2, %s: Welch's t %s (df %.1f), p = %s; Cohen's d %s\n", metric.c_str(),
+                     number(c.t).c_str(), c.degrees, number(c.p).c_str(), number(c.d).c_str());
+    }
+}
+
 }  // namespace
 
 bool write_sweep_results(const Sweep &s, const std::vector<SweepTrial> &trials, const fs::path &out,
@@ -133,6 +145,7 @@ void print_sweep_summary(const Sweep &s, const std::vector<SweepTrial> &trials, 
                               number((m.high - m.low) / 2).c_str(), m.n);
         }
     }
+    if (s.points.size() == 2) print_two_point_comparison(finals, to);
 }
 
 }  // namespace openswarm

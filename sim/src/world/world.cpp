@@ -35,6 +35,10 @@ constexpr double EPUCK_MASS_KG = 0.150;
 constexpr double EPUCK_WHEEL_FRICTION = 0.8;
 constexpr double EPUCK_MM_PER_STEP = 3.14159265358979323846 * 41.0 / 1000.0;
 constexpr double EPUCK_AXLE_MM = 53.0;
+/* Each e-puck wheel's speed is its command times a factor drawn anew every
+ * step, uniform in 1 +- this: Enki's e-puck model (DifferentialWheeled's
+ * noiseAmount 0.05, EPuck.cpp), slip and all (docs/world.md). */
+constexpr double EPUCK_WHEEL_NOISE = 0.05;
 constexpr double CONTACT_FRICTION = 0.3; /* body against body */
 constexpr int VELOCITY_ITERATIONS = 8, POSITION_ITERATIONS = 3;
 constexpr double PI = 3.14159265358979323846;
@@ -175,10 +179,10 @@ void walk(Robot &r, const kilobot_twist &twist) {
     if (!still) r.body->SetAwake(true);
 }
 
-/* A differential drive: each wheel rolls its steps' worth; the body turns
- * by their difference over the axle. */
-kilobot_twist epuck_twist(const int16_t steps[2]) {
-    double left = steps[0] * EPUCK_MM_PER_STEP, right = steps[1] * EPUCK_MM_PER_STEP;
+/* A differential drive: each wheel rolls its steps' worth times its
+ * factor; the body turns by their difference over the axle. */
+kilobot_twist epuck_twist(const int16_t steps[2], const double factor[2]) {
+    double left = steps[0] * EPUCK_MM_PER_STEP * factor[0], right = steps[1] * EPUCK_MM_PER_STEP * factor[1];
     return kilobot_twist{(left + right) / 2.0, 0.0, (right - left) / EPUCK_AXLE_MM};
 }
 
@@ -264,7 +268,10 @@ void world_step(world *w, double t) {
     const bool epuck = w->spec->robot_kind == WORLD_ROBOT_EPUCK;
     for (Robot &r : w->robots) {
         if (epuck) {
-            walk(r, epuck_twist(r.wheel_steps));
+            double factor[2] = {1.0, 1.0};
+            if (!w->spec->wheel_noise_off) /* drawn from the robot's own stream */
+                for (double &f : factor) f += EPUCK_WHEEL_NOISE * (2.0 * world_random_uniform(&r.rng) - 1.0);
+            walk(r, epuck_twist(r.wheel_steps, factor));
             continue;
         }
         for (kilobot_motor &motor : r.motor) kilobot_motor_advance(&motor, t);

@@ -85,6 +85,7 @@ typedef struct world_spec {
     int n_lights;
     double ambient_light_mv; /* the light sensor's input with no source near */
     int light_unshaded;      /* "light": {"shadow": false}: no battery shadow on the sensor */
+    int wheel_noise_off;     /* "noise": {"wheels": false}: e-puck wheels turn exactly as commanded */
     world_robot *robots;
     int n_robots;
     char **firmware; /* ELF paths named in the file, relative to the file resolved */

@@ -103,16 +103,19 @@ typedef enum epuck_seen { EPUCK_SEEN_NOTHING = 0, EPUCK_SEEN_ROBOT, EPUCK_SEEN_O
 
 /* The camera's pre-processor (the default), the paper's virtual sensor: the
  * central 160 x 160 pixels (of a 640 x 480 frame; a smaller frame's centre,
- * scaled) looked at on a 20 x 20 grid, 24 of its points sampled and each
- * matched to dark, green, red or white; 2 or more red or dark: an object;
- * else 2 or more green: a robot; else nothing. */
+ * scaled) looked at on a 20 x 20 grid, the original's 24 points (columns 6,
+ * 9, 12, 15 by rows 4, 6, ..., 14) each matched to dark, green, red or white
+ * (epuck_colour_nearest); 2 or more red or dark: an object; else 2 or more
+ * green: a robot; else nothing. Built with EPUCK_CLASSIFIER_BAND: this
+ * project's earlier band (columns 2..17, rows 8..11, epuck_colour_of). */
 uint8_t epuck_camera_classifier(sys_device *dev, const void *in, uint8_t size, void *out,
                                 uint8_t capacity);
 /* The same judgement on its own, for code without the kernel (a plain
  * loop): false if the frame is too small to judge (under 20 pixels wide, or
  * shorter than a quarter of its width). */
 bool epuck_classify_frame(const epuck_camera_frame *frame, epuck_seen *seen);
-/* The colour class of one RGB565 pixel, as the classifier sees it. */
+/* The colour class of one RGB565 pixel by fixed thresholds (the band
+ * classifier's). */
 typedef enum epuck_colour {
     EPUCK_COLOUR_OTHER = 0,
     EPUCK_COLOUR_DARK,
@@ -121,6 +124,9 @@ typedef enum epuck_colour {
     EPUCK_COLOUR_WHITE
 } epuck_colour;
 epuck_colour epuck_colour_of(uint16_t rgb565);
+/* The original classifier's match (OpenSwarm's camera_processing.c): the
+ * nearest of dark, green, red and white; never EPUCK_COLOUR_OTHER. */
+epuck_colour epuck_colour_nearest(uint16_t rgb565);
 
 /* ---- the devices ---- */
 extern sys_device epuck_wheels, epuck_ring_leds, epuck_body_led, epuck_front_led, epuck_rgb_leds,
