@@ -242,7 +242,7 @@ typedef struct handler_watch {
     const char *elf;
     uint32_t subs, subs_size, subs_end;
     uint32_t bound;      /* the kernel's trampoline for bindings, a byte address */
-    uint32_t library[2]; /* the kilolib layer's own handlers, byte addresses */
+    uint32_t library[3]; /* the kernel's and kilolib's own handlers, byte addresses */
 } handler_watch;
 
 #define MAX_REGISTER_STORE_CODE 8

@@ -6,9 +6,11 @@
  * per flash word); the kernel counts nothing per subscription, as a count
  * would cost flash the classic Kilobot programs have not to spare
  * (avr.kilolib_budget). A subscription with a context names its binding,
- * whose function is the one looked for. The kilolib layer's own handlers
- * (kilolib_*: the messages the program may never get, its calls) are not
- * the app's concern and are left out. */
+ * whose function is the one looked for. The handlers the kernel and the
+ * kilolib layer subscribe for themselves are not the app's concern and
+ * are left out: the HAL's command_handler (an output device's commands,
+ * which a program that sets its LED directly never sends) and kilolib_*
+ * (the messages the program may never get, its calls). */
 #include <gelf.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,8 +21,10 @@
  * handler (a word address), condition or binding, event, pid. */
 #define SUBSCRIPTION_BYTES 6
 
-/* The kilolib layer's own handlers (ports/kilobot/kilolib/src/kilolib.c). */
-static const char *const library_handler_names[] = {"kilolib_deliver_message", "kilolib_run_call"};
+/* The kernel's and the kilolib layer's own handlers (kernel/src/hal.c,
+ * ports/kilobot/kilolib/src/kilolib.c). */
+static const char *const library_handler_names[] = {"command_handler", "kilolib_deliver_message",
+                                                    "kilolib_run_call"};
 #define MAX_LIBRARY_HANDLERS (sizeof library_handler_names / sizeof library_handler_names[0])
 
 typedef struct image_handlers {
