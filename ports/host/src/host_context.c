@@ -61,6 +61,15 @@ static void thread_start(void) {
     os_thread_exit();
 }
 
+void port_stack_pool_forget(void *pool, size_t bytes) {
+#ifdef HOST_ASAN
+    ASAN_UNPOISON_MEMORY_REGION(pool, bytes);
+#else
+    (void)pool;
+    (void)bytes;
+#endif
+}
+
 void port_context_init(port_context_t *ctx, void *stack, size_t size, void (*entry)(void *),
                        void *arg) {
     memset(ctx, 0, sizeof *ctx);

@@ -22,6 +22,15 @@ typedef int port_irq_state_t;
 #define PORT_STACK_EXTRA (128u * 1024u)
 #define PORT_STACK_ALIGN 16u
 
+/* A kernel starting again finds its stack pool holding no thread, though
+ * the last kernel's threads may have been alive when it stopped (a host
+ * test's kernel is powered off with its threads running): what
+ * AddressSanitizer marked on their frames is forgotten before the pool is
+ * painted, or the paint would be reported as a stack-buffer underflow
+ * (host_context.c). */
+void port_stack_pool_forget(void *pool, size_t bytes);
+#define PORT_STACK_POOL_FORGET(pool, bytes) port_stack_pool_forget(pool, bytes)
+
 /* Event ids the port reserves for its devices. */
 #ifndef PORT_EVENT_COUNT
 #define PORT_EVENT_COUNT 2
