@@ -239,7 +239,7 @@ typedef struct stack_watch {
  * name at the end every handler subscribed and never called. */
 typedef struct handler_watch {
     uint8_t *ran; /* NULL: not watched (no OpenSwarm kernel in the image) */
-    const char *elf;
+    char *elf;    /* the firmware's path, our copy */
     uint32_t subs, subs_size, subs_end;
     uint32_t bound;      /* the kernel's trampoline for bindings, a byte address */
     uint32_t library[3]; /* the kernel's and kilolib's own handlers, byte addresses */

@@ -62,14 +62,22 @@ static image_handlers handlers_of(const char *elf_path) {
 void handler_watch_attach(robot *r, const char *elf_path) {
     handler_watch *w = &r->handler_watch;
     free(w->ran);
+    free(w->elf);
     memset(w, 0, sizeof *w);
     image_handlers s = handlers_of(elf_path);
     if (s.subs == 0 || s.subs_end == 0 || s.subs_size % SUBSCRIPTION_BYTES != 0 ||
         s.subs + s.subs_size > r->avr->ramend + 1u || s.subs_end + 2u > r->avr->ramend + 1u)
         return; /* no OpenSwarm kernel, or one of another layout */
+    /* The path is copied: a world's firmware paths are freed with the
+     * world, before the end-of-run report names the handlers. */
     w->ran = calloc(r->avr->flashend / 16u + 1u, 1);
-    if (w->ran == NULL) return; /* unwatched: the warning is the only loss */
-    w->elf = elf_path;
+    w->elf = strdup(elf_path);
+    if (w->ran == NULL || w->elf == NULL) { /* unwatched: the warning is the only loss */
+        free(w->ran);
+        free(w->elf);
+        memset(w, 0, sizeof *w);
+        return;
+    }
     w->subs = s.subs;
     w->subs_size = s.subs_size;
     w->subs_end = s.subs_end;
