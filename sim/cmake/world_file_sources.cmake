@@ -4,6 +4,6 @@
 # project of its own) compile the same list. Each also needs
 # sim/src/world/world_random.c and cli/src/suggest.cpp.
 set(WORLD_FILE_SOURCES)
-foreach(piece world_file world_json_text world_file_checks world_file_geometry world_file_arena world_file_robots world_file_limits world_file_eeprom)
+foreach(piece world_file world_json_text world_file_checks world_file_geometry world_file_arena world_file_robots world_file_limits world_file_eeprom world_file_epuck)
   list(APPEND WORLD_FILE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/../src/world/${piece}.cpp)
 endforeach()

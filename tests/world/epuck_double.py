@@ -7,7 +7,8 @@ board does, and behaves as the environment says:
   EPUCK_DIE_AT=MS    exit 5 at that time (a controller that crashes)
   EPUCK_GARBAGE=1    answer with a bad record
   EPUCK_LOG=PREFIX   append what it senses to PREFIX<robot's order>.log:
-                     "time front_reflected centre_pixel" per step
+                     "time front_reflected centre_pixel frame" per step
+                     (frame: 1 when a frame came with this step's input)
 It shows what the camera's centre sees on its RGB LED: red 3 for red,
 green 3 for green, all 3 for white, off for dark."""
 import os
@@ -50,7 +51,7 @@ def main():
             sys.exit(5)
         if log and advance:
             front = max(off[0] - pulsed[0], off[7] - pulsed[7])
-            log.write(f"{t} {front} {centre:#06x}\n")
+            log.write(f"{t} {front} {centre:#06x} {1 if w else 0}\n")
         out.write(OUT.pack(MAGIC, t, left, right, 0, 0, 0, rgb, 0))
         out.flush()
         if flags & 2:

@@ -4,7 +4,8 @@
 // e-pucks driving straight at 500 steps/s for 10 s, each from its own
 // stream; across them, the distance driven and the heading's drift have
 // the spreads the model gives. With "noise": {"wheels": false} every robot
-// drives exactly the same path.
+// drives exactly the same path; with "wheels_pct" the spread scales with
+// the half-width.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,7 +39,7 @@ struct drive {
 // One column, 100 mm apart, all heading along x from the same x: Box2D's
 // floats then round every robot's x alike (robots in different columns
 // differ by 0.3 mm after 10 s from rounding alone, as much as the noise).
-drive drive_straight(int noise_off) {
+drive drive_straight(int noise_off, double pct = 0) {
     std::vector<world_robot> robots(ROBOTS);
     for (int i = 0; i < ROBOTS; i++) {
         robots[size_t(i)].at = {100.0, 100.0 * (i + 1)};
@@ -53,6 +54,7 @@ drive drive_straight(int noise_off) {
     spec.robot_radius_mm = 37;
     spec.seed = 7;
     spec.wheel_noise_off = noise_off;
+    spec.wheel_noise_pct = pct;
     world *w = world_create(&spec);
     for (int k = 0; k < STEPS; k++) {
         for (int i = 0; i < ROBOTS; i++) world_epuck_wheels(w, i, COMMAND, COMMAND);
@@ -94,6 +96,13 @@ TEST(EpuckWheelNoise, TheSwitchTurnsItOff) {
     EXPECT_NEAR(SPEED_MM_S * STEPS * STEP_S, d.distance_mm.mean, 1.0) << "mm";
     EXPECT_LT(d.distance_mm.sd, 1e-3) << "mm: every robot drives the same path";
     EXPECT_LT(d.heading_rad.sd, 1e-6) << "rad";
+}
+
+TEST(EpuckWheelNoise, ItsWidthScalesTheSpread) {
+    // Twice the half-width, twice the sd: the factor's sd is linear in it.
+    drive d = drive_straight(0, 2 * HALF_WIDTH * 100);
+    EXPECT_NEAR(2 * DISTANCE_SD, d.distance_mm.sd, 0.2 * 2 * DISTANCE_SD) << "mm";
+    EXPECT_NEAR(2 * HEADING_SD, d.heading_rad.sd, 0.2 * 2 * HEADING_SD) << "rad";
 }
 
 } // namespace

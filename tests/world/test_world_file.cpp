@@ -238,7 +238,7 @@ TEST_F(WorldFile, KeysWithEscapesAreLocated) {
     std::string err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "a\/b\u00e9": 1})");
     EXPECT_EQ(err.substr(0, err.find('\n')),
               "world.json:1:48: unknown key \"a/b\xc3\xa9\"; the keys here are description, robot, arena, seed, duration_s, "
-              "sample_period_s, fidelity, ir, clock_spread_pct, light, noise, obstacles, objects, robots, eeprom");
+              "sample_period_s, fidelity, ir, clock_spread_pct, light, noise, camera, obstacles, objects, robots, eeprom");
 }
 
 TEST_F(WorldFile, SyntaxErrorsArePlaced) {
@@ -279,7 +279,7 @@ TEST_F(WorldFile, LongValuesAreClipped) {
                    "\": 1, \"arena\": {\"width_mm\": 600, \"height_mm\": 400}}");
     EXPECT_EQ(err, "world.json:1:1021: unknown key \"" + std::string(57, 'k') +
                        "...\"; the keys here are description, robot, arena, seed, duration_s, sample_period_s, "
-                       "fidelity, ir, clock_spread_pct, light, noise, obstacles, objects, robots, eeprom\n"
+                       "fidelity, ir, clock_spread_pct, light, noise, camera, obstacles, objects, robots, eeprom\n"
                        "    ..." + std::string(97, 'd') + "\", \"" + std::string(99, 'k') + "...\n"
                        "       " + std::string(100, ' ') + "^\n");
     // A cut does not split a character ("é" is two bytes).

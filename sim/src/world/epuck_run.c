@@ -12,11 +12,12 @@
 #include "world/epuck_sensors.h"
 #include "world/world_random.h"
 
-#define STEP_MS 10           /* = WORLD_STEP_S: one exchange per physics step */
-#define FRAME_PERIOD_MS 250  /* the camera's 4 frames a second (docs/world.md) */
+#define STEP_MS 10 /* = WORLD_STEP_S: one exchange per physics step */
+#define FRAME_PIXELS (EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT)
 
 typedef struct epuck_robot {
-    uint64_t rng; /* its proximity sensors' noise */
+    uint64_t rng;      /* its proximity sensors' noise */
+    uint16_t *frames;  /* the frames taken and not yet delivered, camera_depth of them */
 } epuck_robot;
 
 static const epuck_controllers *controllers;
@@ -25,7 +26,9 @@ static epuck_world_output *answers; /* each robot's last */
 static int n_robots;
 static output_robot *poses;
 static world_point *object_centres;
-static uint16_t frame[EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT];
+static uint16_t frame[FRAME_PIXELS];
+static int camera_period_ms, camera_lag_ms;
+static int camera_depth; /* frames in flight a robot: the lag's periods and one */
 
 static void *allocate(size_t n, size_t size) {
     void *p = calloc(n ? n : 1, size);
@@ -37,28 +40,47 @@ static void *allocate(size_t n, size_t size) {
 }
 
 static int start_controllers(const options *o, const world_spec *spec) {
+    camera_period_ms = world_camera_period_ms(spec);
+    camera_lag_ms = spec->camera_lag_ms;
+    camera_depth = camera_lag_ms / camera_period_ms + 1;
     for (int i = 0; i < n_robots; i++) {
         epuck_robot *r = &robots[i];
         r->rng = (uint64_t)spec->seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0xE9u);
         world_random_next(&r->rng);
+        if (camera_lag_ms > 0) r->frames = allocate((size_t)camera_depth * FRAME_PIXELS, sizeof *r->frames);
     }
     return controllers->start(o, n_robots, answers);
+}
+
+/* Robot i's frame for this step, if one arrives: taken camera_lag_ms ago
+ * (the sensor's readout and the transfer), kept in its ring until then.
+ * Without a lag the frame is taken and delivered in the same step. */
+static const uint16_t *camera_frame(const world *physics, int i, uint32_t t_ms) {
+    epuck_robot *r = &robots[i];
+    if (camera_lag_ms == 0) {
+        if (t_ms % (uint32_t)camera_period_ms != 0) return NULL;
+        epuck_camera_render(physics, i, frame);
+        return frame;
+    }
+    if (t_ms % (uint32_t)camera_period_ms == 0)
+        epuck_camera_render(physics, i, r->frames + (t_ms / camera_period_ms % camera_depth) * FRAME_PIXELS);
+    if (t_ms < (uint32_t)camera_lag_ms || (t_ms - camera_lag_ms) % (uint32_t)camera_period_ms != 0) return NULL;
+    return r->frames + ((t_ms - camera_lag_ms) / camera_period_ms % camera_depth) * FRAME_PIXELS;
 }
 
 /* One step's exchange with every controller: all inputs first, then
  * every answer. */
 static int exchange(const world *physics, uint32_t t_ms) {
-    int with_frame = t_ms % FRAME_PERIOD_MS == 0;
     for (int i = 0; i < n_robots; i++) {
         epuck_robot *r = &robots[i];
         epuck_world_input in = {EPUCK_LINK_MAGIC, STEP_MS, EPUCK_LINK_PROXIMITY, 0, {0}, {0}, 0, 0};
         epuck_proximity_read(physics, i, in.proximity_off, in.proximity_pulsed, &r->rng);
-        if (with_frame) {
-            epuck_camera_render(physics, i, frame);
+        const uint16_t *taken = camera_frame(physics, i, t_ms);
+        if (taken != NULL) {
             in.frame_width = EPUCK_FRAME_WIDTH;
             in.frame_height = EPUCK_FRAME_HEIGHT;
         }
-        if (controllers->send(i, t_ms, &in, frame) != 0) return -1;
+        if (controllers->send(i, t_ms, &in, taken != NULL ? taken : frame) != 0) return -1;
     }
     return controllers->receive(n_robots, answers);
 }

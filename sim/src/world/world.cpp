@@ -35,10 +35,6 @@ constexpr double EPUCK_MASS_KG = 0.150;
 constexpr double EPUCK_WHEEL_FRICTION = 0.8;
 constexpr double EPUCK_MM_PER_STEP = 3.14159265358979323846 * 41.0 / 1000.0;
 constexpr double EPUCK_AXLE_MM = 53.0;
-/* Each e-puck wheel's speed is its command times a factor drawn anew every
- * step, uniform in 1 +- this: Enki's e-puck model (DifferentialWheeled's
- * noiseAmount 0.05, EPuck.cpp), slip and all (docs/world.md). */
-constexpr double EPUCK_WHEEL_NOISE = 0.05;
 constexpr double CONTACT_FRICTION = 0.3; /* body against body */
 constexpr int VELOCITY_ITERATIONS = 8, POSITION_ITERATIONS = 3;
 constexpr double PI = 3.14159265358979323846;
@@ -266,11 +262,12 @@ void world_epuck_wheels(world *w, int i, int16_t left, int16_t right) {
 
 void world_step(world *w, double t) {
     const bool epuck = w->spec->robot_kind == WORLD_ROBOT_EPUCK;
+    const double wheel_noise = world_wheel_noise(w->spec);
     for (Robot &r : w->robots) {
         if (epuck) {
             double factor[2] = {1.0, 1.0};
-            if (!w->spec->wheel_noise_off) /* drawn from the robot's own stream */
-                for (double &f : factor) f += EPUCK_WHEEL_NOISE * (2.0 * world_random_uniform(&r.rng) - 1.0);
+            if (wheel_noise > 0) /* drawn from the robot's own stream */
+                for (double &f : factor) f += wheel_noise * (2.0 * world_random_uniform(&r.rng) - 1.0);
             walk(r, epuck_twist(r.wheel_steps, factor));
             continue;
         }

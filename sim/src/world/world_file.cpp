@@ -124,7 +124,7 @@ world_spec Reader::load(const json &doc) {
     Node root{&doc, "", ""};
     const std::string example = "{\"arena\": {\"width_mm\": 600, \"height_mm\": 400}, \"robots\": [{\"count\": 10}]}";
     object(root, {"description", "robot", "arena", "seed", "duration_s", "sample_period_s", "fidelity", "ir",
-                  "clock_spread_pct", "light", "noise", "obstacles", "objects", "robots", "eeprom"},
+                  "clock_spread_pct", "light", "noise", "camera", "obstacles", "objects", "robots", "eeprom"},
            example);
     world_spec w{};
     w.ir_range_mm = -1;
@@ -152,6 +152,7 @@ world_spec Reader::load(const json &doc) {
     if (auto l = get(root, "light")) light(*l, w);
     if (auto e = get(root, "eeprom")) eeprom(*e, w);
     if (auto n = get(root, "noise")) noise(*n, w);
+    if (auto c = get(root, "camera")) camera(*c, w);
     auto list = [&](const char *key, const std::string &ex) -> std::optional<Node> {
         auto n = get(root, key);
         if (n && !n.value()->is_array()) fail(*n, "expected a list, found " + found(**n) + "; e.g. \"" + key + "\": [" + ex + "]");

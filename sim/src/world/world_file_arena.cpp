@@ -224,14 +224,4 @@ void Reader::light(const Node &n, world_spec &w) {
     }
 }
 
-void Reader::noise(const Node &n, world_spec &w) {
-    object(n, {"wheels"}, "\"noise\": {\"wheels\": false}");
-    if (auto s = get(n, "wheels")) {
-        if (!s.value()->is_boolean())
-            fail(*s, "expected true (an e-puck's wheels err as the robot's do, docs/world.md) or false (they turn "
-                     "exactly as commanded), found " + found(**s) + "; e.g. \"wheels\": false");
-        w.wheel_noise_off = !s.value()->get<bool>();
-    }
-}
-
 }  // namespace world_file

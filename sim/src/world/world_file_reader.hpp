@@ -170,6 +170,7 @@ class Reader {
     void movable_object(const Node &n); /* "objects": one that robots push */
     void light(const Node &n, world_spec &w);
     void noise(const Node &n, world_spec &w);
+    void camera(const Node &n, world_spec &w);
     std::optional<Conflict> round_conflict(P c, double r) const; /* an object's */
     int obstacle_hit(P c, double r, double &d) const;
     int object_hit(P c, double r, double &d) const;

@@ -23,6 +23,13 @@
 #define WORLD_MAX_OBJECTS 10000
 #define WORLD_MAX_ROBOTS 10000 /* = openswarm-sim's --robots limit */
 #define KILOBOT_RADIUS_MM 16.5 /* a Kilobot is a disc 33 mm across */
+/* The e-puck's camera and wheels by default (docs/world.md, "e-pucks in the world"). */
+#define WORLD_CAMERA_PERIOD_MS 250   /* 4 frames a second */
+#define WORLD_CAMERA_MAX_LAG_MS 1000
+/* Each e-puck wheel's speed is its command times a factor drawn anew every
+ * step, uniform in 1 +- this %: Enki's e-puck model (DifferentialWheeled's
+ * noiseAmount 0.05, EPuck.cpp), slip and all (docs/world.md). */
+#define WORLD_WHEEL_NOISE_PCT 5.0
 /* An e-puck is 74 mm across (docs/world.md gives the sources). */
 #define EPUCK_RADIUS_MM 37.0
 
@@ -86,6 +93,9 @@ typedef struct world_spec {
     double ambient_light_mv; /* the light sensor's input with no source near */
     int light_unshaded;      /* "light": {"shadow": false}: no battery shadow on the sensor */
     int wheel_noise_off;     /* "noise": {"wheels": false}: e-puck wheels turn exactly as commanded */
+    double wheel_noise_pct;  /* "noise": {"wheels_pct": P}: each wheel errs by +- P %; 0: the default */
+    int camera_period_ms;    /* "camera": {"frames_per_s": F}: 1000 / F; 0: the default */
+    int camera_lag_ms;       /* "camera": {"lag_ms": L}: a frame reaches the controller L ms after it is taken */
     world_robot *robots;
     int n_robots;
     char **firmware; /* ELF paths named in the file, relative to the file resolved */
@@ -114,6 +124,14 @@ extern "C" {
 /* Read and check path; on any mistake print "path:line:column: what is
  * wrong; what to do" on stderr and return -1 (nothing else is touched). */
 int world_spec_load(const char *path, world_spec *out);
+static inline int world_camera_period_ms(const world_spec *w) {
+    return w->camera_period_ms > 0 ? w->camera_period_ms : WORLD_CAMERA_PERIOD_MS;
+}
+/* Each e-puck wheel's speed error, +- this fraction of the command; 0: none. */
+static inline double world_wheel_noise(const world_spec *w) {
+    if (w->wheel_noise_off) return 0;
+    return (w->wheel_noise_pct > 0 ? w->wheel_noise_pct : WORLD_WHEEL_NOISE_PCT) / 100.0;
+}
 /* The radius of w's robots (a Kilobot's if w does not say). */
 static inline double world_robot_radius(const world_spec *w) {
     return w->robot_radius_mm > 0 ? w->robot_radius_mm : KILOBOT_RADIUS_MM;

@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+"""The e-puck camera's rate and lag ("camera": {"frames_per_s", "lag_ms"}),
+with the stand-in controller (epuck_double.py) logging every step's input:
+
+  by default a frame comes every 250 ms, from the first step on;
+  at 10 frames a second, every 100 ms;
+  with a lag, frames come lag_ms later and show what the camera saw then:
+  a robot spinning among objects sees the same sequence of centre pixels
+  as without the lag, each arriving lag_ms later;
+  rates and lags off the 10 ms step are refused at their place.
+
+check_epuck_camera.py SIM DOUBLE WORKDIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+SIM, DOUBLE, WORK = sys.argv[1:4]
+failures = []
+OBJECTS = [{"x_mm": 500 + dx, "y_mm": 400 + dy, "radius_mm": 30}
+           for dx, dy in ((150, 0), (0, 150), (-150, 0))]
+
+
+def run(name, camera, expect=0):
+    """A robot spinning on the spot among three objects, 3 s."""
+    path = os.path.join(WORK, name + ".json")
+    world = {"robot": "epuck", "arena": {"width_mm": 1000, "height_mm": 800}, "duration_s": 3,
+             "noise": {"wheels": False}, "objects": OBJECTS,
+             "robots": [{"poses": [{"x_mm": 500, "y_mm": 400, "heading_deg": 0}], "firmware": DOUBLE}]}
+    if camera is not None:
+        world["camera"] = camera
+    with open(path, "w") as f:
+        json.dump(world, f)
+    log = os.path.join(WORK, name + "-")
+    for old in (log + "0.log",):
+        if os.path.exists(old):
+            os.remove(old)
+    out = os.path.join(WORK, name)
+    shutil.rmtree(out, ignore_errors=True)
+    done = subprocess.run([SIM, "-q", "--world", path, "--out", out],
+                          env={**os.environ, "EPUCK_WHEELS": "150,-150", "EPUCK_LOG": log},
+                          capture_output=True, text=True, timeout=300)
+    if done.returncode != expect:
+        failures.append(f"{name}: exit {done.returncode}, expected {expect}:\n{done.stderr}")
+        return [], done.stderr
+    if expect != 0:
+        return [], done.stderr
+    with open(log + "0.log") as f:
+        rows = [line.split() for line in f]
+    # (time the frame arrived in ms, the centre pixel it showed); the log's
+    # time is the end of the step the input began.
+    return [(int(r[0]) - 10, r[2]) for r in rows if r[3] == "1"], done.stderr
+
+
+def check(name, ok, detail):
+    if not ok:
+        failures.append(f"{name}: {detail}")
+
+
+os.makedirs(WORK, exist_ok=True)
+
+plain, _ = run("default", None)
+times = [t for t, _ in plain]
+check("default rate", times[:4] == [0, 250, 500, 750] and len(times) == 12,
+      f"frames at {times[:6]}... ({len(times)} in 3 s), expected every 250 ms from 0 (12)")
+colours = {c for _, c in plain}
+check("spinning robot", len(colours) >= 2, f"saw only {colours}: the test needs a changing view")
+
+fast, _ = run("ten", {"frames_per_s": 10})
+times = [t for t, _ in fast]
+check("10 frames a second", times[:4] == [0, 100, 200, 300] and len(times) == 30,
+      f"frames at {times[:6]}... ({len(times)} in 3 s), expected every 100 ms (30)")
+
+late, _ = run("lag", {"lag_ms": 120})
+check("lag: arrival", [t for t, _ in late][:3] == [120, 370, 620],
+      f"frames at {[t for t, _ in late][:4]}, expected 120, 370, 620 (taken at 0, 250, 500)")
+check("lag: content", [c for _, c in late] == [c for _, c in plain][:len(late)] and len(late) == 12,
+      f"centre pixels {[c for _, c in late]} with the lag, {[c for _, c in plain]} without: the same sequence expected")
+
+longer, _ = run("long_lag", {"frames_per_s": 10, "lag_ms": 350})
+check("lag over several frames", [t for t, _ in longer][:3] == [350, 450, 550]
+      and [c for _, c in longer] == [c for _, c in fast][:len(longer)],
+      f"frames at {[t for t, _ in longer][:4]}: expected the frames taken at 0, 100, ... arriving 350 ms later")
+
+for name, camera, words in (("bad_rate", {"frames_per_s": 3}, "must divide 100"),
+                            ("bad_lag", {"lag_ms": 125}, "multiple of 10 ms"),
+                            ("bad_key", {"fps": 4}, "fps")):
+    _, err = run(name, camera, expect=2)
+    check(name, name + ".json:" in err and words in err, f"expected an error at its place saying {words!r}: {err}")
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print("camera: rate, lag and refusals as declared")
