@@ -46,6 +46,25 @@ TEST(WorldPaths, RefusesWhatTheWorldCannotHold) {
     EXPECT_NE(world_path_problem(w, "robots[x].count").find("a list item is [N]"), std::string::npos);
 }
 
+TEST(WorldPaths, EveryItemOfAList) {
+    json w = json::parse(R"({"objects": [{"x_mm": 1, "mass_g": 50}, {"x_mm": 2, "mass_g": 50}, {"x_mm": 3}]})");
+    ASSERT_EQ(world_path_problem(w, "objects[*].mass_g"), "");
+    set_world_path(w, "objects[*].mass_g", 25);
+    for (int k = 0; k < 3; k++) {
+        EXPECT_EQ(w["objects"][k]["mass_g"], 25) << k;
+        EXPECT_EQ(w["objects"][k]["x_mm"], k + 1) << "the rest of each item untouched";
+    }
+    json nested = json::parse(R"({"robots": [{"poses": [{"x_mm": 1}, {"x_mm": 2}]}, {"poses": [{"x_mm": 3}]}]})");
+    set_world_path(nested, "robots[*].poses[*].heading_deg", 90);
+    EXPECT_EQ(nested["robots"][1]["poses"][0]["heading_deg"], 90);
+    EXPECT_EQ(nested["robots"][0]["poses"][1]["heading_deg"], 90);
+    EXPECT_EQ(world_path_problem(json::parse(R"({"objects": []})"), "objects[*].mass_g"),
+              "the world's objects has no items for [*] to set (it is empty)");
+    EXPECT_EQ(world_path_problem(w, "arena[*].x"), "the world's arena has no items for [*] to set (it is not a list)");
+    EXPECT_NE(world_path_problem(w, "objects[*]").find("is not a place in a world"), std::string::npos)
+        << "a path ends in a key";
+}
+
 TEST(SweepStats, MeanSdAndStudentsInterval) {
     // 2, 4, 4, 4, 5, 5, 7, 9: mean 5, sample sd sqrt(32/7); t(7) = 2.365.
     Summary s = summarise({2, 4, 4, 4, 5, 5, 7, 9});

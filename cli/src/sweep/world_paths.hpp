@@ -1,6 +1,7 @@
 // A place in a world.json named as the world file's messages name it:
 // keys joined by '.', list items by [index] ("robots[0].count",
-// "ir.loss_percent"), for a sweep to set.
+// "ir.loss_percent"), every item of a list by [*] ("objects[*].mass_g"),
+// for a sweep to set.
 #pragma once
 
 #include <string>
