@@ -7,6 +7,8 @@ with the stand-in controller (epuck_double.py) logging every step's input:
   with a lag, frames come lag_ms later and show what the camera saw then:
   a robot spinning among objects sees the same sequence of centre pixels
   as without the lag, each arriving lag_ms later;
+  twice the field of view, an object straight ahead half as many pixels
+  wide; past the camera's range it shows as the wall behind;
   rates and lags off the 10 ms step are refused at their place.
 
 check_epuck_camera.py SIM DOUBLE WORKDIR
@@ -23,11 +25,11 @@ OBJECTS = [{"x_mm": 500 + dx, "y_mm": 400 + dy, "radius_mm": 30}
            for dx, dy in ((150, 0), (0, 150), (-150, 0))]
 
 
-def run(name, camera, expect=0):
+def run(name, camera, expect=0, objects=OBJECTS, wheels="150,-150", size=(1000, 800)):
     """A robot spinning on the spot among three objects, 3 s."""
     path = os.path.join(WORK, name + ".json")
-    world = {"robot": "epuck", "arena": {"width_mm": 1000, "height_mm": 800}, "duration_s": 3,
-             "noise": {"wheels": False}, "objects": OBJECTS,
+    world = {"robot": "epuck", "arena": {"width_mm": size[0], "height_mm": size[1]}, "duration_s": 3,
+             "noise": {"wheels": False}, "objects": objects,
              "robots": [{"poses": [{"x_mm": 500, "y_mm": 400, "heading_deg": 0}], "firmware": DOUBLE}]}
     if camera is not None:
         world["camera"] = camera
@@ -40,7 +42,7 @@ def run(name, camera, expect=0):
     out = os.path.join(WORK, name)
     shutil.rmtree(out, ignore_errors=True)
     done = subprocess.run([SIM, "-q", "--world", path, "--out", out],
-                          env={**os.environ, "EPUCK_WHEELS": "150,-150", "EPUCK_LOG": log},
+                          env={**os.environ, "EPUCK_WHEELS": wheels, "EPUCK_LOG": log},
                           capture_output=True, text=True, timeout=300)
     if done.returncode != expect:
         failures.append(f"{name}: exit {done.returncode}, expected {expect}:\n{done.stderr}")
@@ -51,7 +53,7 @@ def run(name, camera, expect=0):
         rows = [line.split() for line in f]
     # (time the frame arrived in ms, the centre pixel it showed); the log's
     # time is the end of the step the input began.
-    return [(int(r[0]) - 10, r[2]) for r in rows if r[3] == "1"], done.stderr
+    return [(int(r[0]) - 10, r[2], int(r[4])) for r in rows if r[3] == "1"], done.stderr
 
 
 def check(name, ok, detail):
@@ -62,27 +64,42 @@ def check(name, ok, detail):
 os.makedirs(WORK, exist_ok=True)
 
 plain, _ = run("default", None)
-times = [t for t, _ in plain]
+times = [t for t, *_ in plain]
 check("default rate", times[:4] == [0, 250, 500, 750] and len(times) == 12,
       f"frames at {times[:6]}... ({len(times)} in 3 s), expected every 250 ms from 0 (12)")
-colours = {c for _, c in plain}
+colours = {c for _, c, _ in plain}
 check("spinning robot", len(colours) >= 2, f"saw only {colours}: the test needs a changing view")
 
 fast, _ = run("ten", {"frames_per_s": 10})
-times = [t for t, _ in fast]
+times = [t for t, *_ in fast]
 check("10 frames a second", times[:4] == [0, 100, 200, 300] and len(times) == 30,
       f"frames at {times[:6]}... ({len(times)} in 3 s), expected every 100 ms (30)")
 
 late, _ = run("lag", {"lag_ms": 120})
-check("lag: arrival", [t for t, _ in late][:3] == [120, 370, 620],
-      f"frames at {[t for t, _ in late][:4]}, expected 120, 370, 620 (taken at 0, 250, 500)")
-check("lag: content", [c for _, c in late] == [c for _, c in plain][:len(late)] and len(late) == 12,
-      f"centre pixels {[c for _, c in late]} with the lag, {[c for _, c in plain]} without: the same sequence expected")
+check("lag: arrival", [t for t, *_ in late][:3] == [120, 370, 620],
+      f"frames at {[t for t, *_ in late][:4]}, expected 120, 370, 620 (taken at 0, 250, 500)")
+check("lag: content", [c for _, c, _ in late] == [c for _, c, _ in plain][:len(late)] and len(late) == 12,
+      f"centre pixels {[c for _, c, _ in late]} with the lag, {[c for _, c, _ in plain]} without: the same sequence expected")
 
 longer, _ = run("long_lag", {"frames_per_s": 10, "lag_ms": 350})
-check("lag over several frames", [t for t, _ in longer][:3] == [350, 450, 550]
-      and [c for _, c in longer] == [c for _, c in fast][:len(longer)],
-      f"frames at {[t for t, _ in longer][:4]}: expected the frames taken at 0, 100, ... arriving 350 ms later")
+check("lag over several frames", [t for t, *_ in longer][:3] == [350, 450, 550]
+      and [c for _, c, _ in longer] == [c for _, c, _ in fast][:len(longer)],
+      f"frames at {[t for t, *_ in longer][:4]}: expected the frames taken at 0, 100, ... arriving 350 ms later")
+
+# An object straight ahead, 300 mm off (30 mm radius: 11.4 deg wide), the robot still.
+AHEAD = [{"x_mm": 800, "y_mm": 400, "radius_mm": 30}]
+seen = {}
+for fov in (56, 112):
+    frames, _ = run(f"fov{fov}", {"fov_deg": fov}, objects=AHEAD, wheels="0,0")
+    seen[fov] = frames[0][2] if frames else 0
+check("field of view", seen[56] >= 6 and abs(seen[56] / max(seen[112], 1) - 2) <= 0.5,
+      f"the object {seen[56]} pixels wide at 56 deg, {seen[112]} at 112: expected about 8 and half as many")
+FAR = [{"x_mm": 1500, "y_mm": 400, "radius_mm": 30}]  # 1000 mm ahead
+for name, range_mm, red in (("in_range", 1200, True), ("out_of_range", 800, False)):
+    frames, _ = run(name, {"range_mm": range_mm}, objects=FAR, wheels="0,0", size=(2000, 800))
+    centre = frames[0][1] if frames else None
+    check(name, centre == ("0xf800" if red else "0xffff"),
+          f"an object 1000 mm ahead, range {range_mm} mm: centre {centre}, expected {'red' if red else 'the white wall'}")
 
 for name, camera, words in (("bad_rate", {"frames_per_s": 3}, "must divide 100"),
                             ("bad_lag", {"lag_ms": 125}, "multiple of 10 ms"),

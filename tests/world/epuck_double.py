@@ -7,8 +7,9 @@ board does, and behaves as the environment says:
   EPUCK_DIE_AT=MS    exit 5 at that time (a controller that crashes)
   EPUCK_GARBAGE=1    answer with a bad record
   EPUCK_LOG=PREFIX   append what it senses to PREFIX<robot's order>.log:
-                     "time front_reflected centre_pixel frame" per step
-                     (frame: 1 when a frame came with this step's input)
+                     "time front_reflected centre_pixel frame red" per step
+                     (frame: 1 when a frame came with this step's input;
+                     red: the last frame's red pixels in its middle row)
 It shows what the camera's centre sees on its RGB LED: red 3 for red,
 green 3 for green, all 3 for white, off for dark."""
 import os
@@ -32,7 +33,7 @@ def main():
             k += 1
         log = open(f"{os.environ['EPUCK_LOG']}{k}.log", "w")
     magic = 0x12345678 if os.environ.get("EPUCK_GARBAGE") else MAGIC
-    t, rgb, centre = 0, 0, -1
+    t, rgb, centre, red = 0, 0, -1, 0
     out.write(OUT.pack(magic, 0, 0, 0, 0, 0, 0, 0, 0))
     out.flush()
     while True:
@@ -46,12 +47,14 @@ def main():
             at = 2 * ((h // 2) * w + w // 2)
             centre = struct.unpack("<H", pixels[at:at + 2])[0]
             rgb = COLOUR.get(centre, 0)
+            row = struct.unpack(f"<{w}H", pixels[2 * (h // 2) * w:2 * (h // 2 + 1) * w])
+            red = sum(1 for p in row if p == 0xF800)
         t += advance
         if die_at >= 0 and t >= die_at:
             sys.exit(5)
         if log and advance:
             front = max(off[0] - pulsed[0], off[7] - pulsed[7])
-            log.write(f"{t} {front} {centre:#06x} {1 if w else 0}\n")
+            log.write(f"{t} {front} {centre:#06x} {1 if w else 0} {red}\n")
         out.write(OUT.pack(MAGIC, t, left, right, 0, 0, 0, rgb, 0))
         out.flush()
         if flags & 2:

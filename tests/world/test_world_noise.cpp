@@ -53,9 +53,14 @@ TEST_F(WorldFile, CameraRateAndLag) {
     world_spec w{};
     ASSERT_EQ(load(epuck + R"("robots": [{"count": 1}]})", &w), "");
     EXPECT_EQ(world_camera_period_ms(&w), 250) << "4 frames a second by default";
+    EXPECT_EQ(world_camera_fov_deg(&w), 56.0);
+    EXPECT_EQ(world_camera_range_mm(&w), 1500.0);
     EXPECT_EQ(w.camera_lag_ms, 0);
     world_spec_free(&w);
-    ASSERT_EQ(load(epuck + R"("camera": {"frames_per_s": 10, "lag_ms": 250}, "robots": [{"count": 1}]})", &w), "");
+    ASSERT_EQ(load(epuck + R"("camera": {"frames_per_s": 10, "lag_ms": 250, "fov_deg": 30, "range_mm": 800},
+"robots": [{"count": 1}]})", &w), "");
+    EXPECT_EQ(world_camera_fov_deg(&w), 30.0);
+    EXPECT_EQ(world_camera_range_mm(&w), 800.0);
     EXPECT_EQ(world_camera_period_ms(&w), 100);
     EXPECT_EQ(w.camera_lag_ms, 250);
     world_spec_free(&w);

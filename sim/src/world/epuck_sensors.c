@@ -32,10 +32,6 @@ static const response_point RESPONSE[] = {
 #define AMBIENT_COUNTS 3800.0
 #define AMBIENT_NOISE_COUNTS 8.0
 #define ADC_MAX 4095.0
-/* The camera's horizontal field of view, degrees, and how far it tells a
- * robot or an object from the white walls behind (docs/world.md). */
-#define CAMERA_FOV_DEG 56.0
-#define CAMERA_RANGE_MM 1500.0
 #define GREEN565 0x07E0u
 #define RED565 0xF800u
 #define WHITE565 0xFFFFu
@@ -81,10 +77,10 @@ void epuck_proximity_read(const world *w, int robot, uint16_t off[EPUCK_SENSOR_C
     }
 }
 
-static uint16_t colour_of(world_hit hit) {
+static uint16_t colour_of(world_hit hit, double range_mm) {
     /* Farther, a robot or an object is too small in the frame to tell:
      * the walls behind it show. */
-    if (hit.kind != WORLD_HIT_WALL && hit.distance_mm > CAMERA_RANGE_MM) return WHITE565;
+    if (hit.kind != WORLD_HIT_WALL && hit.distance_mm > range_mm) return WHITE565;
     switch (hit.kind) {
     case WORLD_HIT_ROBOT: return GREEN565;
     case WORLD_HIT_OBJECT: return RED565;
@@ -99,10 +95,13 @@ void epuck_camera_render(const world *w, int robot,
     world_robot_pose(w, robot, &x, &y, &heading);
     const world_spec *s = world_spec_of(w);
     double reach = hypot(s->width_mm, s->height_mm);
+    /* The field of view and the range: docs/world.md, "camera" (the world
+     * file may set both). */
+    double fov_deg = world_camera_fov_deg(s), range_mm = world_camera_range_mm(s);
     for (int col = 0; col < EPUCK_FRAME_WIDTH; col++) {
         /* Column 0 is the image's left: counter-clockwise of the heading. */
-        double offset = CAMERA_FOV_DEG * (0.5 - (col + 0.5) / EPUCK_FRAME_WIDTH);
-        uint16_t c = colour_of(world_ray(w, robot, x, y, heading + offset, reach));
+        double offset = fov_deg * (0.5 - (col + 0.5) / EPUCK_FRAME_WIDTH);
+        uint16_t c = colour_of(world_ray(w, robot, x, y, heading + offset, reach), range_mm);
         for (int row = 0; row < EPUCK_FRAME_HEIGHT; row++) pixels[row * EPUCK_FRAME_WIDTH + col] = c;
     }
 }

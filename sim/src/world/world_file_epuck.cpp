@@ -1,6 +1,6 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* The e-puck's sensing and noise in a world file: "camera" (how often a
- * frame comes and how late) and "noise" (the wheels' speed error). Both
+ * frame comes and how late, how wide it sees and how far) and "noise" (the wheels' speed error). Both
  * are what the case study's sensitivity study sweeps (docs/case-study.md). */
 #include <string>
 
@@ -10,7 +10,8 @@ namespace world_file {
 
 namespace {
 
-const std::string camera_example = "\"camera\": {\"frames_per_s\": 4, \"lag_ms\": 0}";
+const std::string camera_example =
+    "\"camera\": {\"frames_per_s\": 4, \"lag_ms\": 0, \"fov_deg\": 56, \"range_mm\": 1500}";
 const std::string noise_example = "\"noise\": {\"wheels\": false}";
 
 }  // namespace
@@ -19,7 +20,7 @@ const std::string noise_example = "\"noise\": {\"wheels\": false}";
 void Reader::camera(const Node &n, world_spec &w) {
     if (kind_ != WORLD_ROBOT_EPUCK)
         fail(n, "a Kilobot has no camera; \"camera\" is for e-puck worlds (\"robot\": \"epuck\"): remove it");
-    object(n, {"frames_per_s", "lag_ms"}, camera_example);
+    object(n, {"frames_per_s", "lag_ms", "fov_deg", "range_mm"}, camera_example);
     if (auto f = get(n, "frames_per_s")) {
         long fps = whole(*f, 1, 100, "frames a second", "\"frames_per_s\": 4");
         if (100 % fps != 0)
@@ -35,6 +36,12 @@ void Reader::camera(const Node &n, world_spec &w) {
                          std::to_string(lag) + "; e.g. \"lag_ms\": " + std::to_string(lag / 10 * 10));
         w.camera_lag_ms = (int)lag;
     }
+    if (auto f = get(n, "fov_deg"))
+        w.camera_fov_deg = number(*f, 5, 180, false, "the camera's horizontal field of view in degrees", "\"fov_deg\": 56");
+    if (auto r = get(n, "range_mm"))
+        w.camera_range_mm = number(*r, 10, 100000, false,
+                                   "mm within which the camera tells a robot or an object from the wall behind",
+                                   "\"range_mm\": 1500");
 }
 
 void Reader::noise(const Node &n, world_spec &w) {

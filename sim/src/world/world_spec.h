@@ -26,6 +26,8 @@
 /* The e-puck's camera and wheels by default (docs/world.md, "e-pucks in the world"). */
 #define WORLD_CAMERA_PERIOD_MS 250   /* 4 frames a second */
 #define WORLD_CAMERA_MAX_LAG_MS 1000
+#define WORLD_CAMERA_FOV_DEG 56.0     /* horizontal field of view */
+#define WORLD_CAMERA_RANGE_MM 1500.0  /* a robot or an object farther shows as the wall behind */
 /* Each e-puck wheel's speed is its command times a factor drawn anew every
  * step, uniform in 1 +- this %: Enki's e-puck model (DifferentialWheeled's
  * noiseAmount 0.05, EPuck.cpp), slip and all (docs/world.md). */
@@ -96,6 +98,8 @@ typedef struct world_spec {
     double wheel_noise_pct;  /* "noise": {"wheels_pct": P}: each wheel errs by +- P %; 0: the default */
     int camera_period_ms;    /* "camera": {"frames_per_s": F}: 1000 / F; 0: the default */
     int camera_lag_ms;       /* "camera": {"lag_ms": L}: a frame reaches the controller L ms after it is taken */
+    double camera_fov_deg;   /* "camera": {"fov_deg": D}; 0: the default */
+    double camera_range_mm;  /* "camera": {"range_mm": R}; 0: the default */
     world_robot *robots;
     int n_robots;
     char **firmware; /* ELF paths named in the file, relative to the file resolved */
@@ -126,6 +130,12 @@ extern "C" {
 int world_spec_load(const char *path, world_spec *out);
 static inline int world_camera_period_ms(const world_spec *w) {
     return w->camera_period_ms > 0 ? w->camera_period_ms : WORLD_CAMERA_PERIOD_MS;
+}
+static inline double world_camera_fov_deg(const world_spec *w) {
+    return w->camera_fov_deg > 0 ? w->camera_fov_deg : WORLD_CAMERA_FOV_DEG;
+}
+static inline double world_camera_range_mm(const world_spec *w) {
+    return w->camera_range_mm > 0 ? w->camera_range_mm : WORLD_CAMERA_RANGE_MM;
 }
 /* Each e-puck wheel's speed error, +- this fraction of the command; 0: none. */
 static inline double world_wheel_noise(const world_spec *w) {
