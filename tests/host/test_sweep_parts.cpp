@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../../cli/src/sweep/sweep_lines.hpp"
 #include "../../cli/src/sweep/sweep_stats.hpp"
 #include "../../cli/src/sweep/world_paths.hpp"
 
@@ -63,6 +64,24 @@ TEST(WorldPaths, EveryItemOfAList) {
     EXPECT_EQ(world_path_problem(w, "arena[*].x"), "the world's arena has no items for [*] to set (it is not a list)");
     EXPECT_NE(world_path_problem(w, "objects[*]").find("is not a place in a world"), std::string::npos)
         << "a path ends in a key";
+}
+
+TEST(SweepLines, AGridJoinsThePointsThatAgreeOnTheOthers) {
+    // a in {1, 2} x b in {x, y}: for a, a line for b = x and one for b = y.
+    std::vector<std::vector<json>> grid = {{1, "x"}, {1, "y"}, {2, "x"}, {2, "y"}};
+    EXPECT_EQ(parameter_lines(grid, 0), (std::vector<std::vector<size_t>>{{0, 2}, {1, 3}}));
+    EXPECT_EQ(parameter_lines(grid, 1), (std::vector<std::vector<size_t>>{{0, 1}, {2, 3}}));
+}
+
+TEST(SweepLines, OneAtATimeLeavesOutTheOtherParametersPoints) {
+    // Base (1, 10); a varied to 2 and 3, b to 20: for a, the line of the
+    // base and a's points only, not b's point on its own.
+    std::vector<std::vector<json>> oat = {{1, 10}, {2, 10}, {3, 10}, {1, 20}};
+    EXPECT_EQ(parameter_lines(oat, 0), (std::vector<std::vector<size_t>>{{0, 1, 2}}));
+    EXPECT_EQ(parameter_lines(oat, 1), (std::vector<std::vector<size_t>>{{0, 3}}));
+    // Nothing varies with another held: every point stays, each its own line.
+    std::vector<std::vector<json>> diagonal = {{1, 10}, {2, 20}};
+    EXPECT_EQ(parameter_lines(diagonal, 0), (std::vector<std::vector<size_t>>{{0}, {1}}));
 }
 
 TEST(SweepStats, MeanSdAndStudentsInterval) {

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "../plot_parts.hpp"
+#include "sweep_lines.hpp"
 #include "sweep_stats.hpp"
 
 namespace fs = std::filesystem;
@@ -100,7 +101,9 @@ void legend(cairo_t *cr, double x, double y, size_t entry, size_t count, const d
         plot_text(cr, x, y, "... and " + std::to_string(count - LEGEND_MAX) + " more", 11);
         return;
     }
-    plot_legend_entry(cr, x, y, rgb, 20, text, 11);
+    // Clipped to its panel's column: long labels ran into the next panel.
+    constexpr size_t FITS = 72;
+    plot_legend_entry(cr, x, y, rgb, 20, text.size() > FITS ? text.substr(0, FITS - 3) + "..." : text, 11);
 }
 
 void time_panel(cairo_t *cr, const Sweep &s, const std::map<size_t, PointCurve> &curves, Panel p) {
@@ -130,6 +133,13 @@ void time_panel(cairo_t *cr, const Sweep &s, const std::map<size_t, PointCurve> 
     }
 }
 
+// Whether parameter k takes more than one value over the lines.
+bool differs(const Sweep &s, const std::vector<std::vector<size_t>> &lines, size_t k) {
+    for (const std::vector<size_t> &line : lines)
+        if (s.points[line[0]][k] != s.points[lines[0][0]][k]) return true;
+    return false;
+}
+
 // The end values against parameter `which`: numbers on a scale, anything
 // else in the order the sweep lists it.
 void parameter_panel(cairo_t *cr, const Sweep &s, const std::map<size_t, PointCurve> &curves, size_t which,
@@ -151,15 +161,10 @@ void parameter_panel(cairo_t *cr, const Sweep &s, const std::map<size_t, PointCu
     else
         for (const json &v : values)
             plot_text(cr, p.px(x_of(v)), p.y + p.h + 16, v.is_string() ? v.get<std::string>() : v.dump(), 11, true);
-    // A line for each setting of the other parameters.
-    std::map<std::vector<json>, std::vector<size_t>> lines;
-    for (size_t point = 0; point < s.points.size(); point++) {
-        std::vector<json> others = s.points[point];
-        others.erase(others.begin() + (long)which);
-        lines[others].push_back(point);
-    }
+    // A line for each setting of the other parameters (sweep_lines.hpp).
+    std::vector<std::vector<size_t>> lines = parameter_lines(s.points, which);
     size_t entry = 0;
-    for (auto &[others, points] : lines) {
+    for (std::vector<size_t> &points : lines) {
         const double *rgb = plot_colour(entry);
         std::sort(points.begin(), points.end(),
                   [&](size_t a, size_t b) { return x_of(s.points[a][which]) < x_of(s.points[b][which]); });
@@ -184,9 +189,10 @@ void parameter_panel(cairo_t *cr, const Sweep &s, const std::map<size_t, PointCu
             cairo_arc(cr, x, p.py(c->second.end.mean), 3.5, 0, 2 * M_PI);
             cairo_fill(cr);
         }
-        std::string label;
-        for (size_t k = 0, o = 0; k < s.parameters.size(); k++)
-            if (k != which) label += (label.empty() ? "" : ", ") + s.parameters[k].path + "=" + others[o++].dump();
+        std::string label; // the other parameters that tell this line from the others
+        for (size_t k = 0; k < s.parameters.size(); k++)
+            if (k != which && differs(s, lines, k))
+                label += (label.empty() ? "" : ", ") + s.parameters[k].path + "=" + s.points[points[0]][k].dump();
         legend(cr, p.x, p.y + p.h + 60, entry++, lines.size(), rgb, label.empty() ? "all points" : label);
     }
 }
