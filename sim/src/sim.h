@@ -114,6 +114,10 @@ enum {
 /* options.c */
 int parse_options(int argc, char **argv, options *o);
 int options_check_robots(options *o);
+/* --help's text (options_usage.c). */
+void options_usage(FILE *out);
+/* -1 after saying which output would overwrite which input (options_outputs.c). */
+int outputs_apart_from_inputs(const options *o);
 const char *firmware_of(const options *o, int index);
 
 /* A robot's clock error as a fraction of --clock-spread (main.c), -1..1. */
