@@ -36,6 +36,7 @@ int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &
     r.image = built->image;
     r.seconds = seconds;
     r.gdb_port = o.gdb;
+    r.strict = o.strict;
     std::printf("Running %s in QEMU (netduinoplus2) for %g s\n", r.image.filename().c_str(),
                 r.seconds);
     return run_in_qemu(r);
