@@ -264,6 +264,15 @@ std::string app_source(const AppConfig &c) {
             s << "    if (st == SYS_OK) sim_thread_name(pid, PSTR(\"" << t.entry << "\"));\n";
     }
     s << "    return st;\n}\n";
+    if (!c.events.empty()) {
+        // The simulator's warnings name an event by these (sim/src/board/
+        // event_names.c): a section no robot loads, so no flash is spent.
+        s << "\n/* The events' names, in the order of their ids, for the simulator\n"
+             " * (XC16's assembler is not GNU's: no names on the dsPIC). */\n#ifndef __XC16__\n"
+             "__asm__(\".pushsection .openswarm.events,\\\"\\\",%progbits\\n\"\n";
+        for (const auto &e : c.events) s << "        \".asciz \\\"EV_" << upper(e.name) << "\\\"\\n\"\n";
+        s << "        \".popsection\");\n#endif\n";
+    }
     return s.str();
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "commands/commands.hpp"
+#include "kernel_losses.h"
 #include "paths.hpp"
 #include "process.hpp"
 
@@ -64,8 +65,20 @@ static bool decode_record(const std::string &line, QemuRecord &record) {
     return true;
 }
 
+// The kernel's counters (sys_stats, in order) as warnings with the fix,
+// an e-puck's.
+static std::vector<std::string> loss_warnings(const std::vector<int> &counters) {
+    std::vector<std::string> warnings;
+    for (const kernel_loss &l : kernel_losses) {
+        if (l.index >= counters.size() || counters[l.index] <= 0) continue;
+        warnings.push_back(std::to_string(counters[l.index]) + " " + l.what + l.what_on[KERNEL_LOSS_EPUCK] +
+                           "; " + l.fix + l.fix_on[KERNEL_LOSS_EPUCK]);
+    }
+    return warnings;
+}
+
 QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::string &)> &on_line) {
-    QemuOutcome outcome{0, 0, false, false, {}, {}};
+    QemuOutcome outcome{0, 0, false, false, {}, {}, {}};
     auto started = std::chrono::steady_clock::now();
     outcome.status = run_program_lines(
         qemu_command(r),
@@ -77,6 +90,10 @@ QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::strin
                 if (record.name == "stop") {
                     outcome.reached_end = true;
                     return; // not something the robot did
+                }
+                if (record.name == "losses") {
+                    outcome.warnings = loss_warnings(record.values);
+                    return; // said at the end, as warnings
                 }
                 outcome.records.push_back(record);
             } else {
@@ -109,7 +126,13 @@ std::string qemu_failure(const QemuRun &r, const QemuOutcome &outcome) {
         return std::string("the run ended before ") + seconds +
                " s of simulated time: main returned 0 (a firmware should not return), or the "
                "debugger ended it";
+    if (r.strict && !outcome.warnings.empty())
+        return "the run ended with warnings (above: each with its fix), and --strict makes them errors";
     return "";
+}
+
+void show_warnings(const QemuOutcome &outcome) {
+    for (const auto &warning : outcome.warnings) std::fprintf(stderr, "openswarm: warning: %s\n", warning.c_str());
 }
 
 int run_in_qemu(const QemuRun &r) {
@@ -126,6 +149,7 @@ int run_in_qemu(const QemuRun &r) {
         std::printf("%s\n", line.c_str());
         std::fflush(stdout);
     });
+    show_warnings(outcome);
     if (outcome.status == 0 && outcome.reached_end)
         std::printf("openswarm: ran %.3f s of simulated time in QEMU in %.1f s, %.1fx real time\n",
                     r.seconds, outcome.wall_seconds,

@@ -14,6 +14,7 @@ struct QemuRun {
     std::filesystem::path image;
     double seconds = 10;
     int gdb_port = 0; // 0: no debugger; else QEMU waits for gdb-multiarch there
+    bool strict = false; // the warnings at the end fail the run
 };
 
 // The command that runs it (for the user to see and for tests).
@@ -38,14 +39,20 @@ struct QemuOutcome {
     bool reached_end;    // the board's "stop" record: the run lasted its time
     std::vector<QemuRecord> records;
     std::vector<std::string> console; // the lines that were not records
+    // What the kernel lost or was refused (the board's "losses" record at
+    // the end), each with its fix, as openswarm-sim warns of a Kilobot's.
+    std::vector<std::string> warnings;
 };
 
 // Runs it, each console line (records shown as trace lines) to on_line.
 QemuOutcome run_qemu(const QemuRun &r, const std::function<void(const std::string &)> &on_line);
 
 // Why the run failed, for a person (empty if it did not): a hang, a
-// fault, a status.
+// fault, a status; warnings with r.strict.
 std::string qemu_failure(const QemuRun &r, const QemuOutcome &outcome);
+
+// The outcome's warnings on standard error ("openswarm: warning: ...").
+void show_warnings(const QemuOutcome &outcome);
 
 // Runs it with its console on our standard output and reports how it
 // ended; the tool's exit code.

@@ -146,8 +146,9 @@ function(openswarm_add_firmware name)
     # <name>.hex is what KiloGUI uploads: flash only, without the .mmcu
     # record the simulator reads (at 0x910000 it would make no sense to a
     # programmer) and without EEPROM, which holds the robot's calibration.
+    # No avr-size here: its percentage is of the chip's 32 KB, and the
+    # tool's, of the 28 KB below the bootloader, followed on the same screen.
     add_custom_command(TARGET ${name} POST_BUILD
-      COMMAND ${CMAKE_SIZE} --format=avr --mcu=${OPENSWARM_MCU} $<TARGET_FILE:${name}>
       COMMAND ${CMAKE_OBJCOPY} -O ihex -j .text -j .data $<TARGET_FILE:${name}>
               $<TARGET_FILE_DIR:${name}>/${name}.hex)
   elseif(F_PORT STREQUAL "epuck2")

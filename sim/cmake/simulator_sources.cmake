@@ -11,11 +11,11 @@ set(REPO_ROOT ${SIM_ROOT}/..)
 # robots are and how they move), output (what a run in a world leaves
 # behind), tools (debugging and measuring).
 set(SIMULATOR_SOURCES)
-foreach(piece options progress written interrupt inputs lockstep window_workers
+foreach(piece options options_usage options_outputs progress warning_groups written interrupt inputs lockstep window_workers
     board/firmware board/console board/robot_trace board/kilobot_board board/adc_trigger
     board/power_down board/analog_noise board/main_stack board/interrupt_watch
     board/firmware_symbols board/elf_check board/ihex_check board/power_cycle
-    board/firmware_counters board/firmware_warnings board/handler_watch board/code_place board/wide_memories board/thread_stacks board/stack_watch board/register_store_watch
+    board/firmware_counters board/firmware_warnings board/handler_watch board/event_names board/code_place board/wide_memories board/thread_stacks board/stack_watch board/register_store_watch
     board/invalid_opcode
     air/ir_channel air/ir_distance_error air/ir_frame air/ir_log air/overhead_controller air/ir_faults
     faults/fault_plan faults/fault_log

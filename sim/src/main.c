@@ -107,11 +107,10 @@ static void report_crash(const robot *r, const options *o, double t) {
 static int report(int n, const options *o) {
     int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, memory_broken = 0;
     unsigned faults = 0;
-    int warnings = 0;
     for (int i = 0; i < n; i++) {
         robot *r = &robots[i];
         faults += r->console.faults;
-        warnings += firmware_warnings_report(r);
+        firmware_warnings_report(r);
         hung |= r->hung;
         /* a stack past its room, a store into the registers: told when it happened */
         memory_broken |= main_stack_report(r, o->main_stack);
@@ -138,6 +137,7 @@ static int report(int n, const options *o) {
                         r->console.prefix, o->seconds, (unsigned)r->avr->pc);
         }
     }
+    int warnings = warnings_print();
     if (crashed) return EXIT_CRASH;
     if (booted) return EXIT_BOOTLOADER;
     if (hung) return EXIT_HANG;

@@ -21,104 +21,6 @@ typedef struct placement_options {
     int robots_given;
 } placement_options;
 
-static void usage(FILE *out) {
-    fprintf(out,
-            "usage: openswarm-sim [options] FIRMWARE.elf [FIRMWARE.elf ...]\n"
-            "Run robots' AVR firmware in simavr, cycle-exactly, and print their consoles.\n"
-            "Robot k runs the k-th FIRMWARE.elf; the last one also runs on the robots after it.\n\n"
-            "  -t, --time SECONDS   simulated time to run (default 10)\n"
-            "  -n, --robots N       run N robots in lockstep (default: one per FIRMWARE.elf)\n"
-            "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
-            "      --allow-faults   a kernel fault the firmware reports does not fail the run\n"
-            "                       (for tests that provoke one on purpose)\n"
-            "      --strict         the warnings at the end (a refused subscription, a lost\n"
-            "                       event, printing from an interrupt) fail the run, exit 8\n"
-            "      --mask-limit MS  a firmware running with interrupts masked for longer fails\n"
-            "                       the run, exit 7 (default 1000; 0: never)\n"
-            "      --main-stack     print each robot's main stack's worst use at the end\n"
-            "      --timestamps     begin every console and serial line with its time\n"
-            "                       (main, interrupts and event handlers run there)\n"
-            "  -q, --quiet          do not print the consoles\n"
-            "      --trace          print the robots' LED colour and motor duty changes\n"
-            "      --trace-csv FILE write them as CSV: time_s,cycle,robot,device,a,b,c\n"
-            "      --console-csv FILE  write every robot's console and serial lines as CSV:\n"
-            "                       time_s,robot,line (also with --quiet; `metric NAME VALUE`\n"
-            "                       lines are what `openswarm metrics` reads, docs/experiments.md)\n"
-            "      --uid N          the first robot's id (EEPROM 0xB0), 0..65535; robot k gets\n"
-            "                       N + k (default with several robots: 1, 2, ...)\n"
-            "      --calibration TL,TR,SL,SR  motor duties to turn left, turn right and go\n"
-            "                       straight (left and right motor), 0..255 each\n"
-            "  -d, --distance MM    distance between every two robots (default 50 mm)\n"
-            "      --line SPACING   robots on a line, SPACING mm (33 or more) apart\n"
-            "      --positions FILE where each robot stands: one \"x y\" line in mm per robot,\n"
-            "                       '#' starts a comment; --robots defaults to the count\n"
-            "      --ir-range MM    a robot hears senders at most MM away (default 100,\n"
-            "                       a Kilobot's IR range), 10..1000\n"
-            "      --ir-loss PCT    a frame is lost to a receiver at the --ir-range's edge with\n"
-            "                       PCT percent chance, less closer by (distance/range)^2;\n"
-            "                       whole frames, a fixed sequence: every run loses the same\n"
-            "      --clock-spread PCT  the robots' clocks differ: each runs fast or slow by up\n"
-            "                       to PCT percent (0..5), spread evenly over the robots in a\n"
-            "                       fixed order; 0 (default): all exactly at the ELF's clock\n"
-            "      --faults SPEC    inject faults, a comma-separated list: reset=PER_HOUR and\n"
-            "                       brownout=PER_HOUR (each robot, at random times),\n"
-            "                       brownout-ms=MS (power off, default 50), flip=PCT (each\n"
-            "                       slot of a frame at each receiver: a pulse lost or added),\n"
-            "                       cut=PCT (a frame at a receiver cut short), blank=ROBOTS\n"
-            "                       (that many robots' EEPROM calibration blank), drift=PCT\n"
-            "                       (each robot's clock up to PCT percent fast or slow), seed=N;\n"
-            "                       reset:ROBOT@SECONDS, brownout:ROBOT@SECONDS, blank:ROBOT,\n"
-            "                       drift:ROBOT=PCT or drift:ROBOT=PPMppm (ROBOT: the index);\n"
-            "                       e.g. --faults reset=2,flip=0.1,drift:3=2,seed=7\n"
-            "      --fault-log FILE one line per injected fault (default: stderr)\n"
-            "      --counters PERIOD  print every robot's kernel and IR counters, main and\n"
-            "                       thread stacks' use, read from its RAM, every PERIOD s of\n"
-            "                       simulated time and at the end (0: at the end only)\n"
-            "      --ir-log         print every frame a robot sends, decoded from its IR\n"
-            "                       flashes by the Kilobot wire format: bytes, CRC, timing\n"
-            "      --ohc MSG@SECONDS  the overhead controller broadcasts a system message\n"
-            "                       (run, sleep, wakeup, reset, voltage, charge, boot;\n"
-            "                       calibration: calib-uid:UID, calib-left:DUTY,\n"
-            "                       calib-right:DUTY, calib-straight:LEFT,RIGHT, calib-save;\n"
-            "                       readuid:BIT), e.g. --ohc calib-left:70@1; repeatable.\n"
-            "                       OpenSwarm firmware starts as if it had just sent run;\n"
-            "                       classic-library firmware waits, idle, for --ohc run@T.\n"
-            "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
-            "      --voltage MV     battery sense (ADC6) input, millivolts\n"
-            "      --temperature MV internal temperature sensor input, millivolts\n"
-            "      --charging       the robots stand on their charger (it pulls PD0 low)\n"
-            "      --gdb PORT       wait for avr-gdb on PORT (one robot)\n"
-            "      --vcd FILE       record LED pins and motor PWM for GTKWave (one robot)\n"
-            "  -m, --marks          print 'mark VALUE CYCLE' when the firmware changes GPIOR2\n"
-            "  -i, --watch-irq N    print 'irq N CYCLE' when interrupt vector N is raised\n"
-            "      --profile        print where the CPU cycles went, by function (all robots)\n"
-            "      --world FILE     robots move in the world FILE describes (docs/world.md):\n"
-            "                       arena, obstacles, objects, lights and the robots, which it\n"
-            "                       places; FIRMWARE.elf runs on robots the file names none for\n"
-            "      --out DIR        with --world: write trajectories.csv, objects.csv,\n"
-            "                       final.png and viewer.html into DIR\n"
-            "      --video          with --out: also video.mp4 (needs ffmpeg)\n"
-            "      --video-fps F    the video's frames a second, 1..100 (default 25)\n"
-            "      --video-speed X  simulated seconds a second of video, 0.01..10000 (default 1)\n"
-            "      --ids            with --out: number the robots in final.png and the video\n"
-            "      --threads N      share the robots among N threads (default: one per core,\n"
-            "                       at least 16 robots each); any N gives the same run\n"
-            "      --progress       a status line on stderr while it runs (default: when\n"
-            "                       stderr is a terminal); --no-progress never\n"
-            "  -h, --help           this text\n\n"
-            "Exit status: the firmware's own status if it stopped (the first non-zero one\n"
-            "of several robots), 0 if the time ran out (4 with --expect-stop), 2 bad usage\n"
-            "or ELF or an output that could not be written, 3 a firmware crashed, 5 a robot jumped to the bootloader (--ohc boot),\n"
-            "6 a firmware reported a kernel fault (a stack overflow, a critical section\n"
-            "left open: printed when it happens) or its stack pointer went below the\n"
-            "stack it is on (a thread's past its guard, the main stack into the RAM\n"
-            "below it) or it stored through a pointer into the CPU's registers (a NULL\n"
-            "pointer), unless --allow-faults, 7 a firmware hung with interrupts masked,\n"
-            "8 warnings at the end with --strict,\n"
-            "130 stopped by SIGINT (Ctrl-C), 143 by SIGTERM: the outputs then hold the run\n"
-            "up to that time (a second Ctrl-C ends it at once).\n");
-}
-
 /* A whole number in [lo, hi], or -1 after printing what was expected. */
 static long number(const char *option, const char *text, long lo, long hi, const char *example) {
     char *end;
@@ -366,8 +268,8 @@ int parse_options(int argc, char **argv, options *o) {
             }
             if (ohc_parse(optarg, &o->ohc[o->n_ohc++]) != 0) return -1;
             break;
-        case 'h': usage(stdout); exit(0);
-        default: usage(stderr); return -1;
+        case 'h': options_usage(stdout); exit(0);
+        default: options_usage(stderr); return -1;
         }
     }
     if (inputs_are_regular(argc - optind, argv + optind, &place, o) != 0) return -1;
@@ -385,77 +287,6 @@ int parse_options(int argc, char **argv, options *o) {
     }
     if (place_robots(&place, o) != 0) return -1;
     return options_check_robots(o);
-}
-
-/* An input the run reads, which no output may be. */
-typedef struct input_file {
-    const char *path;
-    char what[64]; /* "the world file", "robot 3's firmware" */
-    struct stat st;
-} input_file;
-
-/* The first input that is the same file as path (an existing one), or NULL. */
-static const input_file *input_at(const input_file *inputs, int n, const char *path) {
-    struct stat st;
-    if (stat(path, &st) != 0) return NULL; /* not there yet: no input */
-    for (int k = 0; k < n; k++)
-        if (inputs[k].st.st_dev == st.st_dev && inputs[k].st.st_ino == st.st_ino) return &inputs[k];
-    return NULL;
-}
-
-/* No output may overwrite an input (a world file named trajectories.csv
- * with --out ., --trace-csv naming the firmware): compared by device and
- * inode, so any spelling of the path and links are caught. */
-static int outputs_apart_from_inputs(const options *o) {
-    int room = 2 + (o->robots > 0 ? o->robots : 0), n = 0, status = 0;
-    input_file *inputs = calloc((size_t)room, sizeof *inputs);
-    if (inputs == NULL) return 0;
-#define INPUT(p, ...)                                                                         \
-    do {                                                                                      \
-        if ((p) != NULL && stat((p), &inputs[n].st) == 0) {                                   \
-            inputs[n].path = (p);                                                             \
-            snprintf(inputs[n].what, sizeof inputs[n].what, __VA_ARGS__);                     \
-            n++;                                                                              \
-        }                                                                                     \
-    } while (0)
-    INPUT(o->world, "the world file");
-    INPUT(o->positions, "the --positions file");
-    const char *previous = NULL;
-    for (int i = 0; i < o->robots; i++) {
-        const char *elf = firmware_of(o, i);
-        if (elf == NULL || (previous != NULL && strcmp(elf, previous) == 0)) continue;
-        INPUT(elf, "robot %d's firmware", i);
-        previous = elf;
-    }
-#undef INPUT
-    const struct {
-        const char *option, *path;
-    } files[] = {{"--trace-csv", o->trace_csv}, {"--vcd", o->vcd}, {"--fault-log", o->fault_log},
-                 {"--console-csv", o->console_csv}};
-    for (size_t k = 0; status == 0 && k < sizeof files / sizeof files[0]; k++) {
-        const input_file *in = files[k].path ? input_at(inputs, n, files[k].path) : NULL;
-        if (in == NULL) continue;
-        fprintf(stderr, "openswarm-sim: %s %s is %s %s: the run would overwrite it; give %s another file\n",
-                files[k].option, files[k].path, in->what, in->path, files[k].option);
-        status = -1;
-    }
-    static const char *written[] = {"trajectories.csv", "objects.csv", "final.png", "viewer.html",
-                                    "video.mp4"};
-    for (size_t k = 0; status == 0 && o->out_dir != NULL && k < sizeof written / sizeof written[0]; k++) {
-        if (k == 4 && !o->video) continue;
-        char path[4096];
-        size_t len = strlen(o->out_dir);
-        snprintf(path, sizeof path, "%s%s%s", o->out_dir, len && o->out_dir[len - 1] == '/' ? "" : "/",
-                 written[k]);
-        const input_file *in = input_at(inputs, n, path);
-        if (in == NULL) continue;
-        fprintf(stderr, "openswarm-sim: --out %s: its %s is %s %s: the run would overwrite it; give "
-                        "another --out folder, or rename %s\n",
-                o->out_dir, written[k], in->what, in->path, in->what);
-        status = -1;
-    }
-    free(inputs);
-    return status;
 }
 
 /* The checks that need the robots' count: after a placement option or a

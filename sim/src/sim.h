@@ -114,6 +114,10 @@ enum {
 /* options.c */
 int parse_options(int argc, char **argv, options *o);
 int options_check_robots(options *o);
+/* --help's text (options_usage.c). */
+void options_usage(FILE *out);
+/* -1 after saying which output would overwrite which input (options_outputs.c). */
+int outputs_apart_from_inputs(const options *o);
 const char *firmware_of(const options *o, int index);
 
 /* A robot's clock error as a fraction of --clock-spread (main.c), -1..1. */
@@ -333,15 +337,31 @@ void firmware_counters_locate(robot *r, const char *elf_path);
 void firmware_counters_print(const robot *r, double seconds);
 int main_stack_report(const robot *r, int print);
 
+/* warning_groups.c: the end-of-run warnings, noted robot by robot (-1: a
+ * run of one robot) as the text after "warning: ", then printed once per
+ * text with the robots that gave it ("[robots 0-999] warning: ..."); how
+ * many lines. */
+void warning_note(int robot_index, const char *format, ...) __attribute__((format(printf, 2, 3)));
+int warnings_print(void);
+
+/* The robots whose set-up the warnings' fixes name. */
+typedef enum robot_kind { ROBOT_KILOBOT, ROBOT_EPUCK } robot_kind; /* as kernel_losses.h's */
+
+/* event_names.c: "EV_QUIET (event 10)", "KILOBOT_EVENT_LIGHT (event 6)", or
+ * "event 12" when the event has no name known (an app's own number); the
+ * app's names are read from firmware's section .openswarm.events. Into
+ * out, which is returned. */
+const char *event_name(const char *firmware, robot_kind kind, unsigned id, char *out, size_t size);
+
 /* firmware_warnings.c: at the end of a run, what robot r's firmware lost
  * or refused (its kernel's counters) and printed from an interrupt, as
- * warnings on stderr with the fix; how many. */
+ * warnings noted with the fix; how many. */
 int firmware_warnings_report(const robot *r);
 /* The same for a kernel's counters (os_stats' twelve, in order) wherever
- * they were read from (the native mode: the host's), each line begun with
- * prefix. */
+ * they were read from (the native mode: the host's), for robot (-1: the
+ * only one) of that kind. */
 #define OS_STATS_COUNTERS 12
-int kernel_loss_warnings(const char *prefix, const uint16_t *counters);
+int kernel_loss_warnings(int robot_index, robot_kind kind, const uint16_t *counters);
 /* With --strict, warnings (a count) fail the run: said, and 1. */
 int warnings_fail_run(int warnings, const options *o);
 
@@ -349,7 +369,7 @@ int warnings_fail_run(int warnings, const options *o);
  * subscriptions; at every instruction, that it ran; at the end, each
  * handler subscribed and never called as a warning; how many. */
 void handler_watch_attach(robot *r, const char *elf_path);
-int handler_watch_report(const robot *r);
+int handler_watch_report(const robot *r, int robot_index);
 static inline void handler_watch_step(robot *r) {
     uint8_t *ran = r->handler_watch.ran;
     uint32_t pc = r->avr->pc;

@@ -18,6 +18,11 @@ printf '#include "openswarm/robot.h"\nuint8_t app_colour(void) { return ROBOT_RG
 sed -i 's/^#include "openswarm_app.h"$/&\nuint8_t app_colour(void);/; s/ROBOT_RGB(0, 3, 0)/app_colour()/' main.c
 "$openswarm" build > build.log
 grep -q "^Built ./build/kilobot/app.elf for kilobot$" build.log
+# One flash percentage, against the 28 KB below the bootloader (issue 31:
+# avr-size's "24.3% Full", of the chip's 32 KB, came first on the same
+# screen as the tool's 27.7%).
+grep -Eq "^Flash \[.*\] +[0-9.]+% \([0-9]+ of 28672 bytes\)$" build.log || { cat build.log; exit 1; }
+if grep -q "% Full)" build.log; then echo "avr-size's percentage of the chip's 32 KB:"; cat build.log; exit 1; fi
 "$openswarm" run --time 0.3 > run.log 2>&1
 grep -Eq "^\[  0\.00[0-9]+ s\] led +red 3 green 0 blue 0$" run.log
 printf 'unsigned app_period(void) { return 100; }\n' > period.c

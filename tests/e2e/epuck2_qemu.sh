@@ -39,6 +39,25 @@ refused 2 "openswarm: --robots, --ohc: not for the epuck2 port, which runs one r
 refused 2 "openswarm: --time abc: give the simulated time in seconds" --time abc
 refused 2 "openswarm: --time nan: give the simulated time in seconds" --time nan
 
+# What the kernel refused ends the run as a warning with an e-puck's fix
+# (issue 31: before, runs under QEMU said nothing): a subscription made
+# before openswarm_app_start() registers its event. --strict fails the
+# run and the test.
+cp main.c* ../kept_main
+sed -i 's|^int main|static bool too_early(sys_pid pid, sys_event_id event, const sys_event_data *data) {\n    (void)pid;\n    (void)event;\n    (void)data;\n    return true;\n}\n\n&|' main.c*
+sed -i 's|^    openswarm_app_start();|    Sys_Subscribe_to_Event(SYS_EVENT_FIRST_FREE, SYS_PID_SYSTEM, too_early, NULL); /* the first event of openswarm.json, not registered yet */\n&|' main.c*
+warned="^openswarm: warning: 1 subscription\(s\) refused: the event was not registered, the handler never runs .*EPUCK_EVENT_PROXIMITY.*call epuck_devices_init\(\)"
+refused 0 "$warned" --time 0.3
+refused 1 "the run ended with warnings \(above: each with its fix\), and --strict makes them errors" --time 0.3 --strict
+grep -Eq "$warned" refused.log || { echo "FAILED: no warning with --strict"; cat refused.log; exit 1; }
+"$openswarm" test > test.log 2>&1 || { echo "FAILED: test with a warning"; cat test.log; exit 1; }
+grep -Eq "$warned" test.log || { echo "FAILED: no warning from test"; cat test.log; exit 1; }
+if "$openswarm" test --strict > test.log 2>&1; then echo "FAILED: test --strict passed with a warning"; cat test.log; exit 1; fi
+grep -Eq "$warned" test.log || { echo "FAILED: no warning from test --strict"; cat test.log; exit 1; }
+cp ../kept_main main.c*
+refused 0 "^openswarm: ran 0.300 s" --time 0.3 --strict
+if grep -q "warning" refused.log; then echo "FAILED: a warning from the template"; cat refused.log; exit 1; fi
+
 # A firmware that masks every interrupt and spins never reaches its end:
 # the run is stopped and fails, saying so.
 sed -i 's|    Sys_Start_Kernel();|    __asm__ __volatile__("cpsid i");\n    for (;;) {\n    }\n    Sys_Start_Kernel();|' main.c*

@@ -16,11 +16,17 @@ logged 0 "^--world: the e-puck2 app runs in the world as --port epuck_world" \
 grep -q "^Open out/arena/viewer.html" out.log || fail "no pointer to the run's outputs" out.log
 test -s out/arena/trajectories.csv || fail "no out/arena/trajectories.csv" out.log
 test -x build/epuck_world/app || fail "not built for the world: no build/epuck_world/app" out.log
-# Natively, the e-pucks' kernels warn of what they refused, as the exact
-# mode does: a subscription made before openswarm_app_start() registers
-# the event (fails before: e-puck worlds printed no warning).
+# The e-pucks' kernels warn of what they refused, natively and as
+# processes over pipes, as the exact mode does: a subscription made before
+# openswarm_app_start() registers the event (fails before: e-puck worlds
+# printed no warning; over pipes, still none).
 sed -i 's|^    openswarm_app_start();|    Sys_Subscribe_to_Event(EV_BLINK, SYS_PID_SYSTEM, count_blink, NULL); /* not registered yet */\n&|' main.c
-refused="^openswarm-sim: \[robot 0\] warning: 1 subscription\(s\) refused: the event was not registered"
-logged 0 "$refused" "$openswarm" run --native --world "$world" --time 1
-logged 1 "warnings \(above\) and --strict: the run fails" "$openswarm" run --native --world "$world" --time 1 --strict
+refused="^openswarm-sim: \[robots 0-4\] warning: 1 subscription\(s\) refused: the event was not registered.*EPUCK_EVENT_PROXIMITY.*call epuck_devices_init\(\)"
+for mode in --native ""; do
+    logged 0 "$refused" "$openswarm" run $mode --world "$world" --time 1
+    [ "$(grep -c "warning" out.log)" = 1 ] || fail "the e-pucks' warning said more than once ($mode)" out.log
+    if grep -q "kilobot" out.log; then fail "a Kilobot's fix for an e-puck ($mode)" out.log; fi
+done
+logged 1 "warnings? \(above\) and --strict: the run fails" "$openswarm" run --native --world "$world" --time 1 --strict
+logged 1 "warnings? \(above\) and --strict: the run fails" "$openswarm" run --world "$world" --time 1 --strict
 echo "1 passed, 0 failed"

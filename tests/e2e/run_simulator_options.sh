@@ -54,4 +54,19 @@ status=0
 "$openswarm" run --time 1 --clock-spread 9 >spread.log 2>&1 || status=$?
 test "$status" -eq 2 || { echo "a clock spread of 9% exited $status, not 2"; cat spread.log; exit 1; }
 grep -q -- "--clock-spread 9: give a percentage from 0 to 5" spread.log
+# A world's video at the rate asked (before: --video-fps and --video-speed
+# were refused, "The following arguments were not expected"): 2 s of the
+# talk app's world at 2 simulated seconds a second of video, 5 frames a
+# second. Without --video they have nothing to set: refused.
+cd ../talk
+"$openswarm" run --world worlds/packed.json --out video --time 2 --video --video-fps 5 --video-speed 2 \
+    >video.log 2>&1 || { cat video.log; exit 1; }
+rate=$(ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate -of csv=p=0 video/video.mp4)
+[ "$rate" = "5/1" ] || { echo "video.mp4 at $rate frames a second, not 5/1"; cat video.log; exit 1; }
+frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 video/video.mp4)
+[ "$frames" -ge 4 ] && [ "$frames" -le 7 ] || { echo "video.mp4 has $frames frames, not 1 s of 5"; cat video.log; exit 1; }
+status=0
+"$openswarm" run --world worlds/packed.json --time 1 --video-fps 5 >video.log 2>&1 || status=$?
+test "$status" -eq 2 || { echo "--video-fps without --video exited $status, not 2"; cat video.log; exit 1; }
+grep -q -- "--video-fps requires --video" video.log || { cat video.log; exit 1; }
 echo "1 passed, 0 failed"

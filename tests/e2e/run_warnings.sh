@@ -34,6 +34,13 @@ grep -Eq "$refused" out.log || fail "no warning of the refused subscription" out
 logged 0 "$refused" "$openswarm" run --native --time 0.5
 logged 1 "--strict: the run fails" "$openswarm" run --native --time 0.5 --strict
 grep -Eq "$refused" out.log || fail "no warning of the refused subscription (native)" out.log
+# Three robots refuse the same subscription: one warning naming them all,
+# in both modes (before: a copy a robot).
+grouped="^openswarm-sim: \[robots 0-2\] warning: 1 subscription\(s\) refused: the event was not registered"
+for mode in "" --native; do
+    logged 0 "$grouped" "$openswarm" run $mode --time 0.5 --robots 3
+    [ "$(grep -c "warning: 1 subscription" out.log)" = 1 ] || fail "the robots' warning said more than once ($mode)" out.log
+done
 # With the sensors initialised first, nothing to say.
 sed -i 's|^    robot_devices_init();|&\n    kilobot_sensors_init();|' main.c
 logged 0 "^Running" "$openswarm" run --time 0.5 --strict
@@ -98,7 +105,8 @@ sed -i 's|{ "name": "blink", "type": "none" }|&,\n    { "name": "quiet", "type":
 sed -i 's|^void blinker(void) {|static bool on_quiet(sys_pid pid, sys_event_id event, const sys_event_data *data) {\n    (void)pid;\n    (void)event;\n    (void)data;\n    blinks += 100;\n    return true;\n}\n\n&|' main.c
 sed -i 's|^    Sys_Start_Kernel();|    Sys_Subscribe_to_Event(EV_QUIET, SYS_PID_SYSTEM, on_quiet, NULL);\n&|' main.c
 grep -q EV_QUIET main.c
-never="^openswarm-sim: warning: the handler on_quiet.*, subscribed to event [0-9]+ \(thread 0\), was never called in 0\.50[0-9] s: no occurrence of the event reached it .*; send the event, run longer, or unsubscribe"
+# The event by its name in openswarm_app.h (before: "event 11").
+never="^openswarm-sim: warning: the handler on_quiet.*, subscribed to EV_QUIET \(event 11\) on thread 0, was never called in 0\.50[0-9] s: no occurrence of the event reached it .*; send the event, run longer, or unsubscribe"
 logged 0 "$never" "$openswarm" run --time 0.5
 if grep -q "count_blink" out.log; then fail "count_blink, which ran, named as never called" out.log; fi
 logged 1 "--strict: the run fails" "$openswarm" run --time 0.5 --strict

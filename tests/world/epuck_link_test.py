@@ -6,8 +6,8 @@ is tests/world/epuck_link_app.c built for PORT epuck_world.
 Checks: the first output (time 0, before any input); the camera handler's
 wheel speeds through the wheels' ramp (200 steps/s per command); the
 robot's time advances by exactly each step's advance_ms; the RGB LEDs
-toggle every 500 ms, to the millisecond; STOP gets a last answer and exit
-0; a bad magic or the end of input exit 2 with a message naming what was
+toggle every 500 ms, to the millisecond; STOP gets a last answer, the
+kernel's loss counters (all 0) and exit 0; a bad magic or the end of input exit 2 with a message naming what was
 read; two runs give the same bytes; robot_id() is the id the world gives
 (OPENSWARM_ROBOT_ID)."""
 import os
@@ -20,6 +20,8 @@ STOP = 2
 PROXIMITY = 1
 INPUT = struct.Struct("<IIHH8H8HHH")
 OUTPUT = struct.Struct("<IIhhBBBBI")
+LOSSES_MAGIC = 0x4C4B5045  # "EPKL": after STOP's answer, the kernel's 12 loss counters
+LOSSES = struct.Struct("<I12H")
 GREEN, RED, WHITE = 0x07E0, 0xF800, 0xFFFF
 LED_ON = 0x0C  # EPUCK_RGB(0, 3, 0)
 
@@ -117,7 +119,10 @@ def full_run(app):
     last = robot.output()
     check(last["time"] == robot.time + 10, f"STOP's answer at {last['time']} ms, expected {robot.time + 10}")
     status, rest, err = robot.finish()
-    check(status == 0 and rest == b"", f"after STOP: exit {status}, {len(rest)} more bytes, stderr {err!r}")
+    # Then its kernel's losses (the world's warnings), none here, and nothing more.
+    losses = LOSSES.unpack(rest[:LOSSES.size]) if len(rest) == LOSSES.size else None
+    check(status == 0 and losses == (LOSSES_MAGIC,) + (0,) * 12,
+          f"after STOP: exit {status}, {len(rest)} more bytes ({rest!r}, not the losses), stderr {err!r}")
     check("e-puck 7 here" in err, f"the app's robot_id() is not the 7 it was given: stderr {err!r}")
     return robot.transcript
 

@@ -1,14 +1,6 @@
 // openswarm run: build the app, then run it in the simulator.
-#include <algorithm>
 #include <csignal>
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <optional>
-#include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "../app_config.hpp"
 #include "../ports.hpp"
@@ -18,103 +10,13 @@
 #include "../suggest.hpp"
 #include "build.hpp"
 #include "commands.hpp"
+#include "run_options.hpp"
 
 namespace fs = std::filesystem;
 
 namespace openswarm {
 
 namespace {
-
-struct RunOptions {
-    std::string dir = ".";
-    std::string port;
-    std::string time = "10";
-    bool time_given = false;
-    int robots = 1;
-    int distance = 50;
-    std::string line;      // --line SPACING: robots on a line
-    std::string positions; // --positions FILE: one "x y" per robot
-    std::vector<std::string> parameters; // -D NAME=VALUE
-    int ir_range = 0;      // 0: the simulator's default
-    bool robots_given = false;
-    int gdb = 0;
-    bool debug = false; // the debug image (build --debug)
-    bool timestamps = false; // console lines begin with their time
-    std::string vcd;
-    std::vector<std::string> ohc; // overhead-controller messages, MSG@SECONDS
-    bool profile = false;
-    bool ir_log = false;
-    std::string clock_spread; // percent; empty: the simulator's default (none)
-    std::string ir_loss;      // percent at the range's edge; empty: none
-    std::vector<std::string> first; // firmware robots 0, 1, ... run instead of the app
-    std::vector<std::string> simulator_options; // after --, passed as they are
-    std::string world; // --world FILE, relative to where the tool was started
-    std::string out;   // --out DIR; empty: <app dir>/out/<world file's stem>
-    bool video = false;
-    bool ids = false;
-    bool trace = false; // with --world; without it the trace is always on
-    bool native = false; // --native, or the world's "fidelity": "native"
-    bool strict = false; // the simulator's warnings at the end fail the run
-    std::vector<std::string> simavr_only; // such options given, for a port QEMU runs
-};
-
-// "2.5", "2.5s" or "20%" (suffix): the number, if it is one in [lo, hi].
-std::optional<double> number_in(std::string text, char suffix, double lo, double hi) {
-    if (!text.empty() && text.back() == suffix) text.pop_back();
-    char *end = nullptr;
-    double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return std::nullopt;
-    return v;
-}
-
-// The options whose mistakes the simulator would catch only after the
-// build: caught before it, as bad usage. False after reporting.
-bool run_options_usable(const RunOptions &o) {
-    auto time = number_in(o.time, 's', 0, 86400);
-    if (!time || *time <= 0) {
-        report("--time " + o.time + ": give the simulated time in seconds, more than 0 and at most "
-               "86400 (e.g. 10 or 2.5s)");
-        return false;
-    }
-    if (!o.clock_spread.empty() && !number_in(o.clock_spread, '%', 0, 5)) {
-        report("--clock-spread " + o.clock_spread + ": give a percentage from 0 to 5 (e.g. 1)");
-        return false;
-    }
-    if (!o.ir_loss.empty() && !number_in(o.ir_loss, '%', 0, 100)) {
-        report("--ir-loss " + o.ir_loss + ": give a percentage from 0 to 100 (e.g. 20)");
-        return false;
-    }
-    for (const auto &m : o.ohc) {
-        auto at = m.rfind('@');
-        if (at == std::string::npos || at == 0 || !number_in(m.substr(at + 1), 's', 0, 86400)) {
-            report("--ohc " + m + ": give MESSAGE@SECONDS, e.g. --ohc sleep@2 or "
-                   "--ohc calib-left:70@1");
-            return false;
-        }
-    }
-    return true;
-}
-
-// A port whose robots live in a world (epuck_world): a world file places
-// them; the Kilobot simulator's own options do not apply. False after
-// reporting.
-bool world_options_usable(const RunOptions &o, const std::string &port) {
-    if (o.world.empty()) {
-        report("the " + port + " port's robots run in a world: give --world FILE, a world.json with "
-               "\"robot\": \"epuck\" (docs/world.md; the object-clustering template's experiment "
-               "makes them)");
-        return false;
-    }
-    std::vector<std::string> refused;
-    for (const auto &name : o.simavr_only)
-        if (name != "--world" && name != "--out" && name != "--video" && name != "--ids" &&
-            name != "--trace")
-            refused.push_back(name);
-    if (refused.empty()) return true;
-    report(join(refused) + ": not for the " + port + " port, whose robots the world file places; "
-           "those are for Kilobot apps (--port kilobot)");
-    return false;
-}
 
 // A port QEMU runs: one robot, no world (yet), the console and the trace.
 int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &port) {
@@ -134,105 +36,10 @@ int run_app_in_qemu(const RunOptions &o, const Paths &paths, const std::string &
     r.image = built->image;
     r.seconds = seconds;
     r.gdb_port = o.gdb;
+    r.strict = o.strict;
     std::printf("Running %s in QEMU (netduinoplus2) for %g s\n", r.image.filename().c_str(),
                 r.seconds);
     return run_in_qemu(r);
-}
-
-// The world files an app ships (<dir>/worlds/*.json), to suggest when the
-// one asked for is not there.
-std::vector<std::string> app_worlds(const fs::path &dir) {
-    std::vector<std::string> found;
-    std::error_code ec;
-    for (const auto &entry : fs::directory_iterator(dir / "worlds", ec))
-        if (entry.path().extension() == ".json") found.push_back(entry.path().string());
-    std::sort(found.begin(), found.end());
-    return found;
-}
-
-// How long the world runs, for the first line: its duration_s, or the
-// simulator's default. The simulator checks the file and reports its
-// mistakes; here an unreadable file just says less.
-std::string world_duration(const std::string &path) {
-    try {
-        std::ifstream in(path);
-        auto world = nlohmann::json::parse(in);
-        auto d = world.find("duration_s");
-        if (d == world.end()) return "for 10 s (the world gives no duration_s)";
-        if (d->is_number()) {
-            std::ostringstream text;
-            text << "for " << d->get<double>() << " s (its duration_s)";
-            return text.str();
-        }
-    } catch (const std::exception &) {
-    }
-    return "for its duration_s";
-}
-
-// The world's "fidelity": "native" asks for the native mode (the
-// simulator checks the file; an unreadable one says exact here).
-bool world_wants_native(const std::string &path) {
-    try {
-        std::ifstream in(path);
-        auto world = nlohmann::json::parse(in);
-        auto f = world.find("fidelity");
-        return f != world.end() && f->is_string() && f->get<std::string>() == "native";
-    } catch (const std::exception &) {
-        return false;
-    }
-}
-
-// The options that look inside the simulated MCU, which the native mode
-// does not simulate. False after reporting.
-bool native_options_usable(const RunOptions &o) {
-    std::vector<std::string> refused;
-    if (o.gdb != 0) refused.push_back("--gdb");
-    if (o.debug) refused.push_back("--debug");
-    if (!o.vcd.empty()) refused.push_back("--vcd");
-    if (!o.ohc.empty()) refused.push_back("--ohc");
-    if (o.profile) refused.push_back("--profile");
-    if (o.ir_log) refused.push_back("--ir-log");
-    if (!o.first.empty()) refused.push_back("--first");
-    if (o.trace) refused.push_back("--trace");
-    if (refused.empty()) return true;
-    report(join(refused) + ": the native mode runs the app on the host, with no simulated MCU to look "
-           "into; run it in the exact mode (without --native, or \"fidelity\": \"exact\")");
-    return false;
-}
-
-// A --world that names no file: say which file, where it was looked for,
-// and what to give instead. False after reporting.
-bool world_file_usable(const RunOptions &o) {
-    std::error_code ec;
-    if (fs::is_regular_file(o.world, ec)) return true;
-    std::string message = "--world " + o.world + ": ";
-    if (fs::exists(o.world, ec)) {
-        message += "not a file; give a world.json (docs/world.md describes them)";
-    } else {
-        message += "no such file (looked for " +
-                   fs::absolute(o.world).lexically_normal().string() + ")";
-        if (o.dir != ".") message += "; the path is from the current folder, not from -C " + o.dir;
-    }
-    auto worlds = app_worlds(o.dir);
-    if (!worlds.empty()) message += "; the app has: " + join(worlds);
-    else message += "; write one as docs/world.md describes, or start from the disperse "
-                    "template's worlds/packed.json";
-    report(message);
-    return false;
-}
-
-// The run's folder, with a copy of the world it ran in (world.json) for the
-// metrics that need the arena or the lights; false after saying why not.
-bool keep_world_beside_run(const std::string &world_path, const std::string &out) {
-    std::error_code ec, same;
-    fs::path copy = fs::path(out) / "world.json";
-    if (fs::exists(copy, same) && fs::equivalent(world_path, copy, same)) return true;
-    fs::create_directories(out, ec);
-    if (!ec) fs::copy_file(world_path, copy, fs::copy_options::overwrite_existing, ec);
-    if (!ec) return true;
-    report("cannot keep the world in " + copy.string() + ": " + ec.message() +
-           "; choose another --out folder or fix its permissions");
-    return false;
 }
 
 int run_app(RunOptions o, const Paths &paths) {
@@ -284,6 +91,8 @@ int run_app(RunOptions o, const Paths &paths) {
         argv.insert(argv.end(), {"--world", world_path, "--out", o.out});
         if (o.video) argv.push_back("--video");
         if (o.ids) argv.push_back("--ids");
+        if (!o.video_fps.empty()) argv.insert(argv.end(), {"--video-fps", o.video_fps});
+        if (!o.video_speed.empty()) argv.insert(argv.end(), {"--video-speed", o.video_speed});
         // A Kilobot's console lines (its `metric NAME VALUE` reports) and the
         // world beside the trajectories: `openswarm metrics OUT` needs no more.
         if (!(is_port(port) && port_info(port).runner == Runner::world)) {
@@ -378,7 +187,12 @@ void add_run_command(CLI::App &app, const Paths &paths) {
                     "with --world: write trajectories.csv, objects.csv, final.png and viewer.html "
                     "here (default: <app>/out/<world file's name>)")
         ->type_name("DIR")->needs(world);
-    cmd->add_flag("--video", o->video, "with --world: also video.mp4 (needs ffmpeg)")->needs(world);
+    auto video = cmd->add_flag("--video", o->video, "with --world: also video.mp4 (needs ffmpeg)")->needs(world);
+    cmd->add_option("--video-fps", o->video_fps, "with --video: the video's frames a second, 1..100 (default 25)")
+        ->type_name("F")->needs(video);
+    cmd->add_option("--video-speed", o->video_speed,
+                    "with --video: simulated seconds a second of video, 0.01..10000 (default 1)")
+        ->type_name("X")->needs(video);
     cmd->add_flag("--ids", o->ids, "with --world: number the robots in final.png and the video")->needs(world);
     cmd->add_flag("--trace", o->trace,
                   "print every robot's LED and motor changes (without --world, always)");
@@ -439,7 +253,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
         for (const char *name : {"--robots", "--distance", "--line", "--positions", "--world",
                                  "--ir-range", "--vcd", "--ohc", "--profile", "--ir-log", "--timestamps",
                                  "--clock-spread", "--ir-loss", "--first", "--trace", "--out",
-                                 "--video", "--ids"})
+                                 "--video", "--video-fps", "--video-speed", "--ids"})
             if (cmd->count(name) > 0) o->simavr_only.push_back(name);
         if (!o->simulator_options.empty()) o->simavr_only.push_back("options after --");
         exit_code = run_app(*o, paths);

@@ -231,12 +231,14 @@ std::string qemu_options(const std::vector<std::string> &options, QemuRun &r) {
 }
 
 // A run in QEMU with options qemu_options accepted: the board's records
-// as changes of robot 0.
-TestRun run_in_qemu(const std::vector<std::string> &options, const fs::path &image) {
+// as changes of robot 0. Its warnings are shown as the simulator's are.
+TestRun run_in_qemu(const std::vector<std::string> &options, const fs::path &image, bool strict) {
     QemuRun r;
     r.image = image;
+    r.strict = strict;
     qemu_options(options, r);
     QemuOutcome outcome = run_qemu(r, [](const std::string &) {});
+    show_warnings(outcome);
     TestRun run;
     run.failure = qemu_failure(r, outcome);
     if (!run.failure.empty()) return run;
@@ -252,7 +254,7 @@ TestRun run_in_qemu(const std::vector<std::string> &options, const fs::path &ima
 // A run of the image where its port runs; options already checked.
 TestRun run_on_port(const std::string &port, const std::string &name, const std::vector<std::string> &options,
                     const fs::path &image, const Paths &paths, bool strict) {
-    if (port_info(port).runner == Runner::qemu) return run_in_qemu(options, image);
+    if (port_info(port).runner == Runner::qemu) return run_in_qemu(options, image, strict);
     return run_in_simulator(name, options, image, paths, strict);
 }
 

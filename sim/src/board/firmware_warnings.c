@@ -8,50 +8,25 @@
 #include <string.h>
 
 #include "sim.h"
-
-/* os_stats' counters this reports, by their index in sys_stats, with what
- * a non-zero count means and what to do. */
-typedef struct loss {
-    unsigned index;
-    const char *what;
-    const char *fix;
-} loss;
-
-static const loss losses[] = {
-    {0, "thread start(s) refused: no free thread slot",
-     "raise \"max_threads\" in openswarm.json's \"kernel\", or declare the threads in its \"threads\""},
-    {1, "thread start(s) refused: no room for a stack",
-     "raise \"stack_pool\" in openswarm.json's \"kernel\", or give the threads smaller \"stack\"s"},
-    {2, "event registration(s) refused: no room for the event's data, its handlers never run "
-        "(a kilolib program's pool holds kilolib's own: kilobot_sensors_init() needs 6 bytes more)",
-     "declare the app's events in openswarm.json's \"events\" (the pool is sized for them) or "
-     "raise \"event_data\" in its \"kernel\""},
-    {3, "subscription(s) refused: every subscription slot in use, those handlers never run",
-     "raise \"max_subscriptions\" in openswarm.json's \"kernel\""},
-    {4, "event send(s) refused: the event queue was full, those occurrences are lost",
-     "raise \"event_queue\" in openswarm.json's \"kernel\", or send less often"},
-    {5, "device registration(s) refused: no free device slot (a kilolib program gets kilolib's "
-        "own few, kilobot_sensors_init() needs 3 more)",
-     "raise \"max_devices\" in openswarm.json's \"kernel\""},
-    {6, "queued event(s) discarded: their event was unregistered before they were dispatched",
-     "unregister an event only once its last occurrence is handled"},
-    {11, "subscription(s) refused: the event was not registered, the handler never runs (a "
-         "device's event, e.g. KILOBOT_EVENT_LIGHT, is registered by its init)",
-     "register the event before subscribing to it: call kilobot_sensors_init() (or "
-     "Sys_Register_Event) first"},
-};
+#include "kernel_losses.h"
 
 #define KERNEL_BYTES (2 * OS_STATS_COUNTERS + 1) /* and the queue's peak byte */
 
-int kernel_loss_warnings(const char *prefix, const uint16_t *counters) {
+int kernel_loss_warnings(int robot_index, robot_kind kind, const uint16_t *counters) {
     int warnings = 0;
-    for (size_t i = 0; i < sizeof losses / sizeof losses[0]; i++) {
-        unsigned n = counters[losses[i].index];
+    for (size_t i = 0; i < KERNEL_LOSSES; i++) {
+        const kernel_loss *l = &kernel_losses[i];
+        unsigned n = counters[l->index];
         if (n == 0) continue;
-        fprintf(stderr, "openswarm-sim: %swarning: %u %s; %s\n", prefix, n, losses[i].what, losses[i].fix);
+        warning_note(robot_index, "%u %s%s; %s%s", n, l->what, l->what_on[kind], l->fix, l->fix_on[kind]);
         warnings++;
     }
     return warnings;
+}
+
+/* The robot's index for the warnings, or -1 when it runs alone. */
+static int robot_named(const robot *r) {
+    return r->console.prefix[0] != '\0' ? r->index : -1;
 }
 
 static int kernel_warnings(const robot *r) {
@@ -63,7 +38,7 @@ static int kernel_warnings(const robot *r) {
         uint32_t at = r->counters.kernel + 2u * i;
         counters[i] = (uint16_t)(r->avr->data[at] | r->avr->data[at + 1] << 8);
     }
-    return kernel_loss_warnings(r->console.prefix, counters);
+    return kernel_loss_warnings(robot_named(r), ROBOT_KILOBOT, counters);
 }
 
 static int console_warnings(const robot *r) {
@@ -71,11 +46,10 @@ static int console_warnings(const robot *r) {
     int warnings = 0;
     for (int i = 0; i < 2; i++) {
         if (c[i]->from_interrupt == 0) continue;
-        fprintf(stderr, "openswarm-sim: %swarning: %u character(s) printed from an interrupt "
-                        "(the first at %.6f s): they cut into the lines threads print; print from a "
-                        "thread or an event handler (send an event from the interrupt, print in "
-                        "its handler)\n",
-                r->console.prefix, c[i]->from_interrupt, c[i]->from_interrupt_at);
+        warning_note(robot_named(r), "%u character(s) printed from an interrupt (the first at %.6f s): "
+                     "they cut into the lines threads print; print from a thread or an event handler "
+                     "(send an event from the interrupt, print in its handler)",
+                     c[i]->from_interrupt, c[i]->from_interrupt_at);
         warnings++;
     }
     return warnings;
@@ -89,5 +63,5 @@ int warnings_fail_run(int warnings, const options *o) {
 }
 
 int firmware_warnings_report(const robot *r) {
-    return kernel_warnings(r) + handler_watch_report(r) + console_warnings(r);
+    return kernel_warnings(r) + handler_watch_report(r, robot_named(r)) + console_warnings(r);
 }

@@ -109,7 +109,7 @@ static uint32_t called_function(const robot *r, uint32_t entry) {
     return handler;
 }
 
-int handler_watch_report(const robot *r) {
+int handler_watch_report(const robot *r, int robot_index) {
     const handler_watch *w = &r->handler_watch;
     if (w->ran == NULL) return 0;
     uint32_t end = u16_at(r->avr, w->subs_end);
@@ -119,13 +119,14 @@ int handler_watch_report(const robot *r) {
     for (uint32_t entry = w->subs; entry + SUBSCRIPTION_BYTES <= end; entry += SUBSCRIPTION_BYTES) {
         uint32_t handler = called_function(r, entry);
         if (handler == 0 || ran(w, handler)) continue;
-        char place[400];
-        fprintf(stderr, "openswarm-sim: %swarning: the handler %s, subscribed to event %u (thread %u), "
-                        "was never called in %.3f s: no occurrence of the event reached it (nothing "
-                        "sent it, its device was not started, or its condition refused each one); send "
-                        "the event, run longer, or unsubscribe a handler the app does not need\n",
-                r->console.prefix, code_place(w->elf, handler, place, sizeof place),
-                r->avr->data[entry + 4u], r->avr->data[entry + 5u], t);
+        char place[400], event[96];
+        warning_note(robot_index, "the handler %s, subscribed to %s on thread %u, was never called in "
+                     "%.3f s: no occurrence of the event reached it (nothing sent it, its device was not "
+                     "started, or its condition refused each one); send the event, run longer, or "
+                     "unsubscribe a handler the app does not need",
+                     code_place(w->elf, handler, place, sizeof place),
+                     event_name(w->elf, ROBOT_KILOBOT, r->avr->data[entry + 4u], event, sizeof event),
+                     r->avr->data[entry + 5u], t);
         warnings++;
     }
     return warnings;

@@ -126,10 +126,8 @@ static int receive(int n, epuck_world_output *out) {
 static int warnings(void) {
     int n = 0;
     for (int i = 0; i < n_robots; i++) {
-        char prefix[32];
-        snprintf(prefix, sizeof prefix, "[robot %d] ", i);
         const uint16_t *counters = native_swarm_robot_stats(i);
-        if (counters != NULL) n += kernel_loss_warnings(prefix, counters);
+        if (counters != NULL) n += kernel_loss_warnings(i, ROBOT_EPUCK, counters);
     }
     return n;
 }

@@ -240,7 +240,7 @@ static void run(const options *o) {
 
 /* How the robots ended, as the exact mode reports it (main.c). */
 static int report(const options *o) {
-    int status = 0, running = 0, booted = 0, broken = 0, warnings = 0;
+    int status = 0, running = 0, booted = 0, broken = 0;
     for (int i = 0; i < n_robots; i++) {
         native_robot *r = native_swarm_robot(i);
         double t = seconds_of(r, r->io->now);
@@ -248,7 +248,7 @@ static int report(const options *o) {
         if (n_robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", i);
         /* what its kernel lost or refused, as the exact mode warns of it */
         const uint16_t *counters = native_swarm_robot_stats(i);
-        if (counters != NULL) warnings += kernel_loss_warnings(prefix, counters);
+        if (counters != NULL) kernel_loss_warnings(n_robots > 1 ? i : -1, ROBOT_KILOBOT, counters);
         if (r->image_changed) {
             fprintf(stderr, "openswarm-sim: %sits RAM changed while it was not running: a stray "
                             "write from another robot's code; run the robots apart to find whose\n", prefix);
@@ -267,6 +267,7 @@ static int report(const options *o) {
                                 "time; give it longer with --time\n", prefix, o->seconds);
         }
     }
+    int warnings = warnings_print();
     if (native_air_overflowed() != 0)
         fprintf(stderr, "openswarm-sim: %llu frames found a robot's inbox full (%d frames): they "
                         "were lost\n", (unsigned long long)native_air_overflowed(), NATIVE_INBOX_ROOM);

@@ -20,11 +20,12 @@ typedef struct epuck_controllers {
     int (*send)(int i, uint32_t t_ms, const epuck_world_input *in, const uint16_t *pixels);
     /* Every robot's answer to the step, once all were sent. */
     int (*receive)(int n, epuck_world_output *out);
-    /* Stop them all: -1 if one failed to stop cleanly. */
+    /* Stop them all: -1 if one failed to stop cleanly. Controllers that
+     * send their kernels' losses as they end note them as warnings. */
     int (*stop)(void);
-    /* Before stop: what their kernels lost or refused, as warnings; how
-     * many. NULL: not known (the controllers over pipes, which are other
-     * processes). */
+    /* Before stop: what their kernels lost or refused, noted as warnings;
+     * how many. NULL: stop notes them (the controllers over pipes, other
+     * processes, send them as they end). */
     int (*warnings)(void);
 } epuck_controllers;
 

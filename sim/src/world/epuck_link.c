@@ -214,6 +214,9 @@ int epuck_link_stop(epuck_link *l) {
         kill_controller(l); /* one that answered nonsense is still there */
         return -1;
     }
+    /* An end of file instead: a controller without a kernel, none to send. */
+    l->has_losses = timed_io(l->from, &l->losses, sizeof l->losses, 0) == IO_DONE &&
+                    l->losses.magic == EPUCK_LINK_LOSSES_MAGIC;
     close(l->to);
     close(l->from);
     int status = 0;

@@ -16,6 +16,8 @@ typedef struct epuck_link {
     const char *controller;
     int32_t t_ms; /* the step being exchanged, -1 before the first; for messages */
     int stopping; /* the exchange is the request to stop */
+    epuck_world_losses losses; /* its kernel's, sent after its last answer */
+    int has_losses;            /* 0: none came (a controller without a kernel) */
 } epuck_link;
 
 /* How long, in wall time, the world waits for a controller to take its
@@ -35,7 +37,8 @@ int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_wor
  * or did not move within the wait: then it is killed). */
 int epuck_link_send(epuck_link *l, const epuck_world_input *in, const uint16_t *pixels);
 int epuck_link_receive(epuck_link *l, epuck_world_output *out);
-/* Tell it to stop, wait for it; its exit status (-1 if it had to be killed). */
+/* Tell it to stop, wait for it; its exit status (-1 if it had to be
+ * killed). Its kernel's losses, when it sends them, are kept in l. */
 int epuck_link_stop(epuck_link *l);
 
 #endif

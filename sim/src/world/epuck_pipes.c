@@ -34,10 +34,13 @@ static int receive(int n, epuck_world_output *out) {
     return 0;
 }
 
+/* Their kernels' losses come with their ends: noted as warnings here. */
 static int stop(void) {
     int failed = 0;
-    for (int i = 0; i < n_links; i++)
+    for (int i = 0; i < n_links; i++) {
         if (links[i].pid > 0 && epuck_link_stop(&links[i]) != 0) failed = -1;
+        if (links[i].has_losses) kernel_loss_warnings(i, ROBOT_EPUCK, links[i].losses.counters);
+    }
     return failed;
 }
 

@@ -165,8 +165,9 @@ int epuck_world_run(const options *o, const world_spec *spec, world *physics, co
         else recording = 1;
     }
     if (status == 0) status = run_steps(o, spec, physics, recording);
-    int warned = status == 0 && controllers->warnings != NULL ? controllers->warnings() : 0;
+    if (status == 0 && controllers->warnings != NULL) controllers->warnings();
     if (controllers->stop() != 0 && status == 0) status = EXIT_CRASH;
+    int warned = warnings_print();
     if (status == 0 && warnings_fail_run(warned, o)) status = EXIT_WARNINGS;
     if (interrupt_caught()) output_quieten(); /* interrupt_finish names the files */
     if (recording && output_close() != 0 && status == 0) status = EXIT_USAGE;

@@ -6,11 +6,13 @@
  * the board exits (status 0) when the kernel's clock reaches N ms, so a
  * run lasts the same simulated time on any machine. */
 #include "openswarm/cortex_m4.h"
+#include "openswarm/fault.h"
 #include "openswarm/system_time.h"
 #include "board_qemu.h"
 #include "board_record.h"
 #include "semihosting.h"
 
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -24,14 +26,33 @@
 
 const uint32_t board_core_hz = 168000000u;
 
+/* sys_stats' uint16_t counters, before its queue's peak byte. */
+#define KERNEL_LOSS_COUNTERS 12
+_Static_assert(offsetof(sys_stats, event_queue_peak) == KERNEL_LOSS_COUNTERS * sizeof(uint16_t),
+               "sys_stats begins with its counters");
+
 static uint32_t stop_ms;
 uint8_t board_selector_position;
 uint16_t board_robot_id;
+
+/* The kernel's loss counters (sys_stats, in order), which the runner
+ * turns into the warnings at the end of the run: what the firmware lost
+ * or was refused without failing. */
+static void record_losses(void) {
+    sys_stats stats;
+    Sys_Get_Stats(&stats);
+    uint16_t counters[KERNEL_LOSS_COUNTERS];
+    memcpy(counters, &stats, sizeof counters); /* sys_stats begins with them, in order */
+    int32_t values[KERNEL_LOSS_COUNTERS];
+    for (unsigned i = 0; i < KERNEL_LOSS_COUNTERS; i++) values[i] = counters[i];
+    board_record("losses", values, KERNEL_LOSS_COUNTERS);
+}
 
 /* The "stop" record tells the runner the run reached its end (status 0
  * alone could also be main returning 0, or a debugger ending QEMU). */
 static void stop_when_due(void) {
     if (Sys_Get_SystemTime() < stop_ms) return;
+    record_losses();
     board_record("stop", NULL, 0);
     semihosting_exit(0);
 }

@@ -7,6 +7,8 @@
  *     \x1ewheels 252004 -300 300\n    the wheels' speeds, steps/s
  *     \x1ering 252004 5\n              the ring LEDs lit (bit 0: LED0)
  *     \x1ebody 252004 1\n, front ...    the body and front LEDs
+ *     \x1elosses 1100000 0 0 0 ...\n  the kernel's sys_stats counters, in order,
+ *                                  just before the end (the runner's warnings)
  *     \x1estop 1100000\n             the run reached the time it was given
  */
 #ifndef EPUCK2_QEMU_BOARD_RECORD_H

@@ -95,6 +95,9 @@ static void take_inputs(void) {
     receive(frame, pixels * sizeof frame[0]);
     if (in.flags & EPUCK_LINK_STOP) {
         answer();
+        epuck_world_losses losses;
+        world_outputs_losses(&losses);
+        send(&losses, sizeof losses);
         semihosting_exit(0);
     }
     if (in.selector != last_selector) {

@@ -49,3 +49,7 @@ void board_world_deliver_frame(const uint16_t *pixels, uint16_t width, uint16_t 
 static void report_isr(void *arg) { world_outputs_fill(arg); }
 
 void board_world_report(epuck_world_output *out) { host_cpu_interrupt(report_isr, out); }
+
+static void losses_isr(void *arg) { world_outputs_losses(arg); }
+
+void board_world_losses(epuck_world_losses *out) { host_cpu_interrupt(losses_isr, out); }

@@ -21,5 +21,7 @@ void board_world_deliver_frame(const uint16_t *pixels, uint16_t width, uint16_t 
 
 /* The robot's outputs, its time and its faults, as one snapshot. */
 void board_world_report(epuck_world_output *out);
+/* The kernel's loss counters, for the link's last message. */
+void board_world_losses(epuck_world_losses *out);
 
 #endif

@@ -25,6 +25,7 @@
 _Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the link is little-endian");
 _Static_assert(sizeof(epuck_world_input) == 48, "epuck_world_input has no padding");
 _Static_assert(sizeof(epuck_world_output) == 20, "epuck_world_output has no padding");
+_Static_assert(sizeof(epuck_world_losses) == 28, "epuck_world_losses has no padding");
 
 /* Wall-clock time the robot gets to finish a step's work (handlers,
  * threads woken) before it answers: far more than any controller needs. */
@@ -94,6 +95,9 @@ int main(void) {
         answer();
         if (in.flags & EPUCK_LINK_STOP) break;
     }
+    epuck_world_losses losses;
+    board_world_losses(&losses);
+    if (!link_write(link_out, &losses, sizeof losses)) link_broken("cannot write the losses to the world");
     host_cpu_stop();
     return 0;
 }

@@ -4,6 +4,9 @@
 #include "openswarm/fault.h"
 #include "openswarm/system_time.h"
 
+#include <stddef.h>
+#include <string.h>
+
 /* Written by the system thread (the devices' write functions), read on
  * the same CPU when the world is answered: never at the same time. */
 static struct {
@@ -27,6 +30,17 @@ static uint32_t faults_so_far(void) {
     Sys_Get_Stats(&stats);
     return (uint32_t)stats.stack_overflows + stats.critical_leaks + stats.cpu_faults +
            stats.handler_overruns;
+}
+
+/* sys_stats begins with its uint16_t counters, in the link's order. */
+_Static_assert(offsetof(sys_stats, event_queue_peak) == EPUCK_LINK_LOSS_COUNTERS * sizeof(uint16_t),
+               "sys_stats' counters are the link's");
+
+void world_outputs_losses(epuck_world_losses *out) {
+    sys_stats stats;
+    Sys_Get_Stats(&stats);
+    out->magic = EPUCK_LINK_LOSSES_MAGIC;
+    memcpy(out->counters, &stats, sizeof out->counters);
 }
 
 void world_outputs_fill(epuck_world_output *out) {

@@ -11,6 +11,9 @@
 /* The answer to the world, filled on the robot's CPU (it reads the
  * kernel's clock and counters). */
 void world_outputs_fill(epuck_world_output *out);
+/* The kernel's loss counters, for the link's last message (on the robot's
+ * CPU too). */
+void world_outputs_losses(epuck_world_losses *out);
 /* Its wheels and LEDs alone, as the device layer last set them: no call
  * into the kernel (the native board reads them from its work callback,
  * where the kernel's instrumented code must not run). */

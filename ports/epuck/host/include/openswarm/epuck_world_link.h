@@ -7,7 +7,8 @@
  *                   frame_width * frame_height RGB565 pixels (row after
  *                   row, uint16_t each, little-endian)
  *   robot -> world: epuck_world_output, once it has applied the input and
- *                   run advance_ms milliseconds of its own time
+ *                   run advance_ms milliseconds of its own time; after the
+ *                   last (the answer to EPUCK_LINK_STOP), epuck_world_losses
  *
  * Every field is little-endian, packed as declared (no padding: each
  * struct's fields fall on their natural alignment). The robot's first
@@ -45,5 +46,16 @@ typedef struct epuck_world_output {
     uint8_t ring_leds, body_led, front_led, rgb_leds;
     uint32_t faults;             /* kernel faults reported so far */
 } epuck_world_output;
+
+/* After its answer to EPUCK_LINK_STOP a controller with a kernel sends
+ * its kernel's loss counters (openswarm/fault.h's sys_stats, its uint16_t
+ * counters in order), then exits: the world ends the run with them as
+ * warnings. A controller without a kernel sends none. */
+#define EPUCK_LINK_LOSSES_MAGIC 0x4C4B5045u /* "EPKL" */
+#define EPUCK_LINK_LOSS_COUNTERS 12
+typedef struct epuck_world_losses {
+    uint32_t magic;
+    uint16_t counters[EPUCK_LINK_LOSS_COUNTERS];
+} epuck_world_losses;
 
 #endif
