@@ -158,7 +158,10 @@ void add_legs(world &w, Robot &r, double friction, double mass_kg, double radius
     w.physics.CreateJoint(&legs);
 }
 
-/* Put the carrier on the robot, moving as the motors would move it. A
+/* Move the carrier as the motors would move the robot. Only its velocity
+ * counts: the joint holds both bodies at their centres (add_legs), so the
+ * carrier's place and angle never enter the solver, and it is not put on
+ * the robot each step (a SetTransform, a sincosf, per robot and step). A
  * robot whose motors are off is left to the solver: once it has been at
  * rest for Box2D's half second it sleeps and costs nothing per step until
  * its motors start or something pushes it - most of a settled swarm. */
@@ -169,7 +172,6 @@ void walk(Robot &r, const kilobot_twist &twist) {
     double c = std::cos(angle), s = std::sin(angle);
     b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
              float((twist.forward_mm_s * s + twist.left_mm_s * c) / MM_PER_UNIT));
-    r.carrier->SetTransform(r.body->GetPosition(), float(angle));
     r.carrier->SetLinearVelocity(v);
     r.carrier->SetAngularVelocity(float(twist.turn_rad_s));
     if (!still) r.body->SetAwake(true);
