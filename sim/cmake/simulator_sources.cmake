@@ -11,7 +11,7 @@ set(REPO_ROOT ${SIM_ROOT}/..)
 # robots are and how they move), output (what a run in a world leaves
 # behind), tools (debugging and measuring).
 set(SIMULATOR_SOURCES)
-foreach(piece options options_usage options_outputs progress warning_groups written interrupt inputs lockstep window_workers
+foreach(piece options options_usage options_outputs progress warning_groups written interrupt inputs lockstep loop_skip window_workers
     board/firmware board/console board/robot_trace board/kilobot_board board/adc_trigger
     board/power_down board/analog_noise board/main_stack board/interrupt_watch
     board/firmware_symbols board/elf_check board/ihex_check board/power_cycle

@@ -9,6 +9,7 @@
 #include <sim_cycle_timers.h>
 
 #include "board/invalid_opcode.h"
+#include "loop_skip.h"
 #include "window_workers.h"
 
 /* Robots a thread gets at least by default: fewer and the waiting costs
@@ -22,6 +23,7 @@ static int profiling;
 
 static int n_threads;
 static avr_cycle_count_t window_end;
+static int skipping; /* loop_skip.h: on */
 
 int robot_finished(const robot *r) { return r->state == cpu_Done || r->state == cpu_Crashed; }
 
@@ -76,17 +78,46 @@ static int dozing_through(robot *r, avr_cycle_count_t own_end) {
     return 1;
 }
 
-/* Robot r up to the window's end; 1 when it has stopped. With several
- * robots a sleeping one is woken at the window's end, so it never skips
- * past what the others do. */
-static int run_robot(robot *r) {
-    if (r->doze_until > window_end) return 0;
-    avr_cycle_count_t end = own_cycles(r, window_end);
-    if (n_robots > 1 && !robot_finished(r) && r->avr->cycle < end) {
-        if (dozing_through(r, end)) return 0;
-        avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
-        r->wake_registered = 1;
+/* The window's end for a parked robot: it need not be run before the
+ * window its next timer falls in (the others reach it by a timer, or
+ * through lockstep_settle). */
+static void doze_parked(robot *r, avr_cycle_count_t next_timer) {
+    if (r->wake_registered) {
+        avr_cycle_timer_cancel(r->avr, wake_up, NULL);
+        r->wake_registered = 0;
     }
+    avr_cycle_count_t due = next_timer == UINT64_MAX ? UINT64_MAX
+                            : r->avr->frequency == nominal_hz ? next_timer
+                                                                : next_timer * nominal_hz / r->avr->frequency;
+    r->doze_until = due > window_end ? due : window_end + 1;
+}
+
+/* Robot r at the head of a loop that repeats (loop_skip.h): the repeats
+ * that end before its next timer and by end, skipped. 1 when it stays
+ * parked there, short of end by less than a repeat (the next one ends
+ * after end and before the timer); 0 when it runs on into the repeat in
+ * which the timer fires, instruction by instruction. */
+static int skip_ahead(robot *r, avr_cycle_count_t end) {
+    loop_skip *s = r->skip;
+    avr_cycle_count_t head = r->avr->cycle, period = s->period, next = loop_skip_next_timer(r);
+    s->parked = 0;
+    if (next <= head + period) return 0;
+    uint64_t before_timer = (next - head - 1) / period, by_end = end > head ? (end - head) / period : 0;
+    loop_skip_jump(r, before_timer < by_end ? before_timer : by_end);
+    if (r->avr->cycle + period >= next) return 0;
+    s->parked = 1;
+    doze_parked(r, next);
+    return 1;
+}
+
+static void unpark(robot *r) {
+    r->skip->parked = 0;
+    r->doze_until = 0;
+}
+
+/* Robot r up to end (or until it stops), instruction by instruction but
+ * for the repeats of a loop it skips. */
+static void run_until(robot *r, avr_cycle_count_t end, int may_park) {
     while (!robot_finished(r) && r->avr->cycle < end) {
         if (!pc_in_flash(r->avr)) {
             r->state = cpu_Crashed; /* main.c's report says where the PC went */
@@ -95,6 +126,13 @@ static int run_robot(robot *r) {
         if (invalid_opcode_ahead(r->avr)) {
             invalid_opcode_stop(r->avr, r->avr->pc); /* before simavr reads past the flash */
             break;
+        }
+        if (r->skip_anchor == r->avr->pc && loop_skip_repeats(r) != 0) {
+            if (skip_ahead(r, end)) {
+                if (may_park) break;
+                unpark(r);
+            }
+            if (r->avr->cycle >= end) break;
         }
         power_down_before_step(r);
         register_store_check(r);
@@ -108,6 +146,24 @@ static int run_robot(robot *r) {
         power_down_after_step(r);
         if (robot_at_bootloader(r)) r->state = cpu_Done; /* nothing there to run */
     }
+}
+
+/* Robot r up to the window's end; 1 when it has stopped. With several
+ * robots a sleeping one is woken at the window's end, so it never skips
+ * past what the others do. */
+static int run_robot(robot *r) {
+    if (r->doze_until > window_end) return 0;
+    avr_cycle_count_t end = own_cycles(r, window_end);
+    if (n_robots > 1 && !robot_finished(r) && r->avr->cycle < end && dozing_through(r, end)) return 0;
+    if (r->skip != NULL) {
+        loop_skip_window_start(r);
+        if (r->skip->parked && skip_ahead(r, end)) return 0;
+    }
+    if (n_robots > 1 && !robot_finished(r) && r->avr->cycle < end) {
+        avr_cycle_timer_register(r->avr, end - r->avr->cycle, wake_up, NULL);
+        r->wake_registered = 1;
+    }
+    run_until(r, end, 1);
     return robot_finished(r);
 }
 
@@ -118,14 +174,50 @@ static int run_share(int t) {
     return all_stopped;
 }
 
-void lockstep_begin(robot *all, int n, uint32_t hz, int threads, int profile) {
+/* A parked robot as if it had run to the last window's end (lockstep.h). */
+void lockstep_settle(robot *r) {
+    if (r->skip == NULL || !r->skip->parked) return;
+    unpark(r);
+    avr_cycle_count_t end = own_cycles(r, window_end);
+    if (skip_ahead(r, end)) unpark(r);
+    run_until(r, end, 0);
+}
+
+void lockstep_settle_all(void) {
+    for (int i = 0; i < n_robots; i++) lockstep_settle(&robots[i]);
+}
+
+uint64_t lockstep_skipped_cycles(void) {
+    uint64_t sum = 0;
+    for (int i = 0; i < n_robots; i++)
+        if (robots[i].skip != NULL) sum += robots[i].skip->skipped;
+    return sum;
+}
+
+/* After everything that registers I/O callbacks (loop_skip_attach). */
+static int skip_loops(void) {
+    for (int i = 0; i < n_robots; i++) {
+        robots[i].skip_anchor = LOOP_SKIP_NO_ANCHOR;
+        if (skipping && loop_skip_attach(&robots[i], wake_up) != 0) {
+            fprintf(stderr, "openswarm-sim: out of memory for the loop skip of %d robots: run with "
+                            "--no-loop-skip, or fewer robots\n", n_robots);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int lockstep_begin(robot *all, int n, uint32_t hz, int threads, int profile, int skip) {
     robots = all;
     n_robots = n;
     nominal_hz = hz;
     profiling = profile;
+    skipping = skip;
+    if (skip_loops() != 0) return -1;
     /* The profile's tables are shared: one thread. */
     n_threads = profiling ? 1 : window_workers_count(threads, n, ROBOTS_PER_THREAD);
     window_workers_begin(n_threads, run_share);
+    return 0;
 }
 
 int lockstep_window(avr_cycle_count_t end) {
@@ -133,4 +225,7 @@ int lockstep_window(avr_cycle_count_t end) {
     return window_workers_run();
 }
 
-void lockstep_end(void) { window_workers_end(); }
+void lockstep_end(void) {
+    window_workers_end();
+    for (int i = 0; i < n_robots; i++) loop_skip_detach(&robots[i]);
+}

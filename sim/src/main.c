@@ -104,6 +104,16 @@ static void report_crash(const robot *r, const options *o, double t) {
             r->console.prefix, t, code_place(firmware_of(o, r->index), r->avr->pc, place, sizeof place));
 }
 
+/* The robots' cycles fast-forwarded over loops (loop_skip.h), for the summary. */
+static uint64_t skipped_cycles;
+
+/* Of all the robots' cycles. */
+static double skipped_share(int n) {
+    double all = 0;
+    for (int i = 0; i < n; i++) all += (double)robots[i].avr->cycle;
+    return all > 0 ? (double)skipped_cycles / all : 0.0;
+}
+
 static int report(int n, const options *o) {
     int status = 0, crashed = 0, running = 0, booted = 0, hung = 0, memory_broken = 0;
     unsigned faults = 0;
@@ -150,7 +160,7 @@ static int report(int n, const options *o) {
     }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
     if (warnings_fail_run(warnings, o)) return EXIT_WARNINGS;
-    if (running && !o->quiet) progress_summary(o->seconds, n);
+    if (running && !o->quiet) progress_summary(o->seconds, n, skipped_share(n));
     return status;
 }
 
@@ -196,15 +206,18 @@ static void print_counters(const options *o, avr_cycle_count_t now) {
  * it. */
 static FILE *console_csv;
 
-/* The robots in lockstep windows until the time is up or all stopped. */
-static void run(const options *o) {
+/* The robots in lockstep windows until the time is up or all stopped; -1
+ * after a message if they could not start. */
+static int run(const options *o) {
     avr_cycle_count_t limit = (avr_cycle_count_t)(o->seconds * (double)nominal_hz);
     /* -1 (no --counters) is not a period: converted to cycles, a negative
      * number is undefined behaviour (UBSan, fuzz_sim_faults) */
     avr_cycle_count_t counters_every =
         o->counters_period > 0 ? (avr_cycle_count_t)(o->counters_period * (double)nominal_hz) : 0;
     avr_cycle_count_t next_counters = counters_every;
-    lockstep_begin(robots, o->robots, nominal_hz, o->threads, o->profile);
+    /* Skipping would hide instructions from the debugger and the profile. */
+    int skip = !o->no_loop_skip && o->gdb_port == 0 && !o->profile;
+    if (lockstep_begin(robots, o->robots, nominal_hz, o->threads, o->profile, skip) != 0) return -1;
     progress_start(o->progress, o->robots, nominal_hz);
     for (avr_cycle_count_t end = 0;;) {
         end += LOCKSTEP_CYCLES;
@@ -222,14 +235,18 @@ static void run(const options *o) {
         if ((all_stopped && o->robots > 0) || end == limit) break; /* none: run to the end */
         if (interrupt_stop_here((double)end / nominal_hz)) break;
         if (counters_every != 0 && end >= next_counters) {
+            lockstep_settle_all();
             print_counters(o, end);
             next_counters += counters_every;
         }
     }
+    lockstep_settle_all(); /* the robots as they stopped, not at a loop's head */
     if (o->counters_period >= 0 && o->robots > 0)
         print_counters(o, robots[0].avr->cycle * (uint64_t)nominal_hz / robots[0].avr->frequency);
     progress_end();
+    skipped_cycles = lockstep_skipped_cycles();
     lockstep_end();
+    return 0;
 }
 
 static int run_main(int argc, char **argv) {
@@ -278,7 +295,7 @@ static int run_main(int argc, char **argv) {
     ohc_attach(robots, o.robots, &o);
     faults_attach(robots, nominal_hz);
 
-    run(&o);
+    if (run(&o) != 0) return EXIT_USAGE;
     int written = 0; /* -1: an output could not be written (reported) */
     for (int i = 0; i < o.robots; i++) {
         if (csv != NULL || o.trace) trace_flush(&robots[i]);

@@ -196,6 +196,7 @@ int parse_options(int argc, char **argv, options *o) {
         {"timestamps", no_argument, 0, 'T' + 256},
         {"faults", required_argument, 0, 'f' + 256}, {"fault-log", required_argument, 0, 'l' + 256},
         {"counters", required_argument, 0, 'c' + 256},
+        {"no-loop-skip", no_argument, 0, 'L' + 256},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->seconds = 10.0;
@@ -223,6 +224,7 @@ int parse_options(int argc, char **argv, options *o) {
         case 'f' + 256: if (add_faults(optarg, o) != 0) return -1; break;
         case 'l' + 256: o->fault_log = optarg; break;
         case 'c' + 256: if (parse_period(optarg, o) != 0) return -1; break;
+        case 'L' + 256: o->no_loop_skip = 1; break;
         case 'd': if ((v = number("--distance", optarg, 10, 1000, "40")) < 0) return -1; place.distance_mm = (int)v; o->given |= GIVEN_PLACEMENT; break;
         case 'N': place.line = optarg; o->given |= GIVEN_PLACEMENT; break;
         case 'P': place.positions = o->positions = optarg; o->given |= GIVEN_PLACEMENT; break;

@@ -47,8 +47,11 @@ void progress_end(void) {
     if (shown && wall_now() - started >= FIRST_AFTER_S) fprintf(stderr, "\r\033[K");
 }
 
-void progress_summary(double seconds, int robots) {
+void progress_summary(double seconds, int robots, double skipped_share) {
     double wall = wall_now() - started;
     fprintf(stderr, "openswarm-sim: ran %.3f s of simulated time (%d robot%s) in %.1f s, %.1fx real "
-                    "time\n", seconds, robots, robots > 1 ? "s" : "", wall, factor(seconds, wall));
+                    "time", seconds, robots, robots > 1 ? "s" : "", wall, factor(seconds, wall));
+    if (skipped_share > 0)
+        fprintf(stderr, "; %.0f%% of the cycles fast-forwarded over loops that repeat", 100 * skipped_share);
+    fprintf(stderr, "\n");
 }

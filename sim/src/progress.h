@@ -12,7 +12,9 @@
 void progress_start(int show, int robots, uint32_t nominal_hz);
 void progress_update(avr_cycle_count_t cycle);
 void progress_end(void);
-/* "ran 10.000 s of simulated time (3 robots) in 2.1 s, 4.8x real time" */
-void progress_summary(double seconds, int robots);
+/* "ran 10.000 s of simulated time (3 robots) in 2.1 s, 4.8x real time",
+ * and the share of the robots' cycles fast-forwarded over loops
+ * (loop_skip.h) when some were (skipped_share > 0). */
+void progress_summary(double seconds, int robots, double skipped_share);
 
 #endif

@@ -103,6 +103,7 @@ typedef struct options {
     struct fault_spec *faults; /* --faults (faults/faults.h); NULL: none */
     const char *fault_log;     /* --fault-log FILE */
     double counters_period;    /* --counters PERIOD: seconds; 0: at the end only; -1: never */
+    int no_loop_skip;          /* --no-loop-skip: every repeat of a loop run (loop_skip.h) */
 } options;
 
 /* What the command line set, for what a world file may also set. */
@@ -266,6 +267,10 @@ typedef struct robot {
      * on a sleeping robot from outside (an IR edge) sets it back to 0. */
     avr_cycle_count_t doze_until;
     int wake_registered; /* its window-end timer is set */
+    /* loop_skip.h: the instruction where the state is compared with the
+     * last visit's (LOOP_SKIP_NO_ANCHOR: none), and the rest (NULL: off). */
+    uint32_t skip_anchor;
+    struct loop_skip *skip;
     uint16_t main_stack_floor; /* the RAM the image reserves ends here; 0: unmeasured */
     avr_cycle_count_t masked_since; /* interrupts off since this cycle; 0: they are on */
     int hung;                  /* reported: interrupts masked past the limit */

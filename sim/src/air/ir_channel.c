@@ -45,6 +45,7 @@
 #include "sim.h"
 #include "air/ir_distance_error.h"
 #include "air/ir_faults.h"
+#include "lockstep.h"
 
 #define AIN1_MV 500 /* the comparator's threshold */
 #define EDGE_GAP 8
@@ -261,6 +262,7 @@ static int passes_faults(ir_station *from, ir_link *l, const ir_sent *sent) {
 
 /* --faults: the added pulses whose time the sender has passed. */
 static void add_due_pulses(ir_station *from, uint32_t latency) {
+    lockstep_settle(from->robot); /* its clock says which are due */
     int pending = 0;
     for (int k = 0; k < from->n_links; k++) {
         ir_link *l = &from->links[k];
@@ -293,6 +295,7 @@ static void collect(ir_station *from, uint32_t latency) {
 
 static void enqueue(ir_station *s, ir_edge e) {
     if (s->robot->off_until != 0) return; /* powered off (--faults brownout): deaf */
+    lockstep_settle(s->robot); /* an edge due at once comes after the instruction it has reached */
     avr_t *avr = s->robot->avr;
     if (e.at <= avr->cycle) e.at = avr->cycle + 1;
     if (e.at < s->next_free) e.at = s->next_free;

@@ -21,6 +21,8 @@
 #include <sim_io.h>
 
 #include "faults/faults.h"
+#include "lockstep.h"
+#include "loop_skip.h"
 
 /* avr_reset clears the registers but not the values simavr's output IRQs
  * last carried, and a raise to the value an IRQ holds may notify nobody:
@@ -37,6 +39,7 @@ static void outputs_as_at_reset(avr_t *avr) {
 }
 
 static void start_again(robot *r) {
+    loop_skip_forget(r);
     avr_reset(r->avr);
     r->avr->state = cpu_Running;
     r->state = cpu_Running;
@@ -52,7 +55,10 @@ static void start_again(robot *r) {
     ir_channel_robot_reset(r->index);
 }
 
+/* The reset comes at the instruction the robot reached, and RAM keeps
+ * what it held then: a robot parked at a loop's head runs on to it first. */
 void power_cycle_reset(robot *r) {
+    lockstep_settle(r);
     start_again(r);
     ohc_robot_reset(r);
 }
@@ -62,6 +68,7 @@ void power_cycle_reset(robot *r) {
 #define NEVER ((avr_cycle_count_t)-1)
 
 void power_cycle_off(robot *r, avr_cycle_count_t on) {
+    lockstep_settle(r);
     start_again(r);
     r->off_until = on;
     r->doze_until = NEVER;

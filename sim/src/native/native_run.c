@@ -280,7 +280,7 @@ static int report(const options *o) {
     }
     if (running && o->expect_stop) return EXIT_TIMEOUT;
     if (warnings_fail_run(warnings, o)) return EXIT_WARNINGS;
-    if (running && !o->quiet) progress_summary(o->seconds, n_robots);
+    if (running && !o->quiet) progress_summary(o->seconds, n_robots, 0);
     return status;
 }
 
