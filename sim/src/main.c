@@ -189,7 +189,7 @@ static int load_robots(const options *o, FILE *csv) {
     }
     for (int i = 0; i < o->robots; i++)
         if (setup_robot(&robots[i], i, o, csv) != 0) return -1;
-    ir_channel_attach(robots, o->robots, o->ir_range_mm, o->ir_loss_pct, &o->ir_distance);
+    ir_channel_attach(robots, o->robots, o->ir_range_mm, o->ir_loss_pct, o->ir_loss_seed, &o->ir_distance);
     if (o->world == NULL) ir_channel_place(placement_distance_of, (void *)&o->place);
     else if (world_avr_start(robots, o->robots, o, nominal_hz) != 0) return -1;
     return 0;

@@ -88,6 +88,7 @@ typedef struct options {
     double clock_spread_pct; /* robots' clocks differ by up to this, either way */
     double ir_loss_pct;      /* a frame's chance to be lost at the range's edge */
     ir_distance_error ir_distance; /* the distance estimates' error: a world's "ir" (none without) */
+    uint64_t ir_loss_seed;   /* the loss draws': from a world's seed (0 without a world) */
     ohc_message ohc[MAX_OHC_MESSAGES];
     int n_ohc;
     int calibration[4]; /* turn left, turn right, straight left, straight right; -1: erased */
@@ -575,9 +576,11 @@ uint16_t ir_frame_crc(const uint8_t *bytes);
 
 /* ir_channel.c: every robot hears the IR LED of every other within range */
 /* loss_pct: the chance, in percent, that a frame is lost to a receiver at
- * the range's edge; closer, it falls with the distance squared. distance:
- * the error of the distance the receivers read (NULL: none). */
-void ir_channel_attach(robot *all, int n, int range_mm, double loss_pct, const ir_distance_error *distance);
+ * the range's edge; closer, it falls with the distance squared; each
+ * sender draws its losses from its own stream of loss_seed. distance: the
+ * error of the distance the receivers read (NULL: none). */
+void ir_channel_attach(robot *all, int n, int range_mm, double loss_pct, uint64_t loss_seed,
+                       const ir_distance_error *distance);
 /* How far apart robots a and b are, in mm. */
 typedef double (*ir_distance_fn)(int a, int b, void *ctx);
 /* Who reaches whom, from where the robots are now; again when they move. */

@@ -7,8 +7,8 @@ several seeds in each, and Welch's t-test on the two sets.
 runs WORLD (its "seed" replaced by 1..SEEDS, for SECONDS of simulated time
 or its duration_s) with the firmware in the exact mode and the same program
 built natively, computes the behaviour's metric from each run's
-trajectories.csv, and prints both means, their difference and the test's
-p-value. The modes agree when p >= 0.01: no evidence at the 1% level that
+trajectories.csv (or console.csv), and prints both means, their
+difference and the test's p-value. The modes agree when p >= 0.01: no evidence at the 1% level that
 the metric's mean differs (docs/world.md, "Native mode"). Exits 1 when they
 do not agree; with --differ, the other way round: a program whose
 behaviour hangs on what the modes do differently (16-bit `int`) must be
@@ -21,7 +21,10 @@ Metrics (larger or smaller is not better; they only have to agree):
   phototaxis  mean final distance to the lamp over the starting distance
   gradient    time until every robot shows its hop count's colour to the end, s
   synchronisation  mean spread of a flash over the robots in the second half, s
+  reception   frames a robot heard, mean over the robots (a program that prints
+              "heard" for each: tests/avr/world_distances.c)
 """
+import csv
 import json
 import math
 import os
@@ -34,19 +37,19 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from behaviour import paths  # noqa: E402
 
 
-def disperse(robots, world):
+def disperse(robots, world, out):
     last = [p[-1][1:3] for p in robots.values()]
     return sum(min(math.dist(a, b) for b in last if b is not a) for a in last) / len(last)
 
 
-def orbit(robots, world):
+def orbit(robots, world, out):
     star, planet = robots[0], robots[1]
     sx, sy = star[-1][1:3]
     late = [math.hypot(x - sx, y - sy) for t, x, y, _, _ in planet if t >= 20.0]
     return sum(abs(d - 60.0) for d in late) / len(late)
 
 
-def phototaxis(robots, world):
+def phototaxis(robots, world, out):
     lamp = (world["light"]["sources"][0]["x_mm"], world["light"]["sources"][0]["y_mm"])
     return sum(math.dist(p[-1][1:3], lamp) / math.dist(p[0][1:3], lamp) for p in robots.values()) / len(robots)
 
@@ -54,7 +57,7 @@ def phototaxis(robots, world):
 COLOURS = {0: (3, 0, 0), 1: (0, 3, 0), 2: (0, 0, 3)}
 
 
-def gradient(robots, world):
+def gradient(robots, world, out):
     """Hop counts by breadth-first search over the IR range from robot 0
     (the seed); the first sample time from which every robot's LED stays
     its hop count's colour (white for 3 or more)."""
@@ -77,7 +80,7 @@ def gradient(robots, world):
     return settled
 
 
-def synchronisation(robots, world):
+def synchronisation(robots, world, out):
     """How far apart the robots flash once they have had time to agree:
     over robot 0's flashes in the second half of the run, the mean of the
     largest distance from one to any robot's nearest flash, s."""
@@ -89,6 +92,13 @@ def synchronisation(robots, world):
     return sum(gaps) / len(gaps)
 
 
+def reception(robots, world, out):
+    """A crowd's reception: the frames each robot heard, on average."""
+    with open(os.path.join(out, "console.csv")) as f:
+        heard = sum(1 for row in csv.DictReader(f) if row["line"].startswith("heard "))
+    return heard / len(robots)
+
+
 def run(sim, firmware, world, seed, out, seconds):
     os.makedirs(out, exist_ok=True)
     spec = dict(world, seed=seed)
@@ -96,7 +106,8 @@ def run(sim, firmware, world, seed, out, seconds):
     with open(path, "w") as f:
         json.dump(spec, f)
     extra = ["--time", str(seconds)] if seconds else []
-    done = subprocess.run([sim, "--world", path, "--out", out, "-q", "--threads", "1", *extra, firmware],
+    console = ["--console-csv", os.path.join(out, "console.csv")]
+    done = subprocess.run([sim, "--world", path, "--out", out, "-q", "--threads", "1", *console, *extra, firmware],
                           capture_output=True, text=True, timeout=600)
     if done.returncode != 0:
         sys.exit(f"openswarm-sim failed ({done.returncode}) on seed {seed}:\n{done.stderr}")
@@ -148,8 +159,9 @@ def crosscheck(sim, behaviour, exact, native, world_path, out, seeds, seconds=No
     metric = globals()[behaviour]
     results = {}
     for mode, firmware in (("exact", exact), ("native", native)):
-        results[mode] = [metric(run(sim, firmware, world, s, os.path.join(out, f"{mode}{s}"), seconds), world)
-                         for s in range(1, seeds + 1)]
+        runs = [os.path.join(out, f"{mode}{s}") for s in range(1, seeds + 1)]
+        results[mode] = [metric(run(sim, firmware, world, s, d, seconds), world, d)
+                         for s, d in zip(range(1, seeds + 1), runs)]
     t, p = welch(results["exact"], results["native"])
     return results["exact"], results["native"], t, p
 

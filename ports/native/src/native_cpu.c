@@ -119,6 +119,29 @@ void native_spend(uint64_t cycles) {
     if (native_now >= due) reached_due();
 }
 
+/* Hardware running on its own while the CPU polls it (a character on the
+ * serial port, a conversion, an EEPROM write): interrupts come when due,
+ * and the time they take counts, as the hardware goes on meanwhile. */
+void native_wait_for_hardware(uint64_t cycles) {
+    uint64_t until = native_now + cycles;
+    while (native_now < until) {
+        if (due > native_now) native_now = due < until ? due : until;
+        if (native_now >= due) reached_due();
+    }
+}
+
+/* A loop that counts its own cycles (_delay_ms): interrupts come when
+ * due, and the time they take does not count, so it ends later. */
+void native_busy_loop(uint64_t cycles) {
+    while (cycles != 0) {
+        uint64_t room = due > native_now ? due - native_now : 0;
+        uint64_t step = room < cycles ? room : cycles;
+        native_now += step;
+        cycles -= step;
+        if (native_now >= due) reached_due();
+    }
+}
+
 /* ---- the port's interrupt mask ---- */
 
 port_irq_state_t port_irq_save(void) {

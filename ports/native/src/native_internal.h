@@ -25,6 +25,13 @@ void native_due_again(void);
 /* Work done outside the instrumented code (a frame's transmission, a
  * conversion): the clock advances, interrupts due meanwhile come after. */
 void native_spend(uint64_t cycles);
+/* Waits with interrupts as they are: for hardware that runs on by itself
+ * (a UART character, a conversion: the interrupts' time counts toward it),
+ * and a loop that counts its own cycles (_delay_ms: it does not). Holding
+ * interrupts back instead lost the frames that began meanwhile: robots
+ * that printed what they heard missed the next frame. */
+void native_wait_for_hardware(uint64_t cycles);
+void native_busy_loop(uint64_t cycles);
 uint8_t native_irq_masked(void);
 void native_tickless_wake(void);
 
@@ -60,8 +67,10 @@ void native_board_tick(void);
 int native_board_tick_hooked(void);
 int native_board_tick_needed(void);
 void native_board_elapsed(uint16_t ms);
-/* The receiver's interrupt: the inbox's first frame has arrived. */
+/* The receiver's interrupt: the inbox's first frame has arrived. It
+ * counts the frames it took in (their distance takes the ADC). */
 void native_ir_interrupt(void);
+extern uint32_t native_ir_receptions;
 /* The board's interrupt for the inputs the simulator set in its native_io
  * (board, board_inputs): called with board_inputs cleared. */
 void native_board_inputs(void);

@@ -46,6 +46,7 @@
 #include "air/ir_distance_error.h"
 #include "air/ir_faults.h"
 #include "lockstep.h"
+#include "world/world_random.h"
 
 #define AIN1_MV 500 /* the comparator's threshold */
 #define EDGE_GAP 8
@@ -85,7 +86,7 @@ typedef struct ir_station {
     int n_out, out_room;
     avr_cycle_count_t last_flash;
     uint64_t frames;      /* frames it started, counting the one on the air */
-    uint32_t loss_random; /* its own fixed sequence: runs lose the same frames on any thread */
+    uint64_t loss_random; /* its own stream of the loss seed: runs lose the same frames on any thread */
     char *frame_reach;    /* with --ir-log: "1, 2; lost at 2" for the frame on the air */
     int reach_room;
     /* With IR faults: the rises of the frame on the air, and whether a
@@ -146,14 +147,6 @@ static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void
     return s->queue[s->head].at; /* the same timer, again then */
 }
 
-/* A number in [0, 1) from a sender's fixed xorshift sequence. */
-static double next_random(ir_station *s) {
-    s->loss_random ^= s->loss_random << 13;
-    s->loss_random ^= s->loss_random >> 17;
-    s->loss_random ^= s->loss_random << 5;
-    return s->loss_random / 4294967296.0;
-}
-
 /* For --ir-log: "1, 2; lost at 2", the receivers the frame starting now
  * reaches and those it is lost at. */
 static void describe_reach(ir_station *from) {
@@ -193,7 +186,7 @@ static int draw_losses(ir_station *from, avr_cycle_count_t sent) {
     from->frames++;
     for (int k = 0; k < from->n_links; k++) {
         ir_link *l = &from->links[k];
-        l->lost_until = l->loss > 0 && next_random(from) < l->loss ? sent + FRAME_CYCLES : 0;
+        l->lost_until = l->loss > 0 && world_random_uniform(&from->loss_random) < l->loss ? sent + FRAME_CYCLES : 0;
         if (distance_error.noise_mm > 0) sense_distance(from, l);
     }
     if (ir_log_enabled()) describe_reach(from);
@@ -383,7 +376,8 @@ int ir_channel_links(int sender, int *receivers, int room) {
     return from->n_links;
 }
 
-void ir_channel_attach(robot *all, int n, int range, double loss, const ir_distance_error *distance) {
+void ir_channel_attach(robot *all, int n, int range, double loss, uint64_t loss_seed,
+                       const ir_distance_error *distance) {
     stations = calloc((size_t)n, sizeof *stations);
     if (stations == NULL) {
         fprintf(stderr, "openswarm-sim: out of memory for %d robots\n", n);
@@ -396,8 +390,7 @@ void ir_channel_attach(robot *all, int n, int range, double loss, const ir_dista
     for (int i = 0; i < n; i++) {
         ir_station *s = &stations[i];
         s->robot = &all[i];
-        s->loss_random = 0x2545F491u ^ (uint32_t)i * 2654435761u;
-        if (s->loss_random == 0) s->loss_random = 1;
+        s->loss_random = world_random_stream(loss_seed, (uint64_t)i);
         avr_t *avr = all[i].avr;
         s->ain0 = avr_io_getirq(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0);
         s->high_gain = avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0);

@@ -48,10 +48,7 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
     latency = lat;
     receiver_rng = malloc((size_t)n * sizeof *receiver_rng);
     last_start = calloc((size_t)n, sizeof *last_start);
-    for (int i = 0; receiver_rng != NULL && i < n; i++) {
-        receiver_rng[i] = seed ^ (0xD1B54A32D192ED03ull * (uint64_t)(i + 1));
-        world_random_next(&receiver_rng[i]);
-    }
+    for (int i = 0; receiver_rng != NULL && i < n; i++) receiver_rng[i] = world_random_stream(seed, (uint64_t)i);
 }
 
 /* Robots by cell of a grid range_mm wide (when their positions are

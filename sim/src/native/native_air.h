@@ -12,7 +12,8 @@
 #include "sim.h"
 #include "native/native_swarm.h"
 
-/* latency: nominal cycles from a frame's start to its first pulse at the
+/* seed: the loss and noise draws', each receiver its own stream of it;
+ * latency: nominal cycles from a frame's start to its first pulse at the
  * receivers (at least a window: it must reach them in their future);
  * distance: the error of the distance they read (NULL: none), the exact
  * mode's model (air/ir_distance_error.h). */

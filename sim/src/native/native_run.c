@@ -207,7 +207,7 @@ static int start(const options *o, const char *path) {
     senders = malloc((size_t)o->robots * sizeof *senders);
     if (lines == NULL || senders == NULL) return -1;
     uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
-    native_air_start(o->robots, o->ir_range_mm, o->ir_loss_pct, 0x2545F4914F6CDD1Dull, nominal_hz, window,
+    native_air_start(o->robots, o->ir_range_mm, o->ir_loss_pct, o->ir_loss_seed, nominal_hz, window,
                      &o->ir_distance);
     for (int i = 0; i < o->robots; i++) configure(i, o);
     if (o->world != NULL) {

@@ -163,6 +163,7 @@ int world_options_check(options *o) {
      * seed as it is. */
     o->ir_distance = (ir_distance_error){spec.ir_distance_bias_mm, spec.ir_distance_noise_mm,
                                          (uint64_t)spec.seed ^ 0x49524469737400ull};
+    o->ir_loss_seed = (uint64_t)spec.seed ^ 0x49524C6F7373ull; /* "IRLoss" */
     if (!(o->given & GIVEN_CLOCK_SPREAD) && spec.clock_spread_pct >= 0)
         o->clock_spread_pct = spec.clock_spread_pct;
     if (o->temperature_mv < 0) o->temperature_mv = ROOM_TEMPERATURE_MV;

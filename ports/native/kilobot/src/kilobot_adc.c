@@ -20,8 +20,13 @@ static double gaussian(void) {
     return sqrt(-2.0 * log(u > 0 ? u : 1e-300)) * cos(2.0 * M_PI * v);
 }
 
+/* Interrupts run during the conversion, as on the robot; a frame received
+ * meanwhile took the ADC for its distance, and the reading is lost (-1),
+ * as the exact mode's board loses it (ports/kilobot/src/devices/adc.c). */
 int16_t kilobot_adc_read(uint8_t input) {
-    native_spend(CONVERSION_CYCLES);
+    uint32_t receptions = native_ir_receptions;
+    native_wait_for_hardware(CONVERSION_CYCLES);
+    if (receptions != native_ir_receptions) return -1;
     native_io *io = native_io_of_robot;
     if (input >= NATIVE_ADC_INPUTS) return 0;
     double reference = input == KILOBOT_ADC_TEMPERATURE ? INTERNAL_REFERENCE_MV : AVCC_MV;

@@ -51,7 +51,7 @@ void debug_init(void) { kilobot_console_init(); }
 static void serial_put(const char *text, size_t n) {
     if (!serial_ready) return;
     for (size_t i = 0; i < n; i++) {
-        native_spend(SERIAL_CHARACTER_CYCLES);
+        native_wait_for_hardware(SERIAL_CHARACTER_CYCLES);
         sim_putc(text[i]);
     }
 }

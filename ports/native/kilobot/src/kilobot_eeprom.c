@@ -1,6 +1,7 @@
 /* The EEPROM in the native mode (avr/eeprom.h): the robot's 1 KB in its
  * native_io, addresses taken modulo its size as the chip's address
- * register does. A byte written costs the 3.4 ms the chip takes. */
+ * register does. A byte written costs the 3.4 ms the chip takes, while
+ * interrupts come as they are due. */
 #include "native_internal.h"
 
 #include <avr/eeprom.h>
@@ -40,7 +41,7 @@ static void write_bytes(const uint8_t *from, void *address, size_t n, int only_c
     for (size_t i = 0; i < n; i++) {
         uint8_t *c = cell((uint8_t *)address + i);
         if (only_changed && *c == from[i]) continue;
-        native_spend(WRITE_CYCLES);
+        native_wait_for_hardware(WRITE_CYCLES);
         *c = from[i];
     }
 }
