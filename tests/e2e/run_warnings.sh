@@ -47,6 +47,18 @@ logged 0 "^Running" "$openswarm" run --time 0.5 --strict
 if grep -q "warning" out.log; then fail "a warning with the sensors initialised" out.log; fi
 cd ..
 
+# An event numbered past the pool (the blinky's 14 events, ids 0-13):
+# Sys_Register_Event refuses it uncounted, so its refused subscription is
+# the only trace, and the hint names the pool's size to raise.
+"$openswarm" new past --template blinky >/dev/null
+cd past
+sed -i 's|^    Sys_Subscribe_to_Event(EV_BLINK, SYS_PID_SYSTEM, count_blink, NULL);|&\n    Sys_Register_Event(40);\n    Sys_Subscribe_to_Event(40, SYS_PID_SYSTEM, count_blink, NULL);|' main.c
+grep -q "Sys_Register_Event(40)" main.c
+past="^openswarm-sim: warning: 1 subscription\(s\) refused: the event was not registered.*; an event numbered past the pool .*raise \"max_events\" in openswarm.json's \"kernel\" \(docs/openswarm-json.md\)$"
+logged 0 "$past" "$openswarm" run --time 0.5
+logged 0 "$past" "$openswarm" run --native --time 0.5
+cd ..
+
 # A kilolib program that asks for the analog sensors: kilolib's pools hold
 # neither their events' data nor their devices.
 "$openswarm" new classic --template kilolib >/dev/null
