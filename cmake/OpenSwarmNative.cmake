@@ -9,7 +9,8 @@
 # charges its work in the robot's cycles (-fsanitize-coverage=trace-pc);
 # the native port and board, which charge their own time, are not.
 
-set(OPENSWARM_NATIVE_PORT_SOURCES native_cpu.c native_context.c native_switch.S native_robot.c)
+set(OPENSWARM_NATIVE_PORT_SOURCES native_cpu.c native_context.c native_switch.S native_robot.c
+    native_handlers.c)
 list(TRANSFORM OPENSWARM_NATIVE_PORT_SOURCES PREPEND ${OPENSWARM_ROOT}/ports/native/src/)
 
 # The Kilobot: its board at message level, and the robot's own device,

@@ -19,6 +19,13 @@ typedef struct kernel_loss {
     const char *fix, *fix_on[2];
 } kernel_loss;
 
+/* A number at or past the event pool's size is refused by
+ * Sys_Register_Event without a count, so its subscriptions are the only
+ * trace: the counters cannot tell it from an event not registered yet. */
+#define PAST_THE_POOL                                                                                \
+    "; an event numbered past the pool (ids from 0 to \"max_events\" - 1) is never registered: "   \
+    "raise \"max_events\" in openswarm.json's \"kernel\" (docs/openswarm-json.md)"
+
 static const kernel_loss kernel_losses[] = {
     {0, "thread start(s) refused: no free thread slot", {"", ""},
      "raise \"max_threads\" in openswarm.json's \"kernel\", or declare the threads in its \"threads\"", {"", ""}},
@@ -43,9 +50,9 @@ static const kernel_loss kernel_losses[] = {
       " (a device's event, e.g. EPUCK_EVENT_PROXIMITY, is registered by epuck_devices_init())"},
      "register the event before subscribing to it: call ",
      {"kilobot_sensors_init() for a sensor's event, openswarm_app_start() for openswarm.json's, or "
-      "Sys_Register_Event, first",
+      "Sys_Register_Event, first" PAST_THE_POOL,
       "epuck_devices_init() for a device's event, openswarm_app_start() for openswarm.json's, or "
-      "Sys_Register_Event, first"}},
+      "Sys_Register_Event, first" PAST_THE_POOL}},
 };
 #define KERNEL_LOSSES (sizeof kernel_losses / sizeof kernel_losses[0])
 

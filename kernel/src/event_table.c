@@ -277,6 +277,13 @@ static OS_COLD void close_leaked_section(sys_pid pid) {
 #define HANDLER_WITH_PLACE OS_HOT
 #endif
 
+/* A port that watches which handlers run (the native mode's simulator, for
+ * its "handler never called") is told of each call; the robots' ports are
+ * not, and pay nothing. */
+#ifndef PORT_HANDLER_CALLED
+#define PORT_HANDLER_CALLED(function) ((void)0)
+#endif
+
 /* One handler call, if its condition accepts the occurrence; false to
  * unsubscribe. */
 static HANDLER_WITH_PLACE bool run_handler_with(sys_event_handler handler, condition_or_binding with,
@@ -284,10 +291,12 @@ static HANDLER_WITH_PLACE bool run_handler_with(sys_event_handler handler, condi
 #if OS_CFG_HANDLER_CONTEXT
     if (handler == bound) {
         const sys_event_binding *b = with.binding;
-        return (b->condition != NULL && !b->condition(data)) || b->handler(b->context, pid, data);
+        return (b->condition != NULL && !b->condition(data)) ||
+               (PORT_HANDLER_CALLED(b->handler), b->handler(b->context, pid, data));
     }
 #endif
-    return (with.condition != NULL && !with.condition(data)) || handler(pid, data->event, data);
+    return (with.condition != NULL && !with.condition(data)) ||
+           (PORT_HANDLER_CALLED(handler), handler(pid, data->event, data));
 }
 
 static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding with, sys_pid pid,
@@ -297,7 +306,7 @@ static OS_HOT bool run_handler(sys_event_handler handler, condition_or_binding w
 #if OS_CFG_HANDLER_CONTEXT
     plain = plain && handler != bound;
 #endif
-    if (plain) return handler(pid, data->event, data);
+    if (plain) return PORT_HANDLER_CALLED(handler), handler(pid, data->event, data);
 #endif
     return run_handler_with(handler, with, pid, data);
 }

@@ -376,6 +376,14 @@ int warnings_fail_run(int warnings, const options *o);
  * handler subscribed and never called as a warning; how many. */
 void handler_watch_attach(robot *r, const char *elf_path);
 int handler_watch_report(const robot *r, int robot_index);
+/* The kernel's and kilolib's own handlers, by a function's name: never
+ * warned of (the app did not subscribe them). */
+int handler_watch_library_name(const char *name);
+/* The warning of a handler never called, as each mode words it: the
+ * handler's place in the sources, its event's name, its thread, the run's
+ * simulated seconds. */
+void handler_never_called_note(int robot_index, const char *place, const char *event, unsigned pid,
+                               double seconds);
 static inline void handler_watch_step(robot *r) {
     uint8_t *ran = r->handler_watch.ran;
     uint32_t pc = r->avr->pc;
@@ -385,6 +393,11 @@ static inline void handler_watch_step(robot *r) {
 /* code_place.c: "stuck, main.c:17 (PC 0x1a2)", where a byte address is in
  * the sources of the ELF (avr-addr2line), as far as it can tell, in out. */
 const char *code_place(const char *elf, uint32_t pc, char *out, size_t size);
+/* The same for a host shared object (a native robot) and an offset into
+ * it (addr2line): "on_quiet, main.c:17", or the function alone, or the
+ * offset; the function's name alone into function (function_size). */
+const char *host_code_place(const char *so, uint64_t offset, char *out, size_t size, char *function,
+                            size_t function_size);
 /* After a window: a handler reported past its limit is named by where
  * robot r runs now (the tick that reported it has returned into it). */
 void fault_place_after_window(robot *r, const char *elf);

@@ -109,6 +109,21 @@ static uint32_t called_function(const robot *r, uint32_t entry) {
     return handler;
 }
 
+int handler_watch_library_name(const char *name) {
+    for (size_t i = 0; i < MAX_LIBRARY_HANDLERS; i++)
+        if (symbol_named(name, library_handler_names[i])) return 1;
+    return 0;
+}
+
+void handler_never_called_note(int robot_index, const char *place, const char *event, unsigned pid,
+                               double seconds) {
+    warning_note(robot_index, "the handler %s, subscribed to %s on thread %u, was never called in "
+                 "%.3f s: no occurrence of the event reached it (nothing sent it, its device was not "
+                 "started, or its condition refused each one); send the event, run longer, or "
+                 "unsubscribe a handler the app does not need",
+                 place, event, pid, seconds);
+}
+
 int handler_watch_report(const robot *r, int robot_index) {
     const handler_watch *w = &r->handler_watch;
     if (w->ran == NULL) return 0;
@@ -120,13 +135,9 @@ int handler_watch_report(const robot *r, int robot_index) {
         uint32_t handler = called_function(r, entry);
         if (handler == 0 || ran(w, handler)) continue;
         char place[400], event[96];
-        warning_note(robot_index, "the handler %s, subscribed to %s on thread %u, was never called in "
-                     "%.3f s: no occurrence of the event reached it (nothing sent it, its device was not "
-                     "started, or its condition refused each one); send the event, run longer, or "
-                     "unsubscribe a handler the app does not need",
-                     code_place(w->elf, handler, place, sizeof place),
-                     event_name(w->elf, ROBOT_KILOBOT, r->avr->data[entry + 4u], event, sizeof event),
-                     r->avr->data[entry + 5u], t);
+        handler_never_called_note(robot_index, code_place(w->elf, handler, place, sizeof place),
+                                  event_name(w->elf, ROBOT_KILOBOT, r->avr->data[entry + 4u], event, sizeof event),
+                                  r->avr->data[entry + 5u], t);
         warnings++;
     }
     return warnings;

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "native/native_handlers.h"
 #include "native/native_swarm.h"
 #include "openswarm/native_epuck.h"
 
@@ -128,6 +129,7 @@ static int warnings(void) {
     for (int i = 0; i < n_robots; i++) {
         const uint16_t *counters = native_swarm_robot_stats(i);
         if (counters != NULL) n += kernel_loss_warnings(i, ROBOT_EPUCK, counters);
+        n += native_handlers_report(i, i, ROBOT_EPUCK, controller, (double)step_end / hz);
     }
     return n;
 }

@@ -110,6 +110,7 @@ static int describe(const char *path, native_copy *c) {
     }
     struct link_map *map;
     if (dlinfo(c->handle, RTLD_DI_LINKMAP, &map) != 0) return -1;
+    c->base = map->l_addr;
     image_search s = {map->l_addr, 0, 0};
     dl_iterate_phdr(find_image, &s);
     if (s.end <= s.start) {

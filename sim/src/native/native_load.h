@@ -12,6 +12,7 @@
 
 typedef struct native_copy {
     void *handle;
+    uintptr_t base;     /* where it is loaded: an address less this is an offset into the file */
     native_entry entry;
     uint8_t *image;     /* this copy's RAM: its .data and .bss */
     size_t image_bytes;

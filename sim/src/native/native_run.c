@@ -15,6 +15,7 @@
 #include "interrupt.h"
 #include "output/output.h"
 #include "native/native_air.h"
+#include "native/native_handlers.h"
 #include "native/native_swarm.h"
 #include "progress.h"
 #include "world/world_run.h"
@@ -35,6 +36,7 @@ typedef struct console_line {
 static console_line *lines;
 static FILE *console_csv; /* --console-csv, written after each window in robot order */
 static unsigned faults_reported;
+static uint64_t run_end; /* the last window's end, nominal cycles: how long the run was */
 
 /* What the exact mode supports and this one does not (yet): refused by
  * name rather than ignored. */
@@ -231,6 +233,7 @@ static void run(const options *o) {
         after_window();
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         progress_update(end);
+        run_end = end;
         if (all_stopped || end == limit) break;
         if (interrupt_stop_here((double)end / nominal_hz)) break;
     }
@@ -249,6 +252,8 @@ static int report(const options *o) {
         /* what its kernel lost or refused, as the exact mode warns of it */
         const uint16_t *counters = native_swarm_robot_stats(i);
         if (counters != NULL) kernel_loss_warnings(n_robots > 1 ? i : -1, ROBOT_KILOBOT, counters);
+        native_handlers_report(i, n_robots > 1 ? i : -1, ROBOT_KILOBOT, firmware_of(o, 0),
+                               (double)run_end / nominal_hz);
         if (r->image_changed) {
             fprintf(stderr, "openswarm-sim: %sits RAM changed while it was not running: a stray "
                             "write from another robot's code; run the robots apart to find whose\n", prefix);

@@ -56,13 +56,22 @@ static uint8_t *has_run;
 
 native_robot *native_swarm_robot(int index) { return &robots[index]; }
 
-const void *native_swarm_robot_stats(int index) {
+const native_copy *native_swarm_copy_of(int index) { return &copies[index % n_threads]; }
+
+const void *native_swarm_robot_memory(int index, const void *address, size_t n) {
     int t = index % n_threads;
     const native_copy *c = &copies[t];
-    const uint8_t *at = c->entry.kernel_stats;
-    if (at == NULL || at < c->image || at >= c->image + c->image_bytes) return NULL;
+    const native_robot *r = &robots[index];
+    const uint8_t *at = address;
+    if (at >= r->memory && at + n <= r->memory + r->memory_bytes) return address; /* its stacks */
+    if (at < c->image || at + n > c->image + c->image_bytes) return NULL;
     /* robot index's RAM is in its copy while loaded, else in its saved image */
-    return (loaded[t] == index ? c->image : robots[index].image) + (at - c->image);
+    return (loaded[t] == index ? c->image : r->image) + (at - c->image);
+}
+
+const void *native_swarm_robot_stats(int index) {
+    const void *at = copies[index % n_threads].entry.kernel_stats;
+    return at != NULL ? native_swarm_robot_memory(index, at, 1) : NULL;
 }
 
 static uint64_t swap_halves(uint64_t x) { return x << 32 | x >> 32; }

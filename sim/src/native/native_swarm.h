@@ -50,6 +50,11 @@ native_robot *native_swarm_robot(int index);
 /* Where robot index's kernel counters (sys_stats) are now, in its copy or
  * its saved image; NULL if its image has none. */
 const void *native_swarm_robot_stats(int index);
+/* The copy of the shared object robot index runs in. */
+const native_copy *native_swarm_copy_of(int index);
+/* Where robot index's n bytes at address (as its code sees them: in its
+ * copy's RAM image, or its stacks) are now; NULL for anywhere else. */
+const void *native_swarm_robot_memory(int index, const void *address, size_t n);
 /* Power every robot up (after their native_io is filled), and start the
  * threads. */
 void native_swarm_boot(void);

@@ -30,7 +30,7 @@ extern "C" {
 
 /* Changes whenever native_io or native_entry changes shape: the simulator
  * refuses a robot built against another. */
-#define NATIVE_ROBOT_ABI 5
+#define NATIVE_ROBOT_ABI 6
 
 #define NATIVE_FRAME_BYTES 12
 #define NATIVE_EEPROM_BYTES 1024
@@ -40,6 +40,7 @@ extern "C" {
 #define NATIVE_CONSOLE_ROOM 2048
 #define NATIVE_FAULT_ROOM 8
 #define NATIVE_THREAD_NAMES 16
+#define NATIVE_HANDLERS_SEEN 32 /* distinct handler functions noted as called */
 
 /* The analog inputs, as the Kilobot's ADC numbers them (kilobot.h). */
 enum { NATIVE_ADC_VOLTAGE = 6, NATIVE_ADC_LIGHT = 7, NATIVE_ADC_TEMPERATURE = 8, NATIVE_ADC_INPUTS = 9 };
@@ -126,6 +127,11 @@ typedef struct native_io {
     const void *resume_sp;              /* where its stack resumes: the simulator fetches it ahead */
     uint64_t frames_lost_inbox_full;    /* frames the inbox had no room for (the simulator counts) */
     char thread_name[NATIVE_THREAD_NAMES][24]; /* by pid slot, from sim_thread_name */
+    /* Each handler function the kernel has called, once (PORT_HANDLER_CALLED);
+     * full: more than the room, those past it not noted (none is judged). */
+    uintptr_t handlers_called[NATIVE_HANDLERS_SEEN];
+    unsigned n_handlers_called;
+    uint8_t handlers_called_full;
 } native_io;
 
 /* What the robot exports (the simulator finds them by name). */

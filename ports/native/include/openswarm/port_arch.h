@@ -28,6 +28,11 @@ typedef uint8_t port_irq_state_t; /* 1: interrupts were masked */
 extern uint8_t *native_stack_pool;
 #define PORT_STACK_POOL native_stack_pool
 
+/* Each handler the kernel calls is noted for the simulator, which warns
+ * of a subscribed handler never called (native_handlers.c). */
+void native_handler_called(void (*function)(void));
+#define PORT_HANDLER_CALLED(function) native_handler_called((void (*)(void))(function))
+
 /* The board's facts (its event ids). */
 #include "openswarm/board_arch.h"
 
