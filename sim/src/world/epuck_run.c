@@ -26,7 +26,7 @@ static epuck_world_output *answers; /* each robot's last */
 static int n_robots;
 static output_robot *poses;
 static world_point *object_centres;
-static uint16_t frame[FRAME_PIXELS];
+static const uint16_t no_frame[1]; /* the pixels a step without a frame passes */
 static int camera_period_ms, camera_lag_ms;
 static int camera_depth; /* frames in flight a robot: the lag's periods and one */
 
@@ -47,21 +47,17 @@ static int start_controllers(const options *o, const world_spec *spec) {
         epuck_robot *r = &robots[i];
         r->rng = (uint64_t)spec->seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0xE9u);
         world_random_next(&r->rng);
-        if (camera_lag_ms > 0) r->frames = allocate((size_t)camera_depth * FRAME_PIXELS, sizeof *r->frames);
+        r->frames = allocate((size_t)camera_depth * FRAME_PIXELS, sizeof *r->frames);
     }
     return controllers->start(o, n_robots, answers);
 }
 
 /* Robot i's frame for this step, if one arrives: taken camera_lag_ms ago
  * (the sensor's readout and the transfer), kept in its ring until then.
- * Without a lag the frame is taken and delivered in the same step. */
+ * Without a lag the ring holds one frame, taken and delivered in the same
+ * step. */
 static const uint16_t *camera_frame(const world *physics, int i, uint32_t t_ms) {
     epuck_robot *r = &robots[i];
-    if (camera_lag_ms == 0) {
-        if (t_ms % (uint32_t)camera_period_ms != 0) return NULL;
-        epuck_camera_render(physics, i, frame);
-        return frame;
-    }
     if (t_ms % (uint32_t)camera_period_ms == 0)
         epuck_camera_render(physics, i, r->frames + (t_ms / camera_period_ms % camera_depth) * FRAME_PIXELS);
     if (t_ms < (uint32_t)camera_lag_ms || (t_ms - camera_lag_ms) % (uint32_t)camera_period_ms != 0) return NULL;
@@ -80,7 +76,7 @@ static int exchange(const world *physics, uint32_t t_ms) {
             in.frame_width = EPUCK_FRAME_WIDTH;
             in.frame_height = EPUCK_FRAME_HEIGHT;
         }
-        if (controllers->send(i, t_ms, &in, taken != NULL ? taken : frame) != 0) return -1;
+        if (controllers->send(i, t_ms, &in, taken != NULL ? taken : no_frame) != 0) return -1;
     }
     return controllers->receive(n_robots, answers);
 }
