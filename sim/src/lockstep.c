@@ -59,6 +59,22 @@ static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void
     return when + 1;
 }
 
+static void cancel_wake_up(robot *r) {
+    if (r->wake_registered) {
+        avr_cycle_timer_cancel(r->avr, wake_up, NULL);
+        r->wake_registered = 0;
+    }
+}
+
+/* Robot r is left alone until the window its timer at own cycle `when`
+ * falls in (UINT64_MAX: none), and at least until the next window. */
+static void doze_until_timer(robot *r, avr_cycle_count_t when) {
+    avr_cycle_count_t due = when == UINT64_MAX ? UINT64_MAX
+                            : r->avr->frequency == nominal_hz ? when
+                                                                : when * nominal_hz / r->avr->frequency;
+    r->doze_until = due > window_end ? due : window_end + 1;
+}
+
 /* A robot asleep until a timer past this window's end cannot act in it:
  * it stays behind until the window its next timer falls in. An IR edge
  * for it is one of its timers (air/ir_channel.c, which wakes it up here),
@@ -66,15 +82,10 @@ static avr_cycle_count_t wake_up(struct avr_t *avr, avr_cycle_count_t when, void
  * sleeping between 1 ms ticks is run in one window of 125. */
 static int dozing_through(robot *r, avr_cycle_count_t own_end) {
     if (r->state != cpu_Sleeping) return 0;
-    if (r->wake_registered) {
-        avr_cycle_timer_cancel(r->avr, wake_up, NULL);
-        r->wake_registered = 0;
-    }
+    cancel_wake_up(r); /* before reading the next timer: it may be that one */
     const avr_cycle_timer_slot_t *next = r->avr->cycle_timers.timer;
     if (next == NULL || next->when <= own_end) return 0;
-    avr_cycle_count_t due =
-        r->avr->frequency == nominal_hz ? next->when : next->when * nominal_hz / r->avr->frequency;
-    r->doze_until = due > window_end ? due : window_end + 1;
+    doze_until_timer(r, next->when);
     return 1;
 }
 
@@ -82,14 +93,8 @@ static int dozing_through(robot *r, avr_cycle_count_t own_end) {
  * window its next timer falls in (the others reach it by a timer, or
  * through lockstep_settle). */
 static void doze_parked(robot *r, avr_cycle_count_t next_timer) {
-    if (r->wake_registered) {
-        avr_cycle_timer_cancel(r->avr, wake_up, NULL);
-        r->wake_registered = 0;
-    }
-    avr_cycle_count_t due = next_timer == UINT64_MAX ? UINT64_MAX
-                            : r->avr->frequency == nominal_hz ? next_timer
-                                                                : next_timer * nominal_hz / r->avr->frequency;
-    r->doze_until = due > window_end ? due : window_end + 1;
+    cancel_wake_up(r);
+    doze_until_timer(r, next_timer);
 }
 
 /* Robot r at the head of a loop that repeats (loop_skip.h): the repeats
