@@ -41,6 +41,7 @@ struct ExperimentOptions {
     int trials = 0;         // 0: the file's
     double duration_s = 0;  // 0: the file's
     bool native = false;    // --native: as the file's "fidelity": "native"
+    TrialVideo video;       // --video, --video-fps, --video-speed, --video-trials
 };
 
 struct Sample {
@@ -88,21 +89,21 @@ nlohmann::json fingerprints_of(const std::string &world, const fs::path &program
 
 // The trial's samples when an earlier run of the same command did it, in
 // the same world with the same controller.
-bool done_before(Job &job, const nlohmann::json &fingerprints, double radius_mm) {
+bool done_before(Job &job, const nlohmann::json &fingerprints, double radius_mm, const TrialVideo &video) {
     nlohmann::json before = read_outcome(job.dir);
     if (before.value("status", "") != "done" || before.value("world", "") != fingerprints["world"] ||
-        before.value("controller", "") != fingerprints["controller"])
+        before.value("controller", "") != fingerprints["controller"] || video.missing(job.trial, job.dir, before))
         return false;
     job.samples = metrics_of(job.dir / "objects.csv", radius_mm);
     job.reused = !job.samples.empty();
     return job.reused;
 }
 
-void run_job(const Experiment &e, const Paths &paths, Job &job) {
+void run_job(const Experiment &e, const Paths &paths, const TrialVideo &video, Job &job) {
     const ExperimentController &c = e.controllers[job.controller];
     const std::string world = trial_world(e, job.seed, c.program);
     nlohmann::json outcome = fingerprints_of(world, c.program);
-    if (done_before(job, outcome, e.object_radius_mm)) return;
+    if (done_before(job, outcome, e.object_radius_mm, video)) return;
     forget_outcome(job.dir);
     std::error_code ec;
     fs::create_directories(job.dir, ec);
@@ -114,11 +115,12 @@ void run_job(const Experiment &e, const Paths &paths, Job &job) {
         job.failure = "cannot write " + (job.dir / "world.json").string() + " (the disk full?)";
         return;
     }
+    if (!video.wanted(job.trial)) fs::remove(job.dir / "video.mp4", ec); // an earlier run's, of another world
+    std::vector<std::string> command{paths.simulator.string(), "--quiet", "--no-progress", "--world",
+                                     (job.dir / "world.json").string(), "--out", job.dir.string()};
+    for (const std::string &option : video.arguments(job.trial)) command.push_back(option);
     std::string output;
-    int status = capture_program_and_errors({paths.simulator.string(), "--quiet", "--no-progress",
-                                             "--world", (job.dir / "world.json").string(), "--out",
-                                             job.dir.string()},
-                                            output);
+    int status = capture_program_and_errors(command, output);
     if (status != 0 && (interrupted_status(status) || interrupted() != 0)) {
         job.failure = not_run_yet; // no outcome.json: the next run does it
         return;
@@ -131,6 +133,7 @@ void run_job(const Experiment &e, const Paths &paths, Job &job) {
     }
     outcome["status"] = job.failure.empty() ? "done" : "failed";
     if (!job.failure.empty()) outcome["reason"] = job.failure;
+    if (status == 0 && video.wanted(job.trial)) outcome["video"] = video.request(job.trial);
     write_outcome(job.dir, outcome);
 }
 
@@ -140,8 +143,8 @@ size_t slot_of(const Job &j) { return (size_t)j.trial + j.controller; }
 
 // This rank's jobs shared out among workers; progress after each, with the
 // time left.
-void run_all(const Experiment &e, const Paths &paths, std::vector<Job> &jobs, const Ranks &ranks,
-             unsigned workers) {
+void run_all(const Experiment &e, const Paths &paths, const TrialVideo &video, std::vector<Job> &jobs,
+             const Ranks &ranks, unsigned workers) {
     std::vector<size_t> mine;
     for (size_t k = 0; k < jobs.size(); k++)
         if (ranks.mine(slot_of(jobs[k]))) mine.push_back(k);
@@ -153,7 +156,7 @@ void run_all(const Experiment &e, const Paths &paths, std::vector<Job> &jobs, co
     auto work = [&] {
         for (size_t i; !interrupted() && (i = next++) < mine.size();) {
             size_t k = mine[i];
-            run_job(e, paths, jobs[k]);
+            run_job(e, paths, video, jobs[k]);
             std::lock_guard<std::mutex> lock(print);
             if (pending(jobs[k])) {
                 std::printf("[%sstopped] %s, trial %d: %s\n", who.c_str(),
@@ -331,7 +334,7 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     std::fflush(stdout);
     auto began = std::chrono::steady_clock::now();
     pass_interrupts_on(); // Ctrl-C: the trials running stop, the rest wait for the next run
-    run_all(e, paths, jobs, ranks, workers);
+    run_all(e, paths, o.video, jobs, ranks, workers);
     gather(ranks, jobs);
     if (ranks.rank() != 0) return EXIT_OK;
     auto curves = curves_of(e, jobs);
@@ -350,9 +353,10 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     if (!written) report("cannot write the results into " + out.string() + ": " + why);
     std::printf("\n%zu of %zu trials ran in %s: %s, %s and .svg, each trial's final.png and "
-                "viewer.html\n",
+                "viewer.html%s\n",
                 jobs.size() - failed - not_run, jobs.size(), duration_text(spent).c_str(),
-                (out / "results.csv").string().c_str(), (out / "results.png").string().c_str());
+                (out / "results.csv").string().c_str(), (out / "results.png").string().c_str(),
+                o.video.on ? (o.video.trials.empty() ? ", video.mp4" : ", the trials asked for video.mp4") : "");
     if (interrupted()) {
         report(std::string("interrupted by ") + (interrupted() == SIGINT ? "SIGINT" : "SIGTERM") + ": " +
                std::to_string(not_run) + " trial" + (not_run == 1 ? "" : "s") + " not run yet; the results are "
@@ -360,6 +364,21 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
         return 128 + interrupted();
     }
     return failed || !written ? EXIT_FAILED : EXIT_OK;
+}
+
+void add_video_options(CLI::App *cmd, TrialVideo &video) {
+    auto on = cmd->add_flag("--video", video.on,
+                            "each trial also draws video.mp4 in its folder as it runs (needs ffmpeg); a trial done "
+                            "before without it runs again");
+    cmd->add_option("--video-fps", video.fps, "with --video: the video's frames a second, 1..100 (default 25)")
+        ->type_name("F")->check(CLI::Range(1.0, 100.0))->needs(on);
+    cmd->add_option("--video-speed", video.speed,
+                    "with --video: simulated seconds a second of video, 0.01..10000 (default 1: real time)")
+        ->type_name("X")->check(CLI::Range(0.01, 10000.0))->needs(on);
+    cmd->add_option("--video-trials", video.trials,
+                    "with --video: only these trials (counted from 1, as the progress lines name them; of every "
+                    "point or controller), e.g. --video-trials 1,3")
+        ->type_name("N,...")->delimiter(',')->check(CLI::Range(1, 10000))->needs(on);
 }
 
 }  // namespace
@@ -385,13 +404,14 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
                     "a sweep's K-th share of N (0-based), as a Slurm array task runs it: "
                     "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT")
         ->type_name("K/N");
+    add_video_options(cmd, o->video);
     cmd->callback([o, &paths] {
         Ranks ranks;
         int status;
         try {
             if (is_sweep_file(o->file))
-                status = run_sweep({o->file, o->out, o->jobs, o->trials, o->duration_s, o->shard, o->native}, paths,
-                                   ranks);
+                status = run_sweep({o->file, o->out, o->jobs, o->trials, o->duration_s, o->shard, o->native, o->video},
+                                   paths, ranks);
             else if (!o->shard.empty()) {
                 report("--shard: for sweep files (a \"world\" and what to vary in it); " + o->file +
                        " is a clustering experiment: spread it with mpirun instead (docs/case-study.md)");

@@ -191,6 +191,15 @@ Tally run_trials(const Sweep &s, const Paths &paths, std::vector<SweepTrial *> &
     return tally;
 }
 
+// The summary's word on videos: how many trials have theirs.
+std::string videos_made(const Sweep &s, const std::vector<SweepTrial> &trials) {
+    if (!s.video.on) return "";
+    size_t n = 0;
+    std::error_code ec;
+    for (const SweepTrial &t : trials) n += s.video.wanted(t.trial) && fs::is_regular_file(t.dir / "video.mp4", ec);
+    return " (video.mp4 in " + std::to_string(n) + " of them)";
+}
+
 }  // namespace
 
 int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
@@ -212,6 +221,7 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
             }
         s.native = true;
     }
+    s.video = o.video;
     size_t shard = 0, shards = 1;
     if (!parse_shard(o.shard, shard, shards)) return EXIT_USAGE;
     fs::path file(o.file);
@@ -285,12 +295,13 @@ int run_sweep(const SweepOptions &o, const Paths &paths, const Ranks &ranks) {
     if (!written) report("cannot write the results into " + out.string() + ": " + why);
     double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     std::printf("\n%zu of %zu trials done (%zu by an earlier run), %zu failed%s, in %s: %s, %s, %s, %zu plot%s in "
-                "%s; each trial's folder under %s\n",
+                "%s; each trial's folder under %s%s\n",
                 trials.size() - pending - failed, trials.size(), tally.reused, failed,
                 pending ? (", " + std::to_string(pending) + " not run yet").c_str() : "",
                 duration_text(spent).c_str(), (out / "results.csv").string().c_str(),
                 (out / "summary.csv").string().c_str(), (out / "trials.csv").string().c_str(), plots.size(),
-                plots.size() == 1 ? "" : "s", (out / "plots").string().c_str(), out.string().c_str());
+                plots.size() == 1 ? "" : "s", (out / "plots").string().c_str(), out.string().c_str(),
+                videos_made(s, trials).c_str());
     if (interrupted()) {
         report(std::string("interrupted by ") + (interrupted() == SIGINT ? "SIGINT" : "SIGTERM") + ": " +
                std::to_string(pending) + " trial" + (pending == 1 ? "" : "s") + " not run yet (trials.csv: pending); "

@@ -8,6 +8,7 @@
 
 #include "../experiment_ranks.hpp"
 #include "../paths.hpp"
+#include "../trial_video.hpp"
 
 namespace openswarm {
 
@@ -19,6 +20,7 @@ struct SweepOptions {
     double duration_s = 0;  // 0: the file's (or the world's)
     std::string shard;      // "K/N": every N-th trial from the K-th (0-based); empty: all
     bool native = false;    // every point in the native mode (--native)
+    TrialVideo video;       // the trials filmed (--video)
 };
 
 // The tool's exit status: 0 every trial done, 1 some failed (the rest

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../app_parameters.hpp"
+#include "../trial_video.hpp"
 #include "mark_placement.hpp"
 
 namespace openswarm {
@@ -47,6 +48,7 @@ struct Sweep {
     std::vector<std::filesystem::path> scripts;
     double every_s = 0;
     bool native = false; // every point's world in "fidelity": "native" (--native)
+    TrialVideo video;    // the trials filmed (--video)
 };
 
 // Whether the experiment file at path is a sweep (it names a "world"),

@@ -38,7 +38,8 @@ struct Fingerprints {
 
 // Written last (trial_outcome.hpp). simulated: the simulator's part went
 // well (a failure was the measuring's).
-void write_trial_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated) {
+// video: what the trial's video.mp4 was made with ("" for none).
+void write_trial_outcome(const SweepTrial &t, const Fingerprints &f, bool simulated, const std::string &video) {
     json outcome = {{"status", t.failure.empty() ? "done" : "failed"},
                     {"simulated", simulated},
                     {"seed", t.seed},
@@ -47,14 +48,15 @@ void write_trial_outcome(const SweepTrial &t, const Fingerprints &f, bool simula
                     {"parameters", t.parameters},
                     {"measures", f.measures}};
     if (!t.failure.empty()) outcome["reason"] = t.failure;
+    if (!video.empty()) outcome["video"] = video;
     write_outcome(t.dir, outcome);
 }
 
 // The simulator ran this world with this firmware before, and its outputs
-// are there to measure.
-bool simulated_before(const SweepTrial &t, const json &outcome, const Fingerprints &f) {
+// (with the video asked for now) are there to measure.
+bool simulated_before(const Sweep &s, const SweepTrial &t, const json &outcome, const Fingerprints &f) {
     return outcome.value("simulated", false) && outcome.value("world", "") == f.world &&
-           outcome.value("firmware", "") == t.firmware_hash;
+           outcome.value("firmware", "") == t.firmware_hash && !s.video.missing(t.trial, t.dir, outcome);
 }
 
 void measure(const Sweep &s, SweepTrial &t) {
@@ -90,7 +92,7 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
     const Fingerprints f{fingerprint(world + parameters), measures_fingerprint(s)};
     const json before = read_outcome(t.dir);
     std::error_code ec;
-    if (simulated_before(t, before, f)) {
+    if (simulated_before(s, t, before, f)) {
         t.reused = true;
         if (before.value("status", "") == "done" && before.value("measures", "") == f.measures &&
             fs::is_regular_file(t.dir / "metrics.csv", ec))
@@ -98,7 +100,7 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
         t.remeasured = true;
         measure(s, t);
         if (!t.failure.empty() && stopped(t, 0)) return;
-        write_trial_outcome(t, f, true);
+        write_trial_outcome(t, f, true, before.value("video", ""));
         return;
     }
     forget_outcome(t.dir);
@@ -111,12 +113,14 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
         t.failure = "cannot write " + (t.dir / "world.json").string() + " (the disk full?)";
         return;
     }
+    if (!s.video.wanted(t.trial)) fs::remove(t.dir / "video.mp4", ec); // an earlier run's, of another world
     std::vector<std::string> command{simulator.string(), "--quiet",   "--no-progress", "--world",
                                      (t.dir / "world.json").string(), "--out", t.dir.string()};
     // e-pucks' controllers print to the simulator's standard error; the
     // console's CSV is the Kilobots' (openswarm-sim refuses it beside e-pucks).
     if (!point.contains("robot") || point["robot"] != "epuck")
         command.insert(command.end(), {"--console-csv", (t.dir / "console.csv").string()});
+    for (const std::string &option : s.video.arguments(t.trial)) command.push_back(option);
     command.push_back(t.firmware.string());
     std::string output;
     int status = capture_program_and_errors(command, output);
@@ -130,7 +134,7 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
         measure(s, t);
         if (!t.failure.empty() && stopped(t, 0)) return;
     }
-    write_trial_outcome(t, f, status == 0);
+    write_trial_outcome(t, f, status == 0, status == 0 ? s.video.request(t.trial) : "");
 }
 
 void read_sweep_trial(SweepTrial &t) {
