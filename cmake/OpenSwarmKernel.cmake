@@ -76,8 +76,9 @@ set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
 set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/qemu_netduinoplus2.ld)
 # The same image as a robot of the world simulator (board world): the
-# link to the world on USART2 in place of the records (ports/epuck/epuck2/
-# qemu_world); the console and the exit status as on the qemu board.
+# link to the world on QEMU's standard input and output (semihosting) in
+# place of the records (ports/epuck/epuck2/qemu_world); the console and
+# the exit status as on the qemu board.
 set(OPENSWARM_BOARD_epuck2_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c

@@ -22,13 +22,13 @@ failures = []
 
 def qemu_controller():
     """The world starts a controller as a program without arguments: a
-    script that runs the image in QEMU, the link on the second serial
-    port (USART2) as its standard input and output, the robot's index in
-    the world (OPENSWARM_ROBOT_ID) as its id."""
+    script that runs the image in QEMU, which reads the link from QEMU's
+    standard input and answers on its standard output through semihosting,
+    the robot's index in the world (OPENSWARM_ROBOT_ID) as its id."""
     path = os.path.join(WORK, "epuck2_in_qemu.sh")
     with open(path, "w") as f:
         f.write("#!/bin/sh\nexec %s -M netduinoplus2 -display none -monitor none "
-                "-serial file:/dev/stderr -serial stdio "
+                "-serial file:/dev/stderr "
                 "-semihosting-config enable=on,target=native,arg=app,arg=--id=$OPENSWARM_ROBOT_ID "
                 "-icount shift=3,align=off,sleep=off -kernel %s\n" % (QEMU, QEMU_ELF))
     os.chmod(path, os.stat(path).st_mode | stat.S_IXUSR)
