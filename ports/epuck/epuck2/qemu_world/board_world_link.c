@@ -26,6 +26,7 @@
 #include "../../src/epuck_board.h"
 #include "../qemu/board_qemu.h"
 #include "../qemu/semihosting.h"
+#include "cpu_account.h"
 #include "openswarm/cortex_m4.h"
 #include "openswarm/epuck_world_link.h"
 #include "world_outputs.h"
@@ -42,6 +43,7 @@
 #define MAX_PIXELS (80u * 60u)
 
 static uint32_t ticks_left; /* of the current step; 0: answer at the next tick */
+static uint32_t link_since; /* when the link's own work (not the robot's) began */
 static int last_selector = -1;
 static uint16_t frame[MAX_PIXELS];
 
@@ -87,12 +89,15 @@ static void take_inputs(void) {
     if (pixels > MAX_PIXELS) link_broken("a frame larger than 80 x 60");
     receive(frame, pixels * sizeof frame[0]);
     if (in.flags & EPUCK_LINK_STOP) {
+        cpu_account_report();
         answer();
         epuck_world_losses losses;
         world_outputs_losses(&losses);
         send(&losses, sizeof losses);
         semihosting_exit(0);
     }
+    cpu_account_add(CPU_LINK, link_since);
+    uint32_t delivering = cpu_account_now();
     if (in.selector != last_selector) {
         last_selector = in.selector;
         epuck_selector_arrived((uint8_t)in.selector);
@@ -107,6 +112,8 @@ static void take_inputs(void) {
         epuck_camera_frame f = {frame, in.frame_width, in.frame_height, 0};
         epuck_camera_arrived(&f);
     }
+    cpu_account_add(CPU_SENSORS, delivering);
+    link_since = cpu_account_now();
     ticks_left = in.advance_ms;
 }
 
@@ -116,6 +123,7 @@ static void world_step(void) {
         ticks_left--;
         return;
     }
+    link_since = cpu_account_now();
     uint32_t running = SYST_CSR;
     SYST_CSR = 0;
     __asm__ __volatile__("cpsid i" ::: "memory");
@@ -129,6 +137,7 @@ static void world_step(void) {
     SCB_ICSR = SCB_ICSR_PENDSTCLR;
     SYST_CVR = 0;
     SYST_CSR = running;
+    cpu_account_add(CPU_LINK, link_since);
 }
 
 /* The robot's index in the world: the world gives it to the controller
@@ -142,5 +151,6 @@ void epuck_board_start(void) {
     if (world_in < 0 || world_out < 0)
         link_broken("cannot open QEMU's standard input and output: run QEMU with "
                     "-semihosting-config enable=on,target=native");
+    cpu_account_start();
     cortex_m4_tick_hook = world_step;
 }
