@@ -96,9 +96,9 @@ def timed(sim, name, controller, qemu):
     return {"wall": wall, "cpu": cpu, "qemu_cpu": qemu_cpu, "switches": switches, "out": out}
 
 
-def cpu_account(name):
-    """Robot 0's 'cpu account' line: us by kind."""
-    with open(os.path.join(WORK, f"{name}-0.console")) as f:
+def cpu_account(name, robot=0):
+    """A robot's 'cpu account' line: us by kind."""
+    with open(os.path.join(WORK, f"{name}-{robot}.console")) as f:
         line = [l for l in f if l.startswith("cpu account:")][-1]
     return {k.strip(): int(v) for k, v in re.findall(r"([a-z' ()]+?) (\d+) us", line)}
 
