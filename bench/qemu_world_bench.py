@@ -40,9 +40,14 @@ def run(cmd, **kw):
 
 
 def build(build_dir):
-    run(["cmake", "--build", build_dir, "--target", "openswarm-sim", "epuck_link_app", "qemu_firmware"])
-    return (os.path.join(build_dir, "sim", "openswarm-sim"), os.path.join(build_dir, "tests", "epuck_link_app"),
-            os.path.join(build_dir, "tests", "qemu", "epuck_link_app_qemu.elf"))
+    """The simulator, and each controller's host build and QEMU image: the
+    fidelity check's (kernel) and the case study's plain loop."""
+    run(["cmake", "--build", build_dir, "--target", "openswarm-sim", "epuck_link_app", "clustering_plain",
+         "qemu_firmware"])
+    tests = os.path.join(build_dir, "tests")
+    return (os.path.join(build_dir, "sim", "openswarm-sim"),
+            {"kernel": (os.path.join(tests, "epuck_link_app"), os.path.join(tests, "qemu", "epuck_link_app_qemu.elf")),
+             "plain": (os.path.join(tests, "clustering_plain"), os.path.join(tests, "qemu", "clustering_plain_qemu.elf"))})
 
 
 def build_before(rev):
@@ -157,7 +162,8 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()
     os.makedirs(WORK, exist_ok=True)
-    sim, host_app, image = build(args.build)
+    sim, controllers = build(args.build)
+    host_app, image = controllers["kernel"]
     before_image = build_before(args.before)
     loads = [os.getloadavg()[0]]
     variants = (("host build (PORT epuck_world)", "host", host_app, False),

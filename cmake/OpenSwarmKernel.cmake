@@ -85,6 +85,7 @@ set(OPENSWARM_BOARD_epuck2_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_record.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/board_world_link.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/cpu_account.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/world_link_io.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/world_outputs.c)
 set(OPENSWARM_BOARD_epuck2_world_LINKER_SCRIPT ${OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT})
 set(OPENSWARM_BOARD_epuck2_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/host/include
