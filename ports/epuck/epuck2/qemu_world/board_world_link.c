@@ -2,8 +2,9 @@
  * device layer's lower layer (ports/epuck/src/epuck_board.h) speaks the
  * world link (openswarm/epuck_world_link.h) over QEMU's own standard input
  * and output - which the world's controller script connects to the world -
- * through semihosting (world_link_io.h), so the same image that runs alone in QEMU drives a
- * body in the world.
+ * through semihosting (world_link_io.h), so the same image that runs alone
+ * in QEMU drives a body in the world. Its CPU's time is accounted
+ * (cpu_account.h): the link's own work apart from the robot's.
  *
  * Lockstep: the world's steps are counted in the kernel's ticks. When a
  * step's advance_ms ticks have run, the tick interrupt answers with the
