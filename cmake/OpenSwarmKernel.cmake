@@ -76,13 +76,16 @@ set(OPENSWARM_BOARD_epuck2_qemu_SOURCES
 set(OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/qemu_netduinoplus2.ld)
 # The same image as a robot of the world simulator (board world): the
-# link to the world on USART2 in place of the records (ports/epuck/epuck2/
-# qemu_world); the console and the exit status as on the qemu board.
+# link to the world on QEMU's standard input and output (semihosting) in
+# place of the records (ports/epuck/epuck2/qemu_world); the console and
+# the exit status as on the qemu board.
 set(OPENSWARM_BOARD_epuck2_world_SOURCES
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_qemu.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/semihosting.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu/board_record.c
     ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/board_world_link.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/cpu_account.c
+    ${OPENSWARM_ROOT}/ports/epuck/epuck2/qemu_world/world_link_io.c
     ${OPENSWARM_ROOT}/ports/epuck/host/src/world_outputs.c)
 set(OPENSWARM_BOARD_epuck2_world_LINKER_SCRIPT ${OPENSWARM_BOARD_epuck2_qemu_LINKER_SCRIPT})
 set(OPENSWARM_BOARD_epuck2_world_INCLUDES ${OPENSWARM_ROOT}/ports/epuck/host/include

@@ -7,7 +7,9 @@ import csv
 import json
 import math
 import os
+import re
 import shutil
+import stat
 import subprocess
 
 OBJECTS = ((600, 400), (300, 600), (700, 200))
@@ -34,6 +36,35 @@ def run(sim, work, name, controller, failures, seconds=10, says_id=True, fidelit
         if f"e-puck {robot} here" not in done.stderr + done.stdout:
             failures.append(f"{name}: robot {robot} did not say its id ('e-puck {robot} here'):\n{done.stderr}")
     return out
+
+
+def qemu_controller(qemu, image, work):
+    """The world starts a controller as a program without arguments: a
+    script that runs the e-puck2 image in QEMU, which reads the link from
+    QEMU's standard input and answers on its standard output through
+    semihosting, the robot's index in the world (OPENSWARM_ROBOT_ID) as its
+    id, its console in work/console-ID.txt."""
+    path = os.path.join(work, "epuck2_in_qemu.sh")
+    with open(path, "w") as f:
+        f.write("#!/bin/sh\nexec %s -M netduinoplus2 -display none -monitor none "
+                "-serial file:%s/console-$OPENSWARM_ROBOT_ID.txt "
+                "-semihosting-config enable=on,target=native,arg=app,arg=--id=$OPENSWARM_ROBOT_ID "
+                "-icount shift=3,align=off,sleep=off -kernel %s\n" % (qemu, work, image))
+    os.chmod(path, os.stat(path).st_mode | stat.S_IXUSR)
+    return path
+
+
+def cpu_account(work, robot, failures):
+    """Robot's CPU account from its console (us: robot time, asleep,
+    sensors, other busy), None after a failure if it printed none."""
+    with open(os.path.join(work, f"console-{robot}.txt")) as f:
+        console = f.read()
+    account = re.search(r"cpu account: robot time (\d+) us, asleep (\d+) us, sensors (\d+) us, "
+                        r"other busy (\d+) us", console)
+    if account is None:
+        failures.append(f"qemu: robot {robot} printed no CPU account:\n{console}")
+        return None
+    return [int(v) for v in account.groups()], console
 
 
 def read(out, name):

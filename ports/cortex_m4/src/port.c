@@ -47,18 +47,23 @@ void port_irq_restore(port_irq_state_t state) {
 void port_irq_enable(void) { port_irq_restore(0); }
 void port_irq_disable(void) { (void)port_irq_save(); }
 
+void (*cortex_m4_idle_hook)(bool asleep);
+
 /* BASEPRI-masked interrupts do not end a WFI, PRIMASK-masked ones do: so
  * PRIMASK holds them while BASEPRI opens, and no wake-up is lost between
  * the kernel's check and the sleep. The interrupt is taken at CPSIE. */
 void port_idle(void) {
+    void (*hook)(bool) = cortex_m4_idle_hook;
     __asm__ __volatile__("cpsid i\n\t"
-                         "msr basepri, %0\n\t"
-                         "dsb\n\t"
-                         "wfi\n\t"
-                         "cpsie i\n\t"
+                         "msr basepri, %0" ::"r"(0u)
+                         : "memory");
+    if (hook != NULL) hook(true);
+    __asm__ __volatile__("dsb\n\t"
+                         "wfi" ::: "memory");
+    if (hook != NULL) hook(false);
+    __asm__ __volatile__("cpsie i\n\t"
                          "isb\n\t"
-                         "msr basepri, %1" ::"r"(0u),
-                         "r"(CORTEX_M4_PRIORITY_KERNEL)
+                         "msr basepri, %0" ::"r"(CORTEX_M4_PRIORITY_KERNEL)
                          : "memory");
 }
 

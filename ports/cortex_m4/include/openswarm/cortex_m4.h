@@ -48,6 +48,12 @@ void cortex_m4_irq_disable(int irq);
  * the kernel's). NULL for none. */
 extern void (*cortex_m4_tick_hook)(void);
 
+/* Called by the idle thread with interrupts held (PRIMASK) just before it
+ * sleeps (asleep true) and just after it wakes, before the interrupt that
+ * woke it is taken (false): a board that accounts for the CPU's time
+ * (the world board under QEMU) sees the sleep alone. NULL for none. */
+extern void (*cortex_m4_idle_hook)(bool asleep);
+
 /* Text on the board's console (fault reports, records): a string, a
  * number in decimal, a word in hexadecimal (8 digits). */
 void cortex_m4_print(const char *text);

@@ -1,9 +1,10 @@
 /* The e-puck2 image under QEMU as a robot of the world simulator: the
  * device layer's lower layer (ports/epuck/src/epuck_board.h) speaks the
- * world link (openswarm/epuck_world_link.h) over USART2 - QEMU's second
- * serial port, which the world's controller script puts on its standard
- * input and output - so the same image that runs alone in QEMU drives a
- * body in the world.
+ * world link (openswarm/epuck_world_link.h) over QEMU's own standard input
+ * and output - which the world's controller script connects to the world -
+ * through semihosting (world_link_io.h), so the same image that runs alone
+ * in QEMU drives a body in the world. Its CPU's time is accounted
+ * (cpu_account.h): the link's own work apart from the robot's.
  *
  * Lockstep: the world's steps are counted in the kernel's ticks. When a
  * step's advance_ms ticks have run, the tick interrupt answers with the
@@ -11,9 +12,7 @@
  * inputs (the robot is frozen meanwhile, as between two world steps),
  * delivers them to the devices and starts SysTick again. Nothing else
  * runs meanwhile, so the guest's instructions stay the same whatever the
- * host's speed and runs repeat. The CPU sleeps for each byte (WFI with
- * interrupts masked by PRIMASK: USART2's receive interrupt wakes it and
- * is never taken), so QEMU waits for the world instead of spinning.
+ * host's speed and runs repeat.
  *
  * One difference from the host build (ports/epuck/host): the first answer
  * is given at the first tick, so this robot's clock reads 1 ms more than
@@ -21,6 +20,8 @@
 #include "../../src/epuck_board.h"
 #include "../qemu/board_qemu.h"
 #include "../qemu/semihosting.h"
+#include "cpu_account.h"
+#include "world_link_io.h"
 #include "openswarm/cortex_m4.h"
 #include "openswarm/epuck_world_link.h"
 #include "world_outputs.h"
@@ -28,78 +29,37 @@
 #include <stddef.h>
 #include <string.h>
 
-#define USART2_SR (*(volatile uint32_t *)0x40004400u)
-#define USART2_DR (*(volatile uint32_t *)0x40004404u)
-#define USART2_CR1 (*(volatile uint32_t *)0x4000440Cu)
-#define USART_SR_RXNE (1u << 5)
-#define USART_SR_TXE (1u << 7)
-#define USART_CR1_UE (1u << 13)
-#define USART_CR1_TE (1u << 3)
-#define USART_CR1_RE (1u << 2)
-#define USART_CR1_RXNEIE (1u << 5)
-#define USART2_IRQ 38
-#define NVIC_ICPR1 (*(volatile uint32_t *)0xE000E284u)
-
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
 #define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
 #define SCB_ICSR (*(volatile uint32_t *)0xE000ED04u)
 #define SCB_ICSR_PENDSTCLR (1u << 25)
 
-/* The world's frames are 40 x 30 (docs/world.md); room for larger. */
-#define MAX_PIXELS (80u * 60u)
-
 static uint32_t ticks_left; /* of the current step; 0: answer at the next tick */
+static uint32_t link_since; /* when the link's own work (not the robot's) began */
 static int last_selector = -1;
-static uint16_t frame[MAX_PIXELS];
-
-static void send(const void *data, size_t length) {
-    const uint8_t *p = data;
-    for (size_t i = 0; i < length; i++) {
-        while ((USART2_SR & USART_SR_TXE) == 0) {
-        }
-        USART2_DR = p[i];
-    }
-}
-
-static void receive(void *data, size_t length) {
-    uint8_t *p = data;
-    for (size_t i = 0; i < length; i++) {
-        while ((USART2_SR & USART_SR_RXNE) == 0) __asm__ __volatile__("wfi");
-        p[i] = (uint8_t)USART2_DR;
-        NVIC_ICPR1 = 1u << (USART2_IRQ - 32);
-    }
-}
-
-/* The link cannot go on (a message that is not one): say why, end the
- * run with status 2, as the host build does. */
-static void link_broken(const char *why) {
-    cortex_m4_print("epuck world link: ");
-    cortex_m4_print(why);
-    cortex_m4_print("\n");
-    semihosting_exit(2);
-}
+static uint16_t frame[WORLD_LINK_MAX_PIXELS];
 
 static void answer(void) {
     epuck_world_output out;
     world_outputs_fill(&out);
-    send(&out, sizeof out);
+    world_link_send(&out, sizeof out);
 }
 
 /* One step's inputs, delivered as the real board's interrupts would. */
 static void take_inputs(void) {
     epuck_world_input in;
-    receive(&in, sizeof in);
-    if (in.magic != EPUCK_LINK_MAGIC) link_broken("an input that is not an e-puck link record");
+    world_link_read_input(&in, frame);
     uint32_t pixels = (uint32_t)in.frame_width * in.frame_height;
-    if (pixels > MAX_PIXELS) link_broken("a frame larger than 80 x 60");
-    receive(frame, pixels * sizeof frame[0]);
     if (in.flags & EPUCK_LINK_STOP) {
+        cpu_account_report();
         answer();
         epuck_world_losses losses;
         world_outputs_losses(&losses);
-        send(&losses, sizeof losses);
+        world_link_send(&losses, sizeof losses);
         semihosting_exit(0);
     }
+    cpu_account_add(CPU_LINK, link_since);
+    uint32_t delivering = cpu_account_now();
     if (in.selector != last_selector) {
         last_selector = in.selector;
         epuck_selector_arrived((uint8_t)in.selector);
@@ -114,6 +74,8 @@ static void take_inputs(void) {
         epuck_camera_frame f = {frame, in.frame_width, in.frame_height, 0};
         epuck_camera_arrived(&f);
     }
+    cpu_account_add(CPU_SENSORS, delivering);
+    link_since = cpu_account_now();
     ticks_left = in.advance_ms;
 }
 
@@ -123,6 +85,7 @@ static void world_step(void) {
         ticks_left--;
         return;
     }
+    link_since = cpu_account_now();
     uint32_t running = SYST_CSR;
     SYST_CSR = 0;
     __asm__ __volatile__("cpsid i" ::: "memory");
@@ -136,6 +99,7 @@ static void world_step(void) {
     SCB_ICSR = SCB_ICSR_PENDSTCLR;
     SYST_CVR = 0;
     SYST_CSR = running;
+    cpu_account_add(CPU_LINK, link_since);
 }
 
 /* The robot's index in the world: the world gives it to the controller
@@ -144,7 +108,7 @@ static void world_step(void) {
 uint16_t epuck_robot_id(void) { return board_robot_id; }
 
 void epuck_board_start(void) {
-    USART2_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE | USART_CR1_RXNEIE;
-    cortex_m4_irq_enable(USART2_IRQ, CORTEX_M4_PRIORITY_UNMASKED); /* to wake the CPU */
+    world_link_open();
+    cpu_account_start();
     cortex_m4_tick_hook = world_step;
 }

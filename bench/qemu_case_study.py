@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""The case study's two arms with real instruction timing: the OpenSwarm
+arm's controller (tests/world/epuck_link_app.c: the template's camera
+handler, plus a thread blinking the LEDs) and the plain loop
+(templates/object-clustering/plain) run in the case study's setup
+(docs/case-study.md: 4 x 3 m, 5 e-pucks and 20 objects on random marks of
+the 15 x 11 grid) as their host builds and as e-puck2 images under QEMU
+(-icount: the kernel runs instruction by instruction), for each seed.
+Says whether the world's records are the same byte for byte, the wall
+time of each, and the robots' CPU from the images' 'cpu account' lines.
+Rewrites its section of docs/case-study.md.
+
+    python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 120]
+"""
+import argparse
+import json
+import os
+import random
+import statistics
+import subprocess
+import sys
+import time
+
+sys.dont_write_bytecode = True  # no bench/__pycache__ in the source tree
+import benchmarks_page  # noqa: E402
+import qemu_world_bench as qwb  # noqa: E402  (its build, QEMU script and account)
+
+ROOT = qwb.ROOT
+PAGE = os.path.join(ROOT, "docs", "case-study.md")
+BEGIN, END = "<!-- qemu_case_study: begin -->", "<!-- qemu_case_study: end -->"
+ROBOTS, OBJECTS = 5, 20
+COLUMNS, ROWS, SPACING = 15, 11, 250
+ARENA = (4000, 3000)
+
+
+def world(seed, duration, controller):
+    """The case study's world for seed: robots and objects on distinct
+    marks, robots' headings at random (drawn here, not by the tool's
+    experiment runner: the same setup, other draws)."""
+    draw = random.Random(seed)
+    x0 = (ARENA[0] - (COLUMNS - 1) * SPACING) / 2
+    y0 = (ARENA[1] - (ROWS - 1) * SPACING) / 2
+    marks = [(x0 + c * SPACING, y0 + r * SPACING) for r in range(ROWS) for c in range(COLUMNS)]
+    taken = draw.sample(marks, ROBOTS + OBJECTS)
+    poses = [{"x_mm": x, "y_mm": y, "heading_deg": draw.randrange(360)} for x, y in taken[:ROBOTS]]
+    objects = [{"x_mm": x, "y_mm": y, "radius_mm": 50, "mass_g": 50, "friction": 0.5} for x, y in taken[ROBOTS:]]
+    return {"robot": "epuck", "arena": {"width_mm": ARENA[0], "height_mm": ARENA[1]}, "seed": seed,
+            "duration_s": duration, "sample_period_s": 5, "objects": objects,
+            "robots": [{"poses": poses, "firmware": controller}]}
+
+
+def trial(sim, name, seed, duration, controller):
+    """One run: its outputs' folder and wall time."""
+    path = os.path.join(qwb.WORK, name + ".json")
+    with open(path, "w") as f:
+        json.dump(world(seed, duration, controller), f)
+    out = os.path.join(qwb.WORK, name)
+    began = time.monotonic()
+    qwb.run([sim, "-q", "--world", path, "--out", out])
+    return out, time.monotonic() - began
+
+
+def same(a, b):
+    return all(qwb.epuck_fidelity.read(a, f) == qwb.epuck_fidelity.read(b, f)
+               for f in ("trajectories.csv", "objects.csv"))
+
+
+def busy_per_robot_second(name, duration):
+    """The robots' mean instructions per robot-second awake (sensors and
+    the rest), from their accounts."""
+    accounts = [qwb.cpu_account(name, robot) for robot in range(ROBOTS)]
+    busy_us = statistics.mean(a["sensors"] + a["other busy"] for a in accounts)
+    return busy_us * 1e3 / qwb.NS_PER_INSTRUCTION / duration
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--trials", type=int, default=3)
+    parser.add_argument("--duration", type=int, default=120)
+    args = parser.parse_args()
+    os.makedirs(qwb.WORK, exist_ok=True)
+    sim, controllers = qwb.build(args.build)
+    load_before = os.getloadavg()[0]
+    rows = []
+    for seed in range(1, args.trials + 1):
+        for arm, label in (("kernel", "OpenSwarm"), ("plain", "plain loop")):
+            host_app, image = controllers[arm]
+            name = f"case-{arm}-qemu-{seed}"
+            host_out, host_wall = trial(sim, f"case-{arm}-host-{seed}", seed, args.duration, host_app)
+            qemu_out, qemu_wall = trial(sim, name, seed, args.duration, qwb.qemu_script(name, image, False))
+            rows.append(f"| {seed} | {label} | {'yes' if same(host_out, qemu_out) else 'NO'} | {host_wall:.1f} | "
+                        f"{qemu_wall:.1f} | {busy_per_robot_second(name, args.duration):,.0f} |")
+    text = "\n".join([
+        BEGIN,
+        f"Measured by `python3 bench/qemu_case_study.py --trials {args.trials} --duration {args.duration}` on 2 "
+        f"cores, load average {load_before:.1f} before and {os.getloadavg()[0]:.1f} after: n = {args.trials} "
+        f"trials of {args.duration} s per arm, seeds 1-{args.trials}, 5 e-pucks each.\n",
+        "| seed | arm | record the same as the host build's | host build wall s | QEMU wall s | "
+        "instructions awake per robot-second (QEMU) |",
+        "|---|---|---|---|---|---|", *rows, END])
+    print(text)
+    benchmarks_page.write_section(BEGIN, END, text, PAGE)
+
+
+if __name__ == "__main__":
+    main()

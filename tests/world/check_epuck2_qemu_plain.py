@@ -1,0 +1,38 @@
+#!/usr/bin/env python3
+"""The case study's plain loop (templates/object-clustering/plain: no OS)
+as its host build and as the e-puck2 image under QEMU (no kernel started,
+ports/epuck/epuck2/qemu_world/plain_world_qemu.c) drives the fidelity
+check's world (two e-pucks among three objects for 10 s): the world's
+records must be the same byte for byte and show the robots turning and
+pushing. Each image's CPU account must show a program that never sleeps
+(no idle thread) and did work.
+
+check_epuck2_qemu_plain.py SIM HOST_PLAIN QEMU_ELF QEMU_SYSTEM_ARM WORKDIR
+"""
+import os
+import sys
+
+import epuck_fidelity
+
+SIM, HOST_PLAIN, QEMU_ELF, QEMU, WORK = sys.argv[1:6]
+failures = []
+
+os.makedirs(WORK, exist_ok=True)
+host = epuck_fidelity.run(SIM, WORK, "host", HOST_PLAIN, failures, says_id=False)
+qemu = epuck_fidelity.run(SIM, WORK, "qemu", epuck_fidelity.qemu_controller(QEMU, QEMU_ELF, WORK), failures,
+                          says_id=False)
+if not failures:
+    epuck_fidelity.compare(host, "the host build", qemu, "the QEMU image", failures)
+    epuck_fidelity.shows_enough(qemu, failures, blinks=False)
+    for robot in (0, 1):
+        found = epuck_fidelity.cpu_account(WORK, robot, failures)
+        if found is not None:
+            robot_us, asleep, sensors, program = found[0]
+            if asleep != 0 or sensors != 0 or program == 0:
+                failures.append(f"qemu: robot {robot}'s CPU account is not a plain loop's: {robot_us} us robot "
+                                f"time, {asleep} asleep, {sensors} on the sensors, {program} the program's")
+
+for f in failures:
+    print("FAIL", f)
+print("ok: the plain loop's QEMU image and host build drive the same world identically" if not failures else "")
+sys.exit(1 if failures else 0)
