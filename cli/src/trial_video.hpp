@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 namespace openswarm {
@@ -30,5 +31,8 @@ struct TrialVideo {
     // asked for now.
     bool missing(int trial, const std::filesystem::path &dir, const nlohmann::json &outcome) const;
 };
+
+// --video, --video-fps, --video-speed and --video-trials on a command.
+void add_video_options(CLI::App *cmd, TrialVideo &video);
 
 }  // namespace openswarm
