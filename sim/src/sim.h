@@ -525,8 +525,9 @@ void board_eeprom_write(void *avr, uint16_t address, const uint8_t *bytes, uint3
  * drives read as they did. */
 void board_pins_again(avr_t *avr);
 /* The calibration blank, as a robot never calibrated: OSCCAL, the motor
- * duties and the distance tables read 0xFF (the uid stays). */
-void board_erase_calibration(avr_t *avr);
+ * duties and the distance tables read 0xFF (the uid stays); either mode's
+ * EEPROM, through write. */
+void kilobot_eeprom_erase_calibration(eeprom_write_fn write, void *ctx);
 /* Data memory and flash widened to every address an instruction can form
  * (board/wide_memories.c says why); -1 when out of memory. */
 int board_widen_memories(avr_t *avr);
