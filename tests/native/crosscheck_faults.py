@@ -27,7 +27,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from crosscheck import welch  # noqa: E402
 
 FRAMES = 150
-STATS = re.compile(r"\[robot (\d+)\] uid \d+ sent \d+ received (\d+) ")
+STATS = re.compile(r"\[robot ([1-9]\d*)\] uid \d+ sent \d+ ((?:\w+ \d+ ?)+)")
 STOPPED = re.compile(r"\[robot 0\] stopped at ([0-9.]+) s")
 WINDOW_S = 0.001
 
@@ -47,10 +47,15 @@ def run(sim, robot, out, name, faults, seconds, expect_stop=True):
         return done.stdout, done.stderr, [dict(kv.split("=", 1) for kv in line.split()[1:]) for line in f]
 
 
+def receivers(sim, robot, out, name, faults):
+    """Each receiver's counters as it printed them: received, bad_crc, ..."""
+    stdout, _, _ = run(sim, robot, out, name, faults, 6)
+    return [{k: int(v) for k, v in re.findall(r"(\w+) (\d+)", counters)} for _, counters in STATS.findall(stdout)]
+
+
 def heard(sim, robot, out, name, faults):
     """Frames each receiver heard."""
-    stdout, _, _ = run(sim, robot, out, name, faults, 6)
-    return [int(received) for index, received in STATS.findall(stdout) if index != "0"]
+    return [r["received"] for r in receivers(sim, robot, out, name, faults)]
 
 
 class Checks:
@@ -119,4 +124,5 @@ def main():
     sys.exit(1 if checks.failed else 0)
 
 
-main()
+if __name__ == "__main__":
+    main()
