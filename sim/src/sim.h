@@ -341,6 +341,12 @@ int stack_guard_at(const uint8_t *ram, uint32_t i, uint32_t end);
  * symbols read as the firmware is loaded (firmware_counters_locate). */
 void firmware_counters_locate(robot *r, const char *elf_path);
 void firmware_counters_print(const robot *r, double seconds);
+/* The kernel's counters (os_stats: twelve 16-bit counters and the event
+ * queue's peak byte) and the IR driver's (kilobot_ir_counters: seven)
+ * from their bytes, as " name=value" each, in either mode; NULL: the
+ * firmware has none; layout_known 0: they are not laid out so. */
+void firmware_counters_print_kernel(FILE *out, const uint8_t *bytes, int layout_known);
+void firmware_counters_print_ir(FILE *out, const uint8_t *bytes, int layout_known);
 int main_stack_report(const robot *r, int print);
 
 /* warning_groups.c: the end-of-run warnings, noted robot by robot (-1: a

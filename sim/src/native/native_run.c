@@ -16,6 +16,7 @@
 #include "interrupt.h"
 #include "output/output.h"
 #include "native/native_air.h"
+#include "native/native_counters.h"
 #include "native/native_faults.h"
 #include "native/native_handlers.h"
 #include "native/native_swarm.h"
@@ -47,7 +48,6 @@ static int refuse_exact_only(const options *o) {
     const char *what = o->marks ? "--marks" : o->n_watched ? "--watch-irq" : o->profile ? "--profile"
                      : o->trace ? "--trace" : o->trace_csv ? "--trace-csv" : o->gdb_port ? "--gdb"
                      : o->vcd ? "--vcd" : o->n_ohc ? "--ohc" : o->ir_log ? "--ir-log"
-                     : o->counters_period >= 0 ? "--counters"
                      : o->main_stack ? "--main-stack" : NULL;
     if (what == NULL) return 0;
     fprintf(stderr, "openswarm-sim: %s measures the simulated MCU, which the native mode does not "
@@ -207,6 +207,7 @@ static int start(const options *o, const char *path) {
     native_copy *copies = calloc((size_t)threads, sizeof *copies);
     if (copies == NULL || native_load(path, threads, copies) != 0) return -1;
     nominal_hz = copies[0].entry.cpu_hz;
+    if (o->counters_period >= 0) native_counters_locate(path);
     if (native_swarm_create(copies, threads, o->robots) != 0) return -1;
     lines = calloc((size_t)o->robots, sizeof *lines);
     senders = malloc((size_t)o->robots * sizeof *senders);
@@ -230,6 +231,8 @@ static int start(const options *o, const char *path) {
 static void run(const options *o) {
     uint64_t limit = (uint64_t)(o->seconds * (double)nominal_hz);
     uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
+    uint64_t counters_every = o->counters_period > 0 ? (uint64_t)(o->counters_period * (double)nominal_hz) : 0;
+    uint64_t next_counters = counters_every;
     progress_start(o->progress, o->robots, nominal_hz);
     for (uint64_t end = 0;;) {
         end += window;
@@ -242,7 +245,12 @@ static void run(const options *o) {
         run_end = end;
         if (all_stopped || end == limit) break;
         if (interrupt_stop_here((double)end / nominal_hz)) break;
+        if (counters_every != 0 && end >= next_counters) {
+            native_counters_print(n_robots, (double)end / nominal_hz);
+            next_counters += counters_every;
+        }
     }
+    if (o->counters_period >= 0) native_counters_print(n_robots, (double)run_end / nominal_hz);
     progress_end();
     native_swarm_end();
 }
