@@ -6,7 +6,7 @@
  * of the frame what it can. Not every flip loses the frame: a byte's start
  * bit only re-times the decoder, and the stop bits of all bytes but the
  * last are not read - a frame survives a lost pulse there unless the
- * silence it leaves ends the frame (docs/world.md measures the share
+ * silence it leaves ends the frame (docs/benchmarks.md measures the share
  * lost). So the frame is not lost with a formula's chance: its slots are
  * laid out as the sender sends them, the faults applied, and the pulses
  * left replayed through the same decoder the robot runs. */
