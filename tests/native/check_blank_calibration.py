@@ -6,7 +6,7 @@
 
 runs tests/avr/world_distances.c (nine robots standing still on a 40 mm
 grid, each printing every distance it estimates; WORLD is
-tests/world/worlds/distances.json) for 5 s with --faults blank:4 (the
+tests/world/worlds/distances.json) for 3 s with --faults blank:4 (the
 centre robot, 40 and 57 mm from its neighbours) in both modes, and once
 natively without, and checks:
   both logs have robot 4's blank calibration at 0 s;
@@ -30,7 +30,7 @@ def estimates(sim, robot, world, out, name, faults):
     """Robot ROBOT's estimates, and the fault log's lines."""
     os.makedirs(out, exist_ok=True)
     console, log = os.path.join(out, name + ".csv"), os.path.join(out, name + ".log")
-    done = subprocess.run([sim, "--world", world, "--out", os.path.join(out, name), "--time", "5", "-q",
+    done = subprocess.run([sim, "--world", world, "--out", os.path.join(out, name), "--time", "3", "-q",
                            "--threads", "1", "--console-csv", console, "--faults", faults, "--fault-log", log,
                            robot], capture_output=True, text=True, timeout=300)
     if done.returncode != 0:
