@@ -13,9 +13,10 @@ count what they receive; 4 robots 50 mm apart) in both modes and checks:
   resets and brown-outs of the same robots in the same order, each native
   one within a native window (1 ms) after the exact one (the exact mode's
   windows are 8 us);
-  drift: robot 0's clock 5% fast (drift:0=5) logs the same line in both
-  modes, and in both it ends its sending (and stops) 1.05 times sooner in
-  world time than undrifted (+- 0.002).
+  drift and blank: drift:0=5,drift=1,blank:2 logs the same lines in both
+  modes, in the same order (every robot's drift, robot 0's 5% fast, and
+  robot 2's blank calibration), and in both robot 0 ends its sending (and
+  stops) 1.05 times sooner in world time than undrifted (+- 0.002).
 """
 import os
 import re
@@ -100,7 +101,7 @@ def plan(checks, sim, elf, so, out):
 
 
 def drift(checks, sim, elf, so, out):
-    spec = "drift:0=5"
+    spec = "drift:0=5,drift=1,blank:2"
     results = {}
     for mode, robot in (("exact", elf), ("native", so)):
         _, stderr, log = run(sim, robot, out, f"{mode}-drift", spec, 6)
@@ -110,8 +111,9 @@ def drift(checks, sim, elf, so, out):
         ratio = undrifted / stopped
         checks.expect(abs(ratio - 1.05) < 0.002, f"{mode}: robot 0 5% fast stops at {stopped:.4f} s, "
                       f"{ratio:.4f} times sooner than at {undrifted:.4f} s undrifted")
-    checks.expect(results["exact"][2] == results["native"][2],
-                  f"the same drift logged in both modes: {results['native'][2]}")
+    kinds = [(f["kind"], f["robot"]) for f in results["native"][2]]
+    checks.expect(results["exact"][2] == results["native"][2] and len(kinds) == 5,
+                  f"the same drifts and blank calibration logged in both modes, in the same order: {kinds}")
 
 
 def main():

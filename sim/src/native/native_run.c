@@ -97,6 +97,10 @@ static void configure(int index, const options *o) {
         world_robot_identity(index, &uid, calibration);
         seed = world_robot_noise_seed(index);
     }
+    /* robot_clock_error ranks the robot among all: n steps a robot. */
+    double spread = o->clock_spread_pct == 0 ? 0 : o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
+    /* its drift logged before its blank calibration, as the exact mode does */
+    r->hz = faults_clock_rate(index, (uint32_t)lround(nominal_hz * (1.0 + spread)));
     memset(io->eeprom, 0xFF, sizeof io->eeprom);
     kilobot_eeprom_fill(write_eeprom, io, uid, calibration);
     if (o->world != NULL) world_eeprom_fill(write_eeprom, io);
@@ -107,9 +111,6 @@ static void configure(int index, const options *o) {
     io->charging = (uint8_t)o->charging;
     io->noise = seed | 1u;
     io->noise_counts = WORLD_ANALOG_NOISE_COUNTS;
-    /* robot_clock_error ranks the robot among all: n steps a robot. */
-    double spread = o->clock_spread_pct == 0 ? 0 : o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
-    r->hz = faults_clock_rate(index, (uint32_t)lround(nominal_hz * (1.0 + spread)));
 }
 
 /* ---- after each window, in robot order ---- */
