@@ -75,7 +75,7 @@ static int setup_robot(robot *r, int index, const options *o, FILE *csv) {
     }
     board_configure(r->avr, o, uid, calibration);
     if (o->world != NULL) world_eeprom_fill(board_eeprom_write, r->avr);
-    if (faults_blank_calibration(index)) board_erase_calibration(r->avr);
+    if (faults_blank_calibration(index)) kilobot_eeprom_erase_calibration(board_eeprom_write, r->avr);
     adc_trigger_attach(r->avr);
     char prefix[sizeof r->console.prefix] = "";
     if (o->robots > 1) snprintf(prefix, sizeof prefix, "[robot %d] ", index);
@@ -293,7 +293,7 @@ static int run_main(int argc, char **argv) {
     if (o.n_elves > 1 && !o.quiet && o.world == NULL) print_firmware_legend(&o);
     if (o.ir_log) ir_log_enable(o.robots);
     ohc_attach(robots, o.robots, &o);
-    faults_attach(robots, nominal_hz);
+    faults_attach(power_cycle_robots(robots, nominal_hz), nominal_hz);
 
     if (run(&o) != 0) return EXIT_USAGE;
     int written = 0; /* -1: an output could not be written (reported) */

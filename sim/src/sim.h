@@ -341,6 +341,12 @@ int stack_guard_at(const uint8_t *ram, uint32_t i, uint32_t end);
  * symbols read as the firmware is loaded (firmware_counters_locate). */
 void firmware_counters_locate(robot *r, const char *elf_path);
 void firmware_counters_print(const robot *r, double seconds);
+/* The kernel's counters (os_stats: twelve 16-bit counters and the event
+ * queue's peak byte) and the IR driver's (kilobot_ir_counters: seven)
+ * from their bytes, as " name=value" each, in either mode; NULL: the
+ * firmware has none; layout_known 0: they are not laid out so. */
+void firmware_counters_print_kernel(FILE *out, const uint8_t *bytes, int layout_known);
+void firmware_counters_print_ir(FILE *out, const uint8_t *bytes, int layout_known);
 int main_stack_report(const robot *r, int print);
 
 /* warning_groups.c: the end-of-run warnings, noted robot by robot (-1: a
@@ -525,8 +531,9 @@ void board_eeprom_write(void *avr, uint16_t address, const uint8_t *bytes, uint3
  * drives read as they did. */
 void board_pins_again(avr_t *avr);
 /* The calibration blank, as a robot never calibrated: OSCCAL, the motor
- * duties and the distance tables read 0xFF (the uid stays). */
-void board_erase_calibration(avr_t *avr);
+ * duties and the distance tables read 0xFF (the uid stays); either mode's
+ * EEPROM, through write. */
+void kilobot_eeprom_erase_calibration(eeprom_write_fn write, void *ctx);
 /* Data memory and flash widened to every address an instruction can form
  * (board/wide_memories.c says why); -1 when out of memory. */
 int board_widen_memories(avr_t *avr);

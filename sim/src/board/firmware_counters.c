@@ -50,31 +50,36 @@ void firmware_counters_locate(robot *r, const char *elf_path) {
     firmware_symbols(elf_path, note_symbol, &r->counters);
 }
 
-static unsigned u16_at(const avr_t *avr, uint32_t address) {
-    return avr->data[address] | (unsigned)avr->data[address + 1] << 8;
-}
+/* Little-endian on the robot and on the host (x86-64, arm64): the
+ * native mode's counters read the same way. */
+static unsigned u16_at(const uint8_t *bytes) { return bytes[0] | (unsigned)bytes[1] << 8; }
 
-static void print_kernel(FILE *out, const avr_t *avr, const counter_symbols *s) {
-    if (s->kernel == 0) {
+void firmware_counters_print_kernel(FILE *out, const uint8_t *bytes, int layout_known) {
+    if (bytes == NULL) {
         fprintf(out, " kernel=none");
-    } else if (s->kernel_size != KERNEL_BYTES || s->kernel + KERNEL_BYTES > avr->ramend + 1u) {
+    } else if (!layout_known) {
         fprintf(out, " kernel=unknown-layout");
     } else {
-        for (unsigned i = 0; i < KERNEL_COUNTERS; i++)
-            fprintf(out, " %s=%u", kernel_names[i], u16_at(avr, s->kernel + 2 * i));
-        fprintf(out, " event_queue_peak=%u", avr->data[s->kernel + 2 * KERNEL_COUNTERS]);
+        for (unsigned i = 0; i < KERNEL_COUNTERS; i++) fprintf(out, " %s=%u", kernel_names[i], u16_at(bytes + 2 * i));
+        fprintf(out, " event_queue_peak=%u", bytes[2 * KERNEL_COUNTERS]);
     }
 }
 
-static void print_ir(FILE *out, const avr_t *avr, const counter_symbols *s) {
-    if (s->ir == 0) {
+void firmware_counters_print_ir(FILE *out, const uint8_t *bytes, int layout_known) {
+    if (bytes == NULL) {
         fprintf(out, " ir=none");
-    } else if (s->ir_size != 2 * IR_COUNTERS || s->ir + 2 * IR_COUNTERS > avr->ramend + 1u) {
+    } else if (!layout_known) {
         fprintf(out, " ir=unknown-layout");
     } else {
-        for (unsigned i = 0; i < IR_COUNTERS; i++)
-            fprintf(out, " ir_%s=%u", ir_names[i], u16_at(avr, s->ir + 2 * i));
+        for (unsigned i = 0; i < IR_COUNTERS; i++) fprintf(out, " ir_%s=%u", ir_names[i], u16_at(bytes + 2 * i));
     }
+}
+
+/* n bytes of avr's RAM at address (0: the firmware has no such symbol),
+ * and whether they lie in its RAM and the symbol's size is n. */
+static const uint8_t *counters_at(const avr_t *avr, uint32_t address, uint32_t size, uint32_t n, int *fits) {
+    *fits = size == n && address + n <= avr->ramend + 1u;
+    return address == 0 ? NULL : avr->data + address;
 }
 
 #define MAX_THREAD_STACKS 16 /* the kernel's OS_CFG_MAX_THREADS at most */
@@ -90,9 +95,12 @@ static void print_thread_stacks(FILE *out, const robot *r, const counter_symbols
 void firmware_counters_print(const robot *r, double seconds) {
     const counter_symbols s = r->counters;
     unsigned room, used = main_stack_worst(r, &room);
+    int fits;
     printf("counters t=%.3f robot=%d", seconds, r->index);
-    print_kernel(stdout, r->avr, &s);
-    print_ir(stdout, r->avr, &s);
+    const uint8_t *kernel = counters_at(r->avr, s.kernel, s.kernel_size, KERNEL_BYTES, &fits);
+    firmware_counters_print_kernel(stdout, kernel, fits);
+    const uint8_t *ir = counters_at(r->avr, s.ir, s.ir_size, 2 * IR_COUNTERS, &fits);
+    firmware_counters_print_ir(stdout, ir, fits);
     if (room != 0)
         printf(" main_stack=%u/%u", used, room);
     else

@@ -78,11 +78,11 @@ void board_pins_again(avr_t *avr) {
     avr_raise_irq(charger, level);
 }
 
-void board_erase_calibration(avr_t *avr) {
+void kilobot_eeprom_erase_calibration(eeprom_write_fn write, void *ctx) {
     uint8_t blank[2 * TABLE_ENTRIES];
     memset(blank, 0xFF, sizeof blank);
-    write_eeprom(avr, OSCCAL_ADDRESS, blank, 1);
-    for (int i = 0; i < 4; i++) write_eeprom(avr, calibration_address[i], blank, 1);
-    write_eeprom(avr, LOW_GAIN_TABLE, blank, sizeof blank);
-    write_eeprom(avr, HIGH_GAIN_TABLE, blank, sizeof blank);
+    write(ctx, OSCCAL_ADDRESS, blank, 1);
+    for (int i = 0; i < 4; i++) write(ctx, calibration_address[i], blank, 1);
+    write(ctx, LOW_GAIN_TABLE, blank, sizeof blank);
+    write(ctx, HIGH_GAIN_TABLE, blank, sizeof blank);
 }

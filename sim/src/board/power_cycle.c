@@ -55,30 +55,52 @@ static void start_again(robot *r) {
     ir_channel_robot_reset(r->index);
 }
 
+static robot *robots;
+static uint32_t nominal_hz;
+
+static int can_fault(int i) {
+    const robot *r = &robots[i];
+    return !robot_finished(r) && !robot_at_bootloader(r) && r->off_until == 0;
+}
+
+static avr_cycle_count_t off_until(int i) { return robots[i].off_until; }
+
 /* The reset comes at the instruction the robot reached, and RAM keeps
  * what it held then: a robot parked at a loop's head runs on to it first. */
-void power_cycle_reset(robot *r) {
+static void reset(int i, avr_cycle_count_t now) {
+    (void)now; /* between windows, every robot is there */
+    robot *r = &robots[i];
     lockstep_settle(r);
     start_again(r);
     ohc_robot_reset(r);
 }
 
-/* Out of the lockstep until power_cycle_on: a robot dozing until the
- * power returned would run the whole outage in the window that reaches it. */
+/* Out of the lockstep until power_on: a robot dozing until the power
+ * returned would run the whole outage in the window that reaches it. */
 #define NEVER ((avr_cycle_count_t)-1)
 
-void power_cycle_off(robot *r, avr_cycle_count_t on) {
+static void power_off(int i, avr_cycle_count_t now, avr_cycle_count_t on) {
+    (void)now;
+    robot *r = &robots[i];
     lockstep_settle(r);
     start_again(r);
     r->off_until = on;
     r->doze_until = NEVER;
 }
 
-void power_cycle_on(robot *r, avr_cycle_count_t on, uint32_t nominal_hz) {
+static void power_on(int i, avr_cycle_count_t on) {
+    robot *r = &robots[i];
     uint32_t f = r->avr->frequency;
     avr_cycle_count_t own = f == nominal_hz ? on : on * f / nominal_hz;
     if (own > r->avr->cycle) r->avr->cycle = own;
     r->off_until = 0;
     start_again(r);
     ohc_robot_reset(r);
+}
+
+const fault_robots *power_cycle_robots(robot *all, uint32_t hz) {
+    static const fault_robots exact = {can_fault, off_until, reset, power_off, power_on};
+    robots = all;
+    nominal_hz = hz;
+    return &exact;
 }

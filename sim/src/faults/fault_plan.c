@@ -6,7 +6,8 @@
  * rate given: exponential gaps), so the same spec gives the same faults at
  * the same times on any number of threads, and adding robots leaves the
  * first ones' faults where they were. Resets and brown-outs happen between
- * two lockstep windows (8 us apart), when no robot runs. A robot that has
+ * two windows, when no robot runs: the exact mode's lockstep windows (8 us
+ * apart) or the native mode's (1 ms), the same plan in both. A robot that has
  * stopped (its firmware exited or crashed) is not revived: its faults are
  * skipped. */
 #include <errno.h>
@@ -16,7 +17,6 @@
 
 #include "air/ir_faults.h"
 #include "faults/faults.h"
-#include "lockstep.h"
 #include "world/world_random.h"
 
 #define MAX_PER_HOUR 36000.0  /* ten a second: more is surely a typo */
@@ -34,7 +34,7 @@ typedef struct robot_faults {
 
 static fault_spec spec;
 static robot_faults *plans;
-static robot *robots;
+static const fault_robots *robots;
 static int n_robots;
 static uint32_t nominal_hz;
 static avr_cycle_count_t next_due; /* no reset, brown-out or power return before this */
@@ -342,7 +342,8 @@ static void find_next_due(void) {
     avr_cycle_count_t due = (avr_cycle_count_t)1e18;
     for (int i = 0; i < n_robots; i++) {
         t = fmin(t, fmin(plans[i].next_reset_s, plans[i].next_brownout_s));
-        if (robots[i].off_until != 0 && robots[i].off_until < due) due = robots[i].off_until;
+        avr_cycle_count_t on = robots->off_until(i);
+        if (on != 0 && on < due) due = on;
     }
     for (int k = next_at; k < spec.n_at; k++)
         if (spec.at[k].kind == FAULT_RESET || spec.at[k].kind == FAULT_BROWNOUT) {
@@ -353,7 +354,7 @@ static void find_next_due(void) {
     next_due = c < due ? c : due;
 }
 
-void faults_attach(robot *all, uint32_t hz) {
+void faults_attach(const fault_robots *all, uint32_t hz) {
     if (plans == NULL) return;
     robots = all;
     nominal_hz = hz;
@@ -363,15 +364,14 @@ void faults_attach(robot *all, uint32_t hz) {
 /* Robot i's fault of this kind, at the nominal time now; skipped by a
  * robot that has stopped or is without power. */
 static void inject(int kind, int i, avr_cycle_count_t now) {
-    robot *r = &robots[i];
-    if (robot_finished(r) || robot_at_bootloader(r) || r->off_until != 0) return;
+    if (!robots->can_fault(i)) return;
     double t = (double)now / nominal_hz;
     if (kind == FAULT_RESET) {
         fault_log(FAULT_RESET, t, i, NULL);
-        power_cycle_reset(r);
+        robots->reset(i, now);
     } else {
         fault_log(FAULT_BROWNOUT, t, i, "off_ms=%g", spec.brownout_ms);
-        power_cycle_off(r, now + cycle_of(spec.brownout_ms / 1000.0));
+        robots->power_off(i, now, now + cycle_of(spec.brownout_ms / 1000.0));
     }
 }
 
@@ -380,7 +380,8 @@ void faults_after_window(avr_cycle_count_t end) {
     double t = (double)end / nominal_hz;
     for (int i = 0; i < n_robots; i++) {
         robot_faults *p = &plans[i];
-        if (robots[i].off_until != 0 && robots[i].off_until <= end) power_cycle_on(&robots[i], end, nominal_hz);
+        avr_cycle_count_t on = robots->off_until(i);
+        if (on != 0 && on <= end) robots->power_on(i, end);
         for (; p->next_reset_s <= t; p->next_reset_s += exponential_s(&p->rng, spec.resets_per_hour))
             inject(FAULT_RESET, i, end);
         for (; p->next_brownout_s <= t;

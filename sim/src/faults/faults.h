@@ -5,9 +5,11 @@
  * counted for the run's summary.
  *
  * fault_plan.c reads the spec and fires the robots' resets and brown-outs
- * between lockstep windows; air/ir_faults.c applies the IR faults as the
+ * between windows, in either mode (a fault_robots says what they do to a
+ * robot); air/ir_faults.c applies the IR faults as the exact mode's
  * channel hands edges over; board/power_cycle.c is what a reset and a
- * power cut do to one simulated robot; fault_log.c writes and counts. */
+ * power cut do to one robot simulated cycle by cycle, native/native_faults.c
+ * to a native one; fault_log.c writes and counts. */
 #ifndef OPENSWARM_FAULTS_H
 #define OPENSWARM_FAULTS_H
 
@@ -61,8 +63,18 @@ int faults_parse(const char *text, fault_spec *spec);
 int faults_check(const fault_spec *spec, int robots, double seconds);
 /* Draw the faults of n robots; open the log. -1 after a message. */
 int faults_start(const fault_spec *spec, int n);
+/* What a reset and a power cut do to the robots of a mode; cycles are of
+ * the nominal clock. */
+typedef struct fault_robots {
+    int (*can_fault)(int index);                     /* running and powered */
+    avr_cycle_count_t (*off_until)(int index);       /* when its power returns; 0: powered */
+    void (*reset)(int index, avr_cycle_count_t now);
+    void (*power_off)(int index, avr_cycle_count_t now, avr_cycle_count_t on);
+    void (*power_on)(int index, avr_cycle_count_t on);
+} fault_robots;
+
 /* The robots are loaded: their resets and brown-outs can fire. */
-void faults_attach(robot *robots, uint32_t nominal_hz);
+void faults_attach(const fault_robots *robots, uint32_t nominal_hz);
 /* Robot index has blank calibration (its EEPROM's 0xFF). */
 int faults_blank_calibration(int index);
 /* Robot index's clock rate, hz with its drift (0 if none), which is logged. */
@@ -83,11 +95,9 @@ const char *fault_kind_name(int kind);
 /* -1 after a message if the log could not be written. */
 int fault_log_close(void);
 
-/* board/power_cycle.c: what a reset and a power cut do to one robot. */
-void power_cycle_reset(robot *r);
-/* Power off now, until cycle on of the nominal clock (r->off_until); then
- * power_cycle_on at the end of the window that reaches it, cycle on. */
-void power_cycle_off(robot *r, avr_cycle_count_t on);
-void power_cycle_on(robot *r, avr_cycle_count_t on, uint32_t nominal_hz);
+/* board/power_cycle.c: what a reset and a power cut do to the exact
+ * mode's robots (a power cut lasts until r->off_until, and ends at the end
+ * of the window that reaches it). */
+const fault_robots *power_cycle_robots(robot *robots, uint32_t nominal_hz);
 
 #endif

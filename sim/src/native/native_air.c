@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "native/native_frame_faults.h"
 #include "window_workers.h"
 #include "world/world_random.h"
 #include "world/world_run.h"
@@ -198,7 +199,8 @@ static int16_t reading(int model, uint64_t *rng) {
     return (int16_t)(r < 0 ? 0 : r > 1023 ? 1023 : r);
 }
 
-static void deliver_to(deliveries *out, int receiver, int sender, uint64_t frame, const native_sent *s, double mm) {
+static void deliver_to(int t, int receiver, int sender, uint64_t frame, const native_sent *s, double mm) {
+    deliveries *out = &by_thread[t];
     uint64_t *rng = &receiver_rng[receiver];
     double chance = loss * (mm / range_mm) * (mm / range_mm);
     if (chance > 0 && world_random_uniform(rng) < chance) return;
@@ -219,6 +221,9 @@ static void deliver_to(deliveries *out, int receiver, int sender, uint64_t frame
     int sensed = ir_distance_sensed(&distance_error, sender, receiver, frame, mm);
     d->frame.high_gain = reading(ir_high_gain_reading(sensed), rng);
     d->frame.low_gain = reading(ir_low_gain_reading(sensed), rng);
+    if (native_frame_faults_on() &&
+        native_frame_faults_apply(t, sender, receiver, s->at, from_hz, to_hz, &d->frame) != 0)
+        out->n_pending--; /* --faults left nothing of it */
 }
 
 static int by_receiver_then_start(const void *a, const void *b) {
@@ -239,7 +244,7 @@ static void enqueue(deliveries *out, native_io *io, native_frame f) {
     }
     for (unsigned k = 0; k < io->inbox_count; k++) {
         native_frame *g = &io->inbox[(io->inbox_head + k) % NATIVE_INBOX_ROOM];
-        if (g->start < f.end && f.start < g->end) g->broken = f.broken = 1;
+        if (g->start < f.end && f.start < g->end) g->broken = f.broken = NATIVE_FRAME_COLLIDED;
     }
     io->inbox[(io->inbox_head + io->inbox_count) % NATIVE_INBOX_ROOM] = f;
     io->inbox_count++;
@@ -283,9 +288,9 @@ static int find_reach(int t) {
     return 1;
 }
 
-/* Thread t's receivers (index mod T = t): each one's draws in the order
- * the frames were sent (sender, then frame), as on one thread; then into
- * their inboxes by start. */
+/* Thread t's receivers (index mod T = t), those with power: each one's
+ * draws in the order the frames were sent (sender, then frame), as on one
+ * thread; then into their inboxes by start. */
 static int deliver_share(int t) {
     int threads = window_workers_threads();
     deliveries *out = &by_thread[t];
@@ -294,8 +299,8 @@ static int deliver_share(int t) {
         const reach *r = reach_by_thread[p % (unsigned)threads].all + reach_first[p];
         for (unsigned k = 0; k < log->n_sent; k++)
             for (unsigned q = 0; q < reach_count[p]; q++)
-                if (r[q].receiver % threads == t)
-                    deliver_to(out, r[q].receiver, senders[p], frames_sent[senders[p]] + k + 1, &log->sent[k], r[q].mm);
+                if (r[q].receiver % threads == t && native_swarm_powered(r[q].receiver))
+                    deliver_to(t, r[q].receiver, senders[p], frames_sent[senders[p]] + k + 1, &log->sent[k], r[q].mm);
     }
     qsort(out->pending, out->n_pending, sizeof *out->pending, by_receiver_then_start);
     for (size_t k = 0; k < out->n_pending; k++) {
@@ -318,6 +323,7 @@ void native_air_deliver(const int *sent_by, unsigned n) {
         by_thread = calloc((size_t)window_workers_threads(), sizeof *by_thread);
         reach_by_thread = calloc((size_t)window_workers_threads(), sizeof *reach_by_thread);
         if (by_thread == NULL || reach_by_thread == NULL) exit(EXIT_CRASH);
+        native_frame_faults_threads(window_workers_threads());
     }
     senders = sent_by;
     n_senders = n;

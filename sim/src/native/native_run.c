@@ -12,9 +12,12 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "faults/faults.h"
 #include "interrupt.h"
 #include "output/output.h"
 #include "native/native_air.h"
+#include "native/native_counters.h"
+#include "native/native_faults.h"
 #include "native/native_handlers.h"
 #include "native/native_swarm.h"
 #include "progress.h"
@@ -45,7 +48,6 @@ static int refuse_exact_only(const options *o) {
     const char *what = o->marks ? "--marks" : o->n_watched ? "--watch-irq" : o->profile ? "--profile"
                      : o->trace ? "--trace" : o->trace_csv ? "--trace-csv" : o->gdb_port ? "--gdb"
                      : o->vcd ? "--vcd" : o->n_ohc ? "--ohc" : o->ir_log ? "--ir-log"
-                     : o->faults ? "--faults" : o->counters_period >= 0 ? "--counters"
                      : o->main_stack ? "--main-stack" : NULL;
     if (what == NULL) return 0;
     fprintf(stderr, "openswarm-sim: %s measures the simulated MCU, which the native mode does not "
@@ -95,18 +97,20 @@ static void configure(int index, const options *o) {
         world_robot_identity(index, &uid, calibration);
         seed = world_robot_noise_seed(index);
     }
+    /* robot_clock_error ranks the robot among all: n steps a robot. */
+    double spread = o->clock_spread_pct == 0 ? 0 : o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
+    /* its drift logged before its blank calibration, as the exact mode does */
+    r->hz = faults_clock_rate(index, (uint32_t)lround(nominal_hz * (1.0 + spread)));
     memset(io->eeprom, 0xFF, sizeof io->eeprom);
     kilobot_eeprom_fill(write_eeprom, io, uid, calibration);
     if (o->world != NULL) world_eeprom_fill(write_eeprom, io);
+    if (faults_blank_calibration(index)) kilobot_eeprom_erase_calibration(write_eeprom, io);
     io->adc_mv[NATIVE_ADC_LIGHT] = (uint16_t)analog_mv(o->light_mv, 0);
     io->adc_mv[NATIVE_ADC_VOLTAGE] = (uint16_t)analog_mv(o->voltage_mv, 0);
     io->adc_mv[NATIVE_ADC_TEMPERATURE] = (uint16_t)analog_mv(o->temperature_mv, 0);
     io->charging = (uint8_t)o->charging;
     io->noise = seed | 1u;
     io->noise_counts = WORLD_ANALOG_NOISE_COUNTS;
-    /* robot_clock_error ranks the robot among all: n steps a robot. */
-    double spread = o->clock_spread_pct == 0 ? 0 : o->clock_spread_pct / 100.0 * robot_clock_error(index, o->robots);
-    r->hz = (uint32_t)lround(nominal_hz * (1.0 + spread));
 }
 
 /* ---- after each window, in robot order ---- */
@@ -204,6 +208,7 @@ static int start(const options *o, const char *path) {
     native_copy *copies = calloc((size_t)threads, sizeof *copies);
     if (copies == NULL || native_load(path, threads, copies) != 0) return -1;
     nominal_hz = copies[0].entry.cpu_hz;
+    if (o->counters_period >= 0) native_counters_locate(path);
     if (native_swarm_create(copies, threads, o->robots) != 0) return -1;
     lines = calloc((size_t)o->robots, sizeof *lines);
     senders = malloc((size_t)o->robots * sizeof *senders);
@@ -211,6 +216,7 @@ static int start(const options *o, const char *path) {
     uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
     native_air_start(o->robots, o->ir_range_mm, o->ir_loss_pct, o->ir_loss_seed, nominal_hz, window,
                      &o->ir_distance);
+    if (native_faults_start(o) != 0) return -1;
     for (int i = 0; i < o->robots; i++) configure(i, o);
     if (o->world != NULL) {
         positions = malloc((size_t)o->robots * 2 * sizeof *positions);
@@ -219,24 +225,33 @@ static int start(const options *o, const char *path) {
         native_air_place(placement_distance_of, (void *)&o->place, NULL);
     }
     native_swarm_boot();
+    native_faults_attach(nominal_hz);
     return 0;
 }
 
 static void run(const options *o) {
     uint64_t limit = (uint64_t)(o->seconds * (double)nominal_hz);
     uint64_t window = (uint64_t)llround(WINDOW_MS / 1000.0 * nominal_hz);
+    uint64_t counters_every = o->counters_period > 0 ? (uint64_t)(o->counters_period * (double)nominal_hz) : 0;
+    uint64_t next_counters = counters_every;
     progress_start(o->progress, o->robots, nominal_hz);
     for (uint64_t end = 0;;) {
         end += window;
         if (end > limit) end = limit;
         int all_stopped = native_swarm_window(end, nominal_hz, native_air_clear);
         after_window();
+        native_faults_after_window(end);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         progress_update(end);
         run_end = end;
         if (all_stopped || end == limit) break;
         if (interrupt_stop_here((double)end / nominal_hz)) break;
+        if (counters_every != 0 && end >= next_counters) {
+            native_counters_print(n_robots, (double)end / nominal_hz);
+            next_counters += counters_every;
+        }
     }
+    if (o->counters_period >= 0) native_counters_print(n_robots, (double)run_end / nominal_hz);
     progress_end();
     native_swarm_end();
 }
@@ -313,6 +328,7 @@ int native_run(const options *o) {
     stdout_flush();
     int console_lost = console_csv != NULL && console_csv_close(console_csv, o->console_csv, NULL, 0);
     int written = o->world != NULL ? world_run_finish() : 0;
+    if (faults_finish() != 0) written = -1;
     if (interrupt_caught())
         return interrupt_finish(o->world != NULL && o->out_dir != NULL ? output_written() : NULL);
     int status = report(o);

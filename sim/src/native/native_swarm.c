@@ -53,6 +53,7 @@ typedef struct index_list {
 static index_list *ran, ran_all;
 static unsigned *taken; /* merging them: how far into each */
 static uint8_t *has_run;
+static uint8_t *powered_off; /* --faults brownout: not run, deaf, until restarted */
 
 native_robot *native_swarm_robot(int index) { return &robots[index]; }
 
@@ -191,7 +192,43 @@ static uint64_t wake_of(const native_io *io) {
     return w > io->now + 1 ? w : io->now + 1;
 }
 
-void native_swarm_woken(int index) { schedule[index].wake = wake_of(robots[index].io); }
+void native_swarm_woken(int index) {
+    if (!powered_off[index]) schedule[index].wake = wake_of(robots[index].io);
+}
+
+int native_swarm_powered(int index) { return !powered_off[index]; }
+
+/* Frames that began before cycle at (the robot's own) are lost: it was
+ * not listening, or not the program it was listening for. */
+static void drop_frames_before(native_io *io, uint64_t at) {
+    while (io->inbox_count != 0 && io->inbox[io->inbox_head].start < at) {
+        io->inbox_head = (io->inbox_head + 1u) % NATIVE_INBOX_ROOM;
+        io->inbox_count--;
+    }
+}
+
+void native_swarm_power_off(int index) {
+    native_io *io = robots[index].io;
+    powered_off[index] = 1;
+    schedule[index].wake = UINT64_MAX;
+    drop_frames_before(io, UINT64_MAX);
+    io->led = 0;
+}
+
+void native_swarm_restart(int index, uint64_t now) {
+    native_robot *r = &robots[index];
+    native_io *io = r->io;
+    if (io->now > now) now = io->now; /* it ran on past the window's end, frames masked */
+    powered_off[index] = 0;
+    drop_frames_before(io, now);
+    boot(r, load(index), now);
+    io->now = now;
+    io->asleep_until = 0;
+    io->transmit = NATIVE_TRANSMIT_NONE;
+    io->led = 0;
+    schedule[index].wake = wake_of(io);
+    schedule[index].resume_sp = NULL;
+}
 
 /* The robots waiting for carrier sense: each thread notes its own as they
  * ask (asking[t]), the main thread the ones it runs on (asking[0]). */
@@ -307,7 +344,8 @@ int native_swarm_create(native_copy *all_copies, int n_copies, int n) {
     ran = calloc((size_t)n_copies, sizeof *ran);
     taken = calloc((size_t)n_copies, sizeof *taken);
     has_run = calloc((size_t)n, 1);
-    if (robots == NULL || schedule == NULL || loaded == NULL || running == NULL || asking == NULL ||
+    powered_off = calloc((size_t)n, 1);
+    if (powered_off == NULL || robots == NULL || schedule == NULL || loaded == NULL || running == NULL || asking == NULL ||
         ran == NULL || taken == NULL || has_run == NULL)
         return -1;
     for (int t = 0; t < n_copies; t++) loaded[t] = -1;

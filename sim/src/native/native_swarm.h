@@ -71,6 +71,15 @@ void native_swarm_end(void);
 const int *native_swarm_ran(unsigned *n);
 /* Robot index's inbox changed between windows: it may run sooner. */
 void native_swarm_woken(int index);
+/* Between windows (--faults): robot index starts again from reset at its
+ * own cycle now, or later if its clock is past it - its RAM as loaded (the
+ * start-up code sets .data and .bss again), its LED dark, the frames that
+ * began before lost - as kilobot_restart's NATIVE_RESTART does; or it
+ * loses its power: it neither runs nor hears until restarted. */
+void native_swarm_restart(int index, uint64_t now);
+void native_swarm_power_off(int index);
+/* Robot index hears frames: not powered off. */
+int native_swarm_powered(int index);
 /* The log emptied (its room kept). */
 void native_log_clear(native_log *log);
 

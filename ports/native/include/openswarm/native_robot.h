@@ -51,8 +51,15 @@ typedef struct native_frame {
     uint64_t end;   /* its last slot: the frame is whole */
     uint8_t bytes[NATIVE_FRAME_BYTES];
     int16_t low_gain, high_gain; /* the ADC's readings at its header */
-    uint8_t broken;              /* it collided with another: the receiver drops it */
+    uint8_t broken;              /* enum native_frame_damage: the receiver drops it unless whole */
 } native_frame;
+
+/* What the receiver's decoder would make of a frame's pulses. */
+enum native_frame_damage {
+    NATIVE_FRAME_WHOLE = 0,
+    NATIVE_FRAME_COLLIDED, /* another frame overlapped it, or a pulse came inside its header */
+    NATIVE_FRAME_BROKEN    /* a pulse missing where one must be (--faults flip, cut) */
+};
 
 /* A frame this robot sent: its first pulse at cycle at (its own clock). */
 typedef struct native_sent {

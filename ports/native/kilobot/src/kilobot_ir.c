@@ -76,12 +76,12 @@ void native_ir_interrupt(void) {
     memcpy(rx.frame, f->bytes, sizeof rx.frame);
     rx.low_gain = f->low_gain;
     rx.high_gain = f->high_gain;
-    int broken = f->broken;
+    int damage = f->broken;
     io->inbox_head = (io->inbox_head + 1u) % NATIVE_INBOX_ROOM;
     io->inbox_count--;
-    if (broken)
+    if (damage == NATIVE_FRAME_COLLIDED)
         kilobot_ir_count(&kilobot_ir_counters.collisions);
-    else if (late)
+    else if (damage == NATIVE_FRAME_BROKEN || late)
         kilobot_ir_count(&kilobot_ir_counters.broken);
     else
         kilobot_ir_deliver(&rx);

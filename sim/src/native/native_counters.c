@@ -1,0 +1,48 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* --counters PERIOD in the native mode (native_counters.h): each robot's
+ * kernel counters (os_stats, which the robot's native_entry points at) and
+ * its IR driver's (kilobot_ir_counters, found by symbol in the shared
+ * object), read from its RAM image between windows, in the exact mode's
+ * line (board/firmware_counters.c). Stack use is not the AVR's here: the
+ * robot's stacks are the host's (main's 64 KB, the pool's frames as the
+ * host compiler lays them out), so the line says main_stack=unmeasured
+ * and thread_stacks=none rather than host figures that look like the
+ * robot's. */
+#include "native/native_counters.h"
+
+#include <gelf.h>
+
+#include "native/native_swarm.h"
+
+#define IR_COUNTER_BYTES 14 /* kilobot_ir_stats: seven 16-bit counters */
+
+typedef struct ir_symbol {
+    uint32_t offset, size; /* in the shared object; 0: none */
+} ir_symbol;
+
+static ir_symbol ir;
+
+static void note_symbol(const char *name, uint32_t value, uint32_t size, int type, void *ctx) {
+    ir_symbol *s = ctx;
+    if (name != NULL && type == STT_OBJECT && symbol_named(name, "kilobot_ir_counters")) {
+        s->offset = value;
+        s->size = size;
+    }
+}
+
+void native_counters_locate(const char *so) {
+    static const char *read_path;
+    firmware_symbols_once(so, &read_path, note_symbol, &ir, sizeof ir);
+}
+
+void native_counters_print(int n_robots, double seconds) {
+    for (int i = 0; i < n_robots; i++) {
+        printf("counters t=%.3f robot=%d", seconds, i);
+        firmware_counters_print_kernel(stdout, native_swarm_robot_stats(i), 1);
+        const void *at = (const void *)(native_swarm_copy_of(i)->base + ir.offset);
+        firmware_counters_print_ir(stdout, ir.offset != 0 ? native_swarm_robot_memory(i, at, IR_COUNTER_BYTES) : NULL,
+                                   ir.size == IR_COUNTER_BYTES);
+        printf(" main_stack=unmeasured thread_stacks=none\n");
+    }
+    stdout_flush();
+}

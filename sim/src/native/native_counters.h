@@ -1,0 +1,15 @@
+/* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
+/* --counters PERIOD in the native mode: every robot's kernel and IR
+ * counters, one "counters t=... robot=..." line each, as the exact mode
+ * prints them (docs/world.md, "Fault injection"). */
+#ifndef OPENSWARM_NATIVE_COUNTERS_H
+#define OPENSWARM_NATIVE_COUNTERS_H
+
+#include "sim.h"
+
+/* Where the robot's IR counters are in the shared object so (once). */
+void native_counters_locate(const char *so);
+/* Every robot's line, at seconds of the nominal clock (between windows). */
+void native_counters_print(int n_robots, double seconds);
+
+#endif
