@@ -13,6 +13,7 @@
 #include "interrupt.h"
 #include "lockstep.h"
 #include "output/output.h"
+#include "native/native_apps.h"
 #include "native/native_load.h"
 #include "native/native_run.h"
 #include "progress.h"
@@ -261,6 +262,7 @@ static int run_main(int argc, char **argv) {
         }
         return world_run_epucks(&o);
     }
+    if (firmware_of(&o, 0) != NULL && native_apps_one_mode(&o) != 0) return EXIT_USAGE;
     if (firmware_of(&o, 0) != NULL && native_is_robot(firmware_of(&o, 0))) return native_run(&o);
     if (o.world != NULL && world_run_is_native()) {
         fprintf(stderr, "openswarm-sim: %s asks for \"fidelity\": \"native\", and %s is firmware for "

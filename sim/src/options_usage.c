@@ -6,7 +6,9 @@ void options_usage(FILE *out) {
     fprintf(out,
             "usage: openswarm-sim [options] FIRMWARE.elf [FIRMWARE.elf ...]\n"
             "Run robots' AVR firmware in simavr, cycle-exactly, and print their consoles.\n"
-            "Robot k runs the k-th FIRMWARE.elf; the last one also runs on the robots after it.\n\n"
+            "Robot k runs the k-th FIRMWARE.elf; the last one also runs on the robots after it.\n"
+            "Apps built with `openswarm build --native` (.so) run in the native mode instead,\n"
+            "each robot its own app's (docs/world.md); one run is all .elf or all .so.\n\n"
             "  -t, --time SECONDS   simulated time to run (default 10)\n"
             "  -n, --robots N       run N robots in lockstep (default: one per FIRMWARE.elf)\n"
             "  -s, --expect-stop    fail (exit 4) unless every robot stops by itself\n"
@@ -64,6 +66,7 @@ void options_usage(FILE *out) {
             "                       readuid:BIT), e.g. --ohc calib-left:70@1; repeatable.\n"
             "                       OpenSwarm firmware starts as if it had just sent run;\n"
             "                       classic-library firmware waits, idle, for --ohc run@T.\n"
+            "                       Natively too: each robot gets the whole frame at once.\n"
             "      --light MV       ambient light sensor (ADC7) input, millivolts\n"
             "      --voltage MV     battery sense (ADC6) input, millivolts\n"
             "      --temperature MV internal temperature sensor input, millivolts\n"

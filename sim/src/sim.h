@@ -625,6 +625,8 @@ int ir_low_gain_reading(int mm);
 
 /* overhead_controller.c: system messages broadcast at given times */
 int ohc_parse(const char *text, ohc_message *m);
+/* The frame m is on the wire: its data, its type, the CRC (both modes'). */
+void ohc_frame(const ohc_message *m, uint8_t frame[IR_FRAME_BYTES]);
 void ohc_attach(robot *all, int n, const options *o);
 /* After robot r's reset: its messages to come are scheduled again. */
 void ohc_robot_reset(robot *r);

@@ -34,6 +34,36 @@ for f in final.png viewer.html; do
     test -s "app/out/thousand/$f" && passed=$((passed + 1)) || { echo "FAILED: no thousand/$f"; failed=$((failed + 1)); }
 done
 
+# Two apps in one world: the packed disperse robots run the app (their
+# group names no firmware), two more a blinker's .so named by their group;
+# the overhead controller pauses them all at 2 s. The blinkers show blue,
+# never the disperse robots' red or green, until the pause darkens them.
+"$openswarm" new blinker --template kilolib >/dev/null || exit 1
+check "build the blinker --native" 0 "Built blinker/build/kilobot-native/blinker.so" \
+    "$openswarm" build -C blinker --native
+python3 - "$work" <<'PY' || exit 1
+import json, sys
+world = json.load(open("app/worlds/packed.json"))
+world["robots"].append({"firmware": sys.argv[1] + "/blinker/build/kilobot-native/blinker.so",
+                        "poses": [{"x_mm": 30, "y_mm": 30}, {"x_mm": 80, "y_mm": 30}]})
+json.dump(world, open("two_apps.json", "w"))
+PY
+check "run --native --ohc in a world of two apps" 0 "ran 4.000 s of simulated time \(12 robots\)" \
+    "$openswarm" run -C app --native --world two_apps.json --time 4 --ohc pause@2 --out two_apps
+python3 - two_apps/trajectories.csv <<'PY' && passed=$((passed + 1)) || failed=$((failed + 1))
+import csv, sys
+seen = {}
+for row in csv.DictReader(open(sys.argv[1])):
+    key = ("blinker" if int(row["robot"]) >= 10 else "disperse", float(row["time_s"]) > 2.1)
+    seen.setdefault(key, set()).add((row["led_r"], row["led_g"], row["led_b"]))
+expected = {("blinker", False): {("0", "0", "3"), ("0", "0", "0")}, ("blinker", True): {("0", "0", "0")}}
+bad = [k for k, v in expected.items() if seen.get(k) != v]
+bad += [k for k in (("disperse", False),) if not seen[k] <= {("3", "0", "0"), ("0", "3", "0"), ("0", "0", "0")}
+        or ("0", "3", "0") not in seen[k]]
+if bad:
+    sys.exit(f"FAILED: LED colours {seen} for {bad}")
+PY
+
 # Mistakes, each naming the fix.
 "$openswarm" build -C app >/dev/null 2>&1
 check "the exact mode's firmware in a native world" 2 "asks for \"fidelity\": \"native\".*openswarm build --native" \

@@ -75,7 +75,6 @@ bool native_options_usable(const RunOptions &o) {
     if (o.gdb != 0) refused.push_back("--gdb");
     if (o.debug) refused.push_back("--debug");
     if (!o.vcd.empty()) refused.push_back("--vcd");
-    if (!o.ohc.empty()) refused.push_back("--ohc");
     if (o.profile) refused.push_back("--profile");
     if (o.ir_log) refused.push_back("--ir-log");
     if (!o.first.empty()) refused.push_back("--first");

@@ -172,6 +172,15 @@ void ohc_robot_reset(robot *r) {
     }
 }
 
+void ohc_frame(const ohc_message *m, uint8_t frame[IR_FRAME_BYTES]) {
+    memset(frame, 0, IR_FRAME_BYTES);
+    memcpy(frame, m->data, sizeof m->data);
+    frame[9] = m->type;
+    uint16_t crc = ir_frame_crc(frame);
+    frame[IR_CRC_BYTES] = (uint8_t)crc;
+    frame[IR_CRC_BYTES + 1] = (uint8_t)(crc >> 8);
+}
+
 void ohc_attach(robot *all, int n, const options *o) {
     n_broadcasts = o->n_ohc;
     for (int k = 0; k < o->n_ohc; k++) {
@@ -180,12 +189,8 @@ void ohc_attach(robot *all, int n, const options *o) {
             fprintf(stderr, "openswarm-sim: out of memory for --ohc on %d robots\n", n);
             exit(EXIT_CRASH);
         }
-        uint8_t frame[IR_FRAME_BYTES] = {0};
-        memcpy(frame, o->ohc[k].data, sizeof o->ohc[k].data);
-        frame[9] = o->ohc[k].type;
-        uint16_t crc = ir_frame_crc(frame);
-        frame[IR_CRC_BYTES] = (uint8_t)crc;
-        frame[IR_CRC_BYTES + 1] = (uint8_t)(crc >> 8);
+        uint8_t frame[IR_FRAME_BYTES];
+        ohc_frame(&o->ohc[k], frame);
         for (int i = 0; i < n; i++) {
             broadcast *b = &broadcasts[k][i];
             b->to = &all[i];

@@ -233,21 +233,34 @@ static int by_receiver_then_start(const void *a, const void *b) {
     return x->sender < y->sender ? -1 : x->sender > y->sender;
 }
 
-/* Into the receiver's inbox (kept by start: every frame handed over now
- * starts after those before it); frames that overlap there are broken,
- * both, as two senders' pulses interleave at the receiver. */
+/* Into the receiver's inbox, kept by start (a robot's frame handed over
+ * now starts after those before it; the overhead controller's may come
+ * between); frames that overlap there are broken, both, as two senders'
+ * pulses interleave at the receiver. */
 static void enqueue(deliveries *out, native_io *io, native_frame f) {
     if (io->inbox_count == NATIVE_INBOX_ROOM) {
         io->frames_lost_inbox_full++;
         out->overflowed++;
         return;
     }
+    unsigned at = io->inbox_count;
     for (unsigned k = 0; k < io->inbox_count; k++) {
         native_frame *g = &io->inbox[(io->inbox_head + k) % NATIVE_INBOX_ROOM];
         if (g->start < f.end && f.start < g->end) g->broken = f.broken = NATIVE_FRAME_COLLIDED;
+        if (g->start > f.start && at == io->inbox_count) at = k;
     }
-    io->inbox[(io->inbox_head + io->inbox_count) % NATIVE_INBOX_ROOM] = f;
+    for (unsigned k = io->inbox_count; k > at; k--)
+        io->inbox[(io->inbox_head + k) % NATIVE_INBOX_ROOM] = io->inbox[(io->inbox_head + k - 1) % NATIVE_INBOX_ROOM];
+    io->inbox[(io->inbox_head + at) % NATIVE_INBOX_ROOM] = f;
     io->inbox_count++;
+}
+
+/* Frames from outside the swarm: their overflows. */
+static deliveries from_outside;
+
+void native_air_hand_over(int receiver, const native_frame *f) {
+    enqueue(&from_outside, native_swarm_robot(receiver)->io, *f);
+    native_swarm_woken(receiver);
 }
 
 /* The window's senders (index order) and whom each reaches: found on
@@ -333,7 +346,7 @@ void native_air_deliver(const int *sent_by, unsigned n) {
 }
 
 uint64_t native_air_overflowed(void) {
-    uint64_t n = 0;
+    uint64_t n = from_outside.overflowed;
     for (int t = 0; by_thread != NULL && t < window_workers_threads(); t++) n += by_thread[t].overflowed;
     return n;
 }

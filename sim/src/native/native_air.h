@@ -33,6 +33,9 @@ int native_air_links(int sender, int *receivers, int room);
  * n of them, their frames in their logs) into the receivers' inboxes, on
  * every thread (window_workers). */
 void native_air_deliver(const int *senders, unsigned n);
+/* A frame from outside the swarm (the overhead controller's) into the
+ * receiver's inbox, between windows, starting in its future. */
+void native_air_hand_over(int receiver, const native_frame *f);
 /* Frames lost because a receiver's inbox had no room (0 in any sane swarm). */
 uint64_t native_air_overflowed(void);
 

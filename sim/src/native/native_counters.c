@@ -11,6 +11,7 @@
 #include "native/native_counters.h"
 
 #include <gelf.h>
+#include <stdlib.h>
 
 #include "native/native_swarm.h"
 
@@ -20,7 +21,8 @@ typedef struct ir_symbol {
     uint32_t offset, size; /* in the shared object; 0: none */
 } ir_symbol;
 
-static ir_symbol ir;
+static ir_symbol *irs;   /* each app's */
+static const int *app_of; /* each robot's app */
 
 static void note_symbol(const char *name, uint32_t value, uint32_t size, int type, void *ctx) {
     ir_symbol *s = ctx;
@@ -30,15 +32,18 @@ static void note_symbol(const char *name, uint32_t value, uint32_t size, int typ
     }
 }
 
-void native_counters_locate(const char *so) {
-    static const char *read_path;
-    firmware_symbols_once(so, &read_path, note_symbol, &ir, sizeof ir);
+void native_counters_locate(const native_apps *apps) {
+    irs = calloc((size_t)apps->n, sizeof *irs);
+    if (irs == NULL) return; /* counted as none: the lines say so */
+    for (int a = 0; a < apps->n; a++) firmware_symbols(apps->paths[a], note_symbol, &irs[a]);
+    app_of = apps->app_of;
 }
 
 void native_counters_print(int n_robots, double seconds) {
     for (int i = 0; i < n_robots; i++) {
         printf("counters t=%.3f robot=%d", seconds, i);
         firmware_counters_print_kernel(stdout, native_swarm_robot_stats(i), 1);
+        ir_symbol ir = irs != NULL ? irs[app_of[i]] : (ir_symbol){0, 0};
         const void *at = (const void *)(native_swarm_copy_of(i)->base + ir.offset);
         firmware_counters_print_ir(stdout, ir.offset != 0 ? native_swarm_robot_memory(i, at, IR_COUNTER_BYTES) : NULL,
                                    ir.size == IR_COUNTER_BYTES);

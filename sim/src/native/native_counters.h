@@ -6,9 +6,10 @@
 #define OPENSWARM_NATIVE_COUNTERS_H
 
 #include "sim.h"
+#include "native/native_apps.h"
 
-/* Where the robot's IR counters are in the shared object so (once). */
-void native_counters_locate(const char *so);
+/* Where each app's IR counters are in its shared object. */
+void native_counters_locate(const native_apps *apps);
 /* Every robot's line, at seconds of the nominal clock (between windows). */
 void native_counters_print(int n_robots, double seconds);
 

@@ -59,7 +59,7 @@ static int start(const options *o, int n, epuck_world_output *first) {
     boards = calloc(n ? (size_t)n : 1, sizeof *boards);
     faults = calloc(n ? (size_t)n : 1, sizeof *faults);
     if (copies == NULL || boards == NULL || faults == NULL || native_load(controller, threads, copies) != 0 ||
-        native_swarm_create(copies, threads, n) != 0)
+        native_swarm_create(copies, 1, threads, NULL, n) != 0)
         return -1;
     hz = copies[0].entry.cpu_hz;
     for (int i = 0; i < n; i++) {

@@ -78,9 +78,11 @@ static int called(const native_io *io, uintptr_t function) {
     return 0;
 }
 
-/* Where a handler is and its name: asked of addr2line once per function,
- * whatever the number of robots (a thousand robots share their handlers). */
+/* Where a handler is and its name: asked of addr2line once per function
+ * of an app, whatever the number of robots (a thousand robots share their
+ * handlers; apps of one world share offsets, not functions). */
 typedef struct handler_place {
+    const char *so;
     uintptr_t offset;
     char place[400], name[128];
 } handler_place;
@@ -89,10 +91,11 @@ static const handler_place *place_of(const char *so, uintptr_t offset) {
     static handler_place known[16];
     static unsigned n_known, next;
     for (unsigned i = 0; i < n_known; i++)
-        if (known[i].offset == offset) return &known[i];
+        if (known[i].offset == offset && strcmp(known[i].so, so) == 0) return &known[i];
     handler_place *p = &known[next];
     next = (next + 1) % (sizeof known / sizeof *known);
     if (n_known < sizeof known / sizeof *known) n_known++;
+    p->so = so;
     p->offset = offset;
     host_code_place(so, offset, p->place, sizeof p->place, p->name, sizeof p->name);
     return p;

@@ -53,9 +53,10 @@ static uint8_t *read_file(const char *path, size_t *size) {
     return bytes;
 }
 
-/* The copy's memory file stays open (*fd) until every copy is loaded: the
- * dynamic linker also knows an object by its path, and a later copy given
- * the same descriptor number would be taken for this one. */
+/* The copy's memory file stays open (*fd) for the whole run: the dynamic
+ * linker also knows an object by its path, and a later copy - of this app
+ * or of another app of the world - given the same descriptor number would
+ * be taken for this one. */
 static void *open_copy(const uint8_t *bytes, size_t size, int k, int *fd, char *why, size_t why_room) {
     *fd = memfd_create("openswarm-native-robot", MFD_CLOEXEC);
     if (*fd < 0 || write(*fd, bytes, size) != (ssize_t)size) {
@@ -132,11 +133,11 @@ int native_load(const char *path, int copies, native_copy *out) {
         fprintf(stderr, "openswarm-sim: %s: cannot read it (%s)\n", path, strerror(errno));
         return -1;
     }
-    int status = 0, *fds = malloc((size_t)copies * sizeof *fds);
-    int opened = 0;
-    for (int k = 0; fds != NULL && k < copies && status == 0; k++, opened++) {
+    int status = 0;
+    for (int k = 0; k < copies && status == 0; k++) {
         char why[512];
-        out[k].handle = open_copy(bytes, size, k, &fds[k], why, sizeof why);
+        int fd; /* left open: open_copy */
+        out[k].handle = open_copy(bytes, size, k, &fd, why, sizeof why);
         if (out[k].handle == NULL) {
             fprintf(stderr, "openswarm-sim: %s: cannot load it as a native robot: %s\n", path, why);
             status = -1;
@@ -144,10 +145,6 @@ int native_load(const char *path, int copies, native_copy *out) {
             status = describe(path, &out[k]);
         }
     }
-    if (fds == NULL) status = -1;
-    for (int k = 0; k < opened; k++)
-        if (fds[k] >= 0) close(fds[k]);
-    free(fds);
     free(bytes);
     return status;
 }

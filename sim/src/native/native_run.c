@@ -16,9 +16,11 @@
 #include "interrupt.h"
 #include "output/output.h"
 #include "native/native_air.h"
+#include "native/native_apps.h"
 #include "native/native_counters.h"
 #include "native/native_faults.h"
 #include "native/native_handlers.h"
+#include "native/native_ohc.h"
 #include "native/native_swarm.h"
 #include "progress.h"
 #include "world/world_run.h"
@@ -47,7 +49,7 @@ static int refuse_exact_only(const options *o) {
     static const char *fix = "run it in the exact mode (the firmware's .elf, `openswarm run` without --native)";
     const char *what = o->marks ? "--marks" : o->n_watched ? "--watch-irq" : o->profile ? "--profile"
                      : o->trace ? "--trace" : o->trace_csv ? "--trace-csv" : o->gdb_port ? "--gdb"
-                     : o->vcd ? "--vcd" : o->n_ohc ? "--ohc" : o->ir_log ? "--ir-log"
+                     : o->vcd ? "--vcd" : o->ir_log ? "--ir-log"
                      : o->main_stack ? "--main-stack" : NULL;
     if (what == NULL) return 0;
     fprintf(stderr, "openswarm-sim: %s measures the simulated MCU, which the native mode does not "
@@ -202,14 +204,14 @@ static int robot_threads(const options *o, int physics_on_own) {
     return native_swarm_threads_for(asked, o->robots);
 }
 
-static int start(const options *o, const char *path) {
+static int start(const options *o) {
     int on_own = physics_thread(o);
     int threads = robot_threads(o, on_own);
-    native_copy *copies = calloc((size_t)threads, sizeof *copies);
-    if (copies == NULL || native_load(path, threads, copies) != 0) return -1;
-    nominal_hz = copies[0].entry.cpu_hz;
-    if (o->counters_period >= 0) native_counters_locate(path);
-    if (native_swarm_create(copies, threads, o->robots) != 0) return -1;
+    native_apps apps;
+    if (native_apps_load(o, threads, &apps) != 0) return -1;
+    nominal_hz = apps.copies[0].entry.cpu_hz;
+    if (o->counters_period >= 0) native_counters_locate(&apps);
+    if (native_swarm_create(apps.copies, apps.n, threads, apps.app_of, o->robots) != 0) return -1;
     lines = calloc((size_t)o->robots, sizeof *lines);
     senders = malloc((size_t)o->robots * sizeof *senders);
     if (lines == NULL || senders == NULL) return -1;
@@ -226,6 +228,8 @@ static int start(const options *o, const char *path) {
     }
     native_swarm_boot();
     native_faults_attach(nominal_hz);
+    native_ohc_start(o, o->robots, nominal_hz);
+    native_ohc_deliver(window);
     return 0;
 }
 
@@ -241,6 +245,7 @@ static void run(const options *o) {
         int all_stopped = native_swarm_window(end, nominal_hz, native_air_clear);
         after_window();
         native_faults_after_window(end);
+        native_ohc_deliver(end + window);
         if (o->world != NULL) world_run_after_window(end, nominal_hz);
         progress_update(end);
         run_end = end;
@@ -267,7 +272,7 @@ static int report(const options *o) {
         /* what its kernel lost or refused, as the exact mode warns of it */
         const uint16_t *counters = native_swarm_robot_stats(i);
         if (counters != NULL) kernel_loss_warnings(n_robots > 1 ? i : -1, ROBOT_KILOBOT, counters);
-        native_handlers_report(i, n_robots > 1 ? i : -1, ROBOT_KILOBOT, firmware_of(o, 0),
+        native_handlers_report(i, n_robots > 1 ? i : -1, ROBOT_KILOBOT, firmware_of(o, i),
                                (double)run_end / nominal_hz);
         if (r->image_changed) {
             fprintf(stderr, "openswarm-sim: %sits RAM changed while it was not running: a stray "
@@ -308,17 +313,9 @@ int native_run(const options *o) {
     opts = o;
     n_robots = o->robots;
     if (refuse_exact_only(o) != 0) return EXIT_USAGE;
-    const char *path = firmware_of(o, 0);
-    for (int i = 1; i < o->robots; i++) {
-        if (strcmp(firmware_of(o, i), path) != 0) {
-            fprintf(stderr, "openswarm-sim: robot %d runs %s, robot 0 %s: the native mode runs one "
-                            "app on every robot so far\n", i, firmware_of(o, i), path);
-            return EXIT_USAGE;
-        }
-    }
     if (o->console_csv != NULL && (console_csv = console_csv_open(o->console_csv)) == NULL)
         return EXIT_USAGE;
-    if (start(o, path) != 0) return EXIT_USAGE;
+    if (start(o) != 0) return EXIT_USAGE;
     run(o);
     for (int i = 0; i < n_robots; i++) {
         if (lines[i].len == 0) continue;

@@ -27,8 +27,9 @@
  * docs/benchmarks.md "Native mode"). --threads still chooses. */
 #define ROBOTS_PER_THREAD 2500
 
-static native_copy *copies;
+static native_copy *copies;  /* app a's copy on thread t: copies[a * n_threads + t] */
 static int n_threads;
+static int *app_of;          /* each robot's app (NULL: one app) */
 static native_robot *robots;
 static int n_robots;
 static int *loaded;           /* per copy: whose image it holds (-1: the pristine one) */
@@ -57,10 +58,13 @@ static uint8_t *powered_off; /* --faults brownout: not run, deaf, until restarte
 
 native_robot *native_swarm_robot(int index) { return &robots[index]; }
 
-const native_copy *native_swarm_copy_of(int index) { return &copies[index % n_threads]; }
+/* Robot index runs on thread index % n_threads, in its app's copy there. */
+static int copy_index(int index) { return (app_of != NULL ? app_of[index] * n_threads : 0) + index % n_threads; }
+
+const native_copy *native_swarm_copy_of(int index) { return &copies[copy_index(index)]; }
 
 const void *native_swarm_robot_memory(int index, const void *address, size_t n) {
-    int t = index % n_threads;
+    int t = copy_index(index);
     const native_copy *c = &copies[t];
     const native_robot *r = &robots[index];
     const uint8_t *at = address;
@@ -71,7 +75,7 @@ const void *native_swarm_robot_memory(int index, const void *address, size_t n) 
 }
 
 const void *native_swarm_robot_stats(int index) {
-    const void *at = copies[index % n_threads].entry.kernel_stats;
+    const void *at = copies[copy_index(index)].entry.kernel_stats;
     return at != NULL ? native_swarm_robot_memory(index, at, 1) : NULL;
 }
 
@@ -123,7 +127,7 @@ static void restore(native_robot *r, native_copy *c) {
 
 /* Robot i's image into its copy, the one there saved first. */
 static native_copy *load(int i) {
-    int t = i % n_threads;
+    int t = copy_index(i);
     native_copy *c = &copies[t];
     if (loaded[t] == i) return c;
     if (loaded[t] >= 0) save(&robots[loaded[t]], c);
@@ -294,7 +298,7 @@ static int run_share(int t) {
     int all_stopped = running[t] == 0; /* as the window began */
     for (int i = next_due(t); i < n_robots;) {
         int after = next_due(i + n_threads);
-        if (after < n_robots) prefetch(after, copies[t].image_bytes);
+        if (after < n_robots) prefetch(after, copies[copy_index(after)].image_bytes);
         run_robot(t, i, own_end_of(schedule[i].hz));
         i = after;
     }
@@ -332,30 +336,39 @@ static int allocate_stacks(native_robot *r, const native_entry *e) {
     return 0;
 }
 
-int native_swarm_create(native_copy *all_copies, int n_copies, int n) {
+/* The largest image of the apps': every robot's saved image gets its room. */
+static size_t largest_image(int n_copies) {
+    size_t bytes = 0;
+    for (int k = 0; k < n_copies; k++) bytes = copies[k].image_bytes > bytes ? copies[k].image_bytes : bytes;
+    return bytes;
+}
+
+int native_swarm_create(native_copy *all_copies, int n_apps, int n_copies, const int *apps, int n) {
     copies = all_copies;
     n_threads = n_copies;
     n_robots = n;
+    app_of = n_apps > 1 ? malloc((size_t)n * sizeof *app_of) : NULL;
+    if (app_of != NULL) memcpy(app_of, apps, (size_t)n * sizeof *app_of);
     robots = calloc((size_t)n, sizeof *robots);
     schedule = calloc((size_t)n, sizeof *schedule);
-    loaded = malloc((size_t)n_copies * sizeof *loaded);
+    loaded = malloc((size_t)(n_apps * n_copies) * sizeof *loaded);
     running = calloc((size_t)n_copies, sizeof *running);
     asking = calloc((size_t)n_copies, sizeof *asking);
     ran = calloc((size_t)n_copies, sizeof *ran);
     taken = calloc((size_t)n_copies, sizeof *taken);
     has_run = calloc((size_t)n, 1);
     powered_off = calloc((size_t)n, 1);
-    if (powered_off == NULL || robots == NULL || schedule == NULL || loaded == NULL || running == NULL || asking == NULL ||
-        ran == NULL || taken == NULL || has_run == NULL)
+    if (powered_off == NULL || robots == NULL || schedule == NULL || loaded == NULL || running == NULL ||
+        asking == NULL || ran == NULL || taken == NULL || has_run == NULL || (n_apps > 1 && app_of == NULL))
         return -1;
-    for (int t = 0; t < n_copies; t++) loaded[t] = -1;
+    for (int k = 0; k < n_apps * n_copies; k++) loaded[k] = -1;
     size_t io_stride, image_stride;
     uint8_t *ios = arena((size_t)n, sizeof(native_io), &io_stride);
-    uint8_t *images = arena((size_t)n, copies[0].image_bytes, &image_stride);
+    uint8_t *images = arena((size_t)n, largest_image(n_apps * n_copies), &image_stride);
     if (ios == NULL || images == NULL) return -1;
     for (int i = 0; i < n; i++) {
         native_robot *r = &robots[i];
-        const native_copy *c = &copies[i % n_copies];
+        const native_copy *c = &copies[copy_index(i)];
         r->io = (native_io *)(ios + (size_t)i * io_stride); /* zeroed, as mapped */
         r->image = images + (size_t)i * image_stride;
         if (allocate_stacks(r, &c->entry) != 0) {
@@ -368,7 +381,7 @@ int native_swarm_create(native_copy *all_copies, int n_copies, int n) {
 
 void native_swarm_boot(void) {
     for (int i = 0; i < n_robots; i++) {
-        native_copy *c = &copies[i % n_threads];
+        native_copy *c = &copies[copy_index(i)];
         boot(&robots[i], c, 0);
         save(&robots[i], c);
         schedule[i] = (wake_time){wake_of(robots[i].io), NULL, robots[i].hz};

@@ -2,7 +2,8 @@
 /* The native mode's robots (ports/native): each its own RAM image, stacks
  * and native_io, run window by window on one thread or several. Thread t
  * runs robots t, t + T, ... in its own copy of the shared object (a copy's
- * image address is fixed, so a robot stays with its copy). Within a window
+ * image address is fixed, so a robot stays with its copy; a world of
+ * several apps loads each app once per thread). Within a window
  * robots see nothing of each other: what one sends is handed over after
  * it (native_air.c), so the run is the same on any number of threads. */
 #ifndef OPENSWARM_NATIVE_SWARM_H
@@ -42,10 +43,11 @@ typedef struct native_robot {
 /* The threads for n robots (requested: --threads, 0 picks by the machine):
  * load that many copies. */
 int native_swarm_threads_for(int requested, int n);
-/* Robots n of the loaded copies (one per thread), each with a fresh
- * native_io (zeroed; the caller fills it before they boot). -1 after a
- * message. */
-int native_swarm_create(native_copy *copies, int n_copies, int n);
+/* Robots n of the loaded copies, each with a fresh native_io (zeroed; the
+ * caller fills it before they boot). copies holds n_apps apps' copies, one
+ * per thread each (app a's on thread t at a * threads + t); robot i runs
+ * app apps[i] (apps may be NULL for one app). -1 after a message. */
+int native_swarm_create(native_copy *copies, int n_apps, int threads, const int *apps, int n);
 native_robot *native_swarm_robot(int index);
 /* Where robot index's kernel counters (sys_stats) are now, in its copy or
  * its saved image; NULL if its image has none. */

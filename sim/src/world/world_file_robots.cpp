@@ -34,6 +34,7 @@ void Reader::group(const Node &n, int g, Draws &draws, long &next_uid) {
     /* What every robot of the group shares. */
     Placing p{g, robots_.size(), world_robot{}};
     p.base.firmware = -1;
+    p.base.group = g;
     for (int &c : p.base.calibration) c = -2;
     if (auto f = get(n, "firmware")) p.base.firmware = firmware(*f);
     if (auto c = get(n, "calibration")) calibration(*c, p.base);

@@ -203,6 +203,12 @@ void world_robot_identity(int index, int *uid, int calibration[4]) {
     for (int i = 0; i < 4; i++) calibration[i] = r->calibration[i] == -2 ? own[i] : r->calibration[i];
 }
 
+const char *world_robot_group(int index, int *group) {
+    if (spec.path == NULL || index >= spec.n_robots) return NULL;
+    *group = spec.robots[index].group;
+    return spec.path;
+}
+
 void world_eeprom_fill(eeprom_write_fn write, void *ctx) {
     for (uint16_t a = 0; a < WORLD_EEPROM_BYTES; a++)
         if (spec.eeprom_given[a]) write(ctx, a, &spec.eeprom[a], 1);

@@ -17,6 +17,9 @@ int world_options_check(options *o);
 uint64_t world_robot_noise_seed(int index);
 /* Robot index's uid and EEPROM calibration (-1: erased). */
 void world_robot_identity(int index, int *uid, int calibration[4]);
+/* The world file and robot index's group in its robots[], for messages
+ * (NULL: no world). */
+const char *world_robot_group(int index, int *group);
 /* The bytes the world's "eeprom" gives, as write(ctx, ...) calls: after
  * kilobot_eeprom_fill, the same for every robot. */
 void world_eeprom_fill(eeprom_write_fn write, void *ctx);

@@ -74,6 +74,7 @@ typedef struct world_robot {
     double heading_deg;
     int uid;            /* 0..65535 */
     int firmware;       /* index into world_spec.firmware; -1: the command line's */
+    int group;          /* its group's index in robots[], for messages */
     int calibration[4]; /* EEPROM: turn left, turn right, straight left, straight right;
                            -2: the robot's own (factory) duties; -1: erased */
 } world_robot;
