@@ -21,7 +21,7 @@ foreach(piece options options_usage options_outputs progress warning_groups writ
     faults/fault_plan faults/fault_log
     world/placement world/world_random world/kilobot_motion world/kilobot_light world/world_run
     world/world_stepper world/world_avr native/native_load native/native_swarm
-    native/native_air native/native_askers native/native_handlers native/native_run world/epuck_sensors world/epuck_link world/epuck_pipes world/epuck_run native/native_epuck
+    native/native_air native/native_askers native/native_handlers native/native_ir_counters native/native_run world/epuck_sensors world/epuck_link world/epuck_pipes world/epuck_run native/native_epuck
     tools/debug tools/profile tools/measure)
   list(APPEND SIMULATOR_SOURCES ${SIM_ROOT}/src/${piece}.c)
 endforeach()
@@ -35,7 +35,7 @@ list(APPEND SIMULATOR_SOURCES ${WORLD_FILE_SOURCES} ${SIM_ROOT}/src/world/world.
 # What a run in a world leaves behind (also a library of its own for
 # tests/world's driver).
 set(SIMULATOR_OUTPUT_SOURCES)
-foreach(piece output history trajectories picture picture_footer video video_clock viewer part_file)
+foreach(piece output history trajectories ir_table picture picture_footer video video_clock viewer part_file)
   list(APPEND SIMULATOR_OUTPUT_SOURCES ${SIM_ROOT}/src/output/${piece}.c)
 endforeach()
 set(SIMULATOR_INCLUDES ${SIM_ROOT}/src ${REPO_ROOT}/cli/src ${REPO_ROOT}/ports/native/include

@@ -21,9 +21,9 @@ static const char *const kernel_names[] = {
 #define KERNEL_COUNTERS (sizeof kernel_names / sizeof kernel_names[0])
 #define KERNEL_BYTES (2 * KERNEL_COUNTERS + 1) /* and event_queue_peak */
 
-static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc", "broken",
-                                       "collisions", "busy"};
-#define IR_COUNTERS (sizeof ir_names / sizeof ir_names[0])
+static const char *const ir_names[KILOBOT_IR_COUNTERS] = {"sent", "received", "refused", "bad_crc",
+                                                           "broken", "collisions", "busy"};
+#define IR_COUNTERS KILOBOT_IR_COUNTERS
 
 typedef struct counter_symbols counter_symbols;
 
@@ -66,14 +66,25 @@ static void print_kernel(FILE *out, const avr_t *avr, const counter_symbols *s) 
     }
 }
 
-static void print_ir(FILE *out, const avr_t *avr, const counter_symbols *s) {
-    if (s->ir == 0) {
+static int ir_layout_known(const avr_t *avr, const counter_symbols *s) {
+    return s->ir_size == 2 * IR_COUNTERS && s->ir + 2 * IR_COUNTERS <= avr->ramend + 1u;
+}
+
+int firmware_ir_counters(const robot *r, uint16_t out[KILOBOT_IR_COUNTERS]) {
+    const counter_symbols *s = &r->counters;
+    if (s->ir == 0 || !ir_layout_known(r->avr, s)) return 0;
+    for (unsigned i = 0; i < IR_COUNTERS; i++) out[i] = (uint16_t)u16_at(r->avr, s->ir + 2 * i);
+    return 1;
+}
+
+static void print_ir(FILE *out, const robot *r) {
+    uint16_t counts[KILOBOT_IR_COUNTERS];
+    if (r->counters.ir == 0) {
         fprintf(out, " ir=none");
-    } else if (s->ir_size != 2 * IR_COUNTERS || s->ir + 2 * IR_COUNTERS > avr->ramend + 1u) {
+    } else if (!firmware_ir_counters(r, counts)) {
         fprintf(out, " ir=unknown-layout");
     } else {
-        for (unsigned i = 0; i < IR_COUNTERS; i++)
-            fprintf(out, " ir_%s=%u", ir_names[i], u16_at(avr, s->ir + 2 * i));
+        for (unsigned i = 0; i < IR_COUNTERS; i++) fprintf(out, " ir_%s=%u", ir_names[i], counts[i]);
     }
 }
 
@@ -92,7 +103,7 @@ void firmware_counters_print(const robot *r, double seconds) {
     unsigned room, used = main_stack_worst(r, &room);
     printf("counters t=%.3f robot=%d", seconds, r->index);
     print_kernel(stdout, r->avr, &s);
-    print_ir(stdout, r->avr, &s);
+    print_ir(stdout, r);
     if (room != 0)
         printf(" main_stack=%u/%u", used, room);
     else

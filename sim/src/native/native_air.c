@@ -27,6 +27,9 @@ static void *distance_ctx;
 static uint64_t *receiver_rng; /* each receiver's loss and noise draws */
 static uint64_t *last_start;   /* each sender's last frame's start, nominal cycles; 0: none */
 static uint64_t *frames_sent;  /* each sender's frames so far: the distance error's frame count */
+/* Each receiver's frames from robots in range: in its inbox, or lost on
+ * the way (the loss's draw, a full inbox); counted on its own thread. */
+static uint64_t *heard, *lost_channel;
 static ir_distance_error distance_error;
 /* Each thread's: the frames on their way to its receivers, and those
  * that found an inbox full. */
@@ -42,6 +45,8 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
     n_robots = n;
     distance_error = distance != NULL ? *distance : (ir_distance_error){0, 0, 0};
     frames_sent = calloc((size_t)n, sizeof *frames_sent);
+    heard = calloc((size_t)n, sizeof *heard);
+    lost_channel = calloc((size_t)n, sizeof *lost_channel);
     range_mm = range;
     loss = loss_pct / 100.0;
     nominal = nominal_hz;
@@ -201,7 +206,10 @@ static int16_t reading(int model, uint64_t *rng) {
 static void deliver_to(deliveries *out, int receiver, int sender, uint64_t frame, const native_sent *s, double mm) {
     uint64_t *rng = &receiver_rng[receiver];
     double chance = loss * (mm / range_mm) * (mm / range_mm);
-    if (chance > 0 && world_random_uniform(rng) < chance) return;
+    if (chance > 0 && world_random_uniform(rng) < chance) {
+        lost_channel[receiver]++;
+        return;
+    }
     uint32_t from_hz = native_swarm_robot(sender)->hz, to_hz = native_swarm_robot(receiver)->hz;
     uint64_t start = s->at * nominal / from_hz + latency; /* nominal cycles */
     if (out->n_pending == out->pending_room) {
@@ -231,12 +239,14 @@ static int by_receiver_then_start(const void *a, const void *b) {
 /* Into the receiver's inbox (kept by start: every frame handed over now
  * starts after those before it); frames that overlap there are broken,
  * both, as two senders' pulses interleave at the receiver. */
-static void enqueue(deliveries *out, native_io *io, native_frame f) {
+static void enqueue(deliveries *out, int receiver, native_io *io, native_frame f) {
     if (io->inbox_count == NATIVE_INBOX_ROOM) {
         io->frames_lost_inbox_full++;
         out->overflowed++;
+        lost_channel[receiver]++;
         return;
     }
+    heard[receiver]++;
     for (unsigned k = 0; k < io->inbox_count; k++) {
         native_frame *g = &io->inbox[(io->inbox_head + k) % NATIVE_INBOX_ROOM];
         if (g->start < f.end && f.start < g->end) g->broken = f.broken = 1;
@@ -299,8 +309,9 @@ static int deliver_share(int t) {
     }
     qsort(out->pending, out->n_pending, sizeof *out->pending, by_receiver_then_start);
     for (size_t k = 0; k < out->n_pending; k++) {
-        enqueue(out, native_swarm_robot(out->pending[k].receiver)->io, out->pending[k].frame);
-        native_swarm_woken(out->pending[k].receiver);
+        int receiver = out->pending[k].receiver;
+        enqueue(out, receiver, native_swarm_robot(receiver)->io, out->pending[k].frame);
+        native_swarm_woken(receiver);
     }
     out->n_pending = 0;
     return 1;
@@ -330,4 +341,9 @@ uint64_t native_air_overflowed(void) {
     uint64_t n = 0;
     for (int t = 0; by_thread != NULL && t < window_workers_threads(); t++) n += by_thread[t].overflowed;
     return n;
+}
+
+void native_air_counts(int receiver, uint64_t *heard_by, uint64_t *lost_to) {
+    *heard_by = heard != NULL ? heard[receiver] : 0;
+    *lost_to = lost_channel != NULL ? lost_channel[receiver] : 0;
 }

@@ -33,6 +33,10 @@ int native_air_links(int sender, int *receivers, int room);
  * n of them, their frames in their logs) into the receivers' inboxes, on
  * every thread (window_workers). */
 void native_air_deliver(const int *senders, unsigned n);
+/* Frames from robots in range since the start that reached receiver's
+ * inbox (heard_by; overlapping ones are broken there) and those lost on
+ * the way (lost_to: --ir-loss, a full inbox), as ir_channel_counts. */
+void native_air_counts(int receiver, uint64_t *heard_by, uint64_t *lost_to);
 /* Frames lost because a receiver's inbox had no room (0 in any sane swarm). */
 uint64_t native_air_overflowed(void);
 

@@ -16,6 +16,7 @@
 #include "output/output.h"
 #include "native/native_air.h"
 #include "native/native_handlers.h"
+#include "native/native_ir_counters.h"
 #include "native/native_swarm.h"
 #include "progress.h"
 #include "world/world_run.h"
@@ -74,7 +75,12 @@ static void place(ir_distance_fn distance, void *ctx) {
     native_air_place(distance, ctx, positions);
 }
 
-static const world_robots native_robots = {led, light, place, native_air_links};
+static void ir(int index, output_ir *out) {
+    out->firmware_known = native_ir_counters(index, firmware_of(opts, 0), out->firmware);
+    native_air_counts(index, &out->heard, &out->lost_channel);
+}
+
+static const world_robots native_robots = {led, light, place, native_air_links, ir};
 
 /* ---- what each robot is told before it starts ---- */
 
