@@ -24,7 +24,7 @@ import os
 import subprocess
 import sys
 
-from behaviour import Checks
+from behaviour import Checks, run as run_world
 
 sim, program, out = sys.argv[1:4]
 openswarm = sys.argv[4] if len(sys.argv) > 4 else None
@@ -48,10 +48,7 @@ def run(name, robots, loss_pct):
     with open(path, "w") as f:
         json.dump(world(robots, loss_pct), f)
     console = os.path.join(folder, "console.csv")
-    done = subprocess.run([sim, "--world", path, "--out", folder, "-q", "--console-csv", console, program],
-                          capture_output=True, text=True, timeout=600)
-    if done.returncode != 0:
-        sys.exit(f"openswarm-sim failed ({done.returncode}) on {name}:\n{done.stderr}")
+    run_world(sim, program, path, folder, ("--console-csv", console))
     rows = {}
     with open(os.path.join(folder, "ir.csv")) as f:
         for row in csv.DictReader(f):
