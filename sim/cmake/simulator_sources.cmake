@@ -35,7 +35,7 @@ list(APPEND SIMULATOR_SOURCES ${WORLD_FILE_SOURCES} ${SIM_ROOT}/src/world/world.
 # What a run in a world leaves behind (also a library of its own for
 # tests/world's driver).
 set(SIMULATOR_OUTPUT_SOURCES)
-foreach(piece output history trajectories picture picture_footer video video_clock viewer part_file)
+foreach(piece output history trajectories ir_table picture picture_footer video video_clock viewer part_file)
   list(APPEND SIMULATOR_OUTPUT_SOURCES ${SIM_ROOT}/src/output/${piece}.c)
 endforeach()
 set(SIMULATOR_INCLUDES ${SIM_ROOT}/src ${REPO_ROOT}/cli/src ${REPO_ROOT}/ports/native/include

@@ -80,7 +80,7 @@ void options_usage(FILE *out) {
             "                       arena, obstacles, objects, lights and the robots, which it\n"
             "                       places; FIRMWARE.elf runs on robots the file names none for\n"
             "      --out DIR        with --world: write trajectories.csv, objects.csv,\n"
-            "                       final.png and viewer.html into DIR\n"
+            "                       ir.csv (Kilobots), final.png and viewer.html into DIR\n"
             "      --video          with --out: also video.mp4 (needs ffmpeg)\n"
             "      --video-fps F    the video's frames a second, 1..100 (default 25)\n"
             "      --video-speed X  simulated seconds a second of video, 0.01..10000 (default 1)\n"

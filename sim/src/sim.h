@@ -347,6 +347,10 @@ void firmware_counters_print(const robot *r, double seconds);
  * firmware has none; layout_known 0: they are not laid out so. */
 void firmware_counters_print_kernel(FILE *out, const uint8_t *bytes, int layout_known);
 void firmware_counters_print_ir(FILE *out, const uint8_t *bytes, int layout_known);
+/* Robot r's firmware IR counters now (kilobot_ir_stats' seven, in order):
+ * 1, or 0 when its firmware keeps none (or another layout). */
+#define KILOBOT_IR_COUNTERS 7
+int firmware_ir_counters(const robot *r, uint16_t out[KILOBOT_IR_COUNTERS]);
 int main_stack_report(const robot *r, int print);
 
 /* warning_groups.c: the end-of-run warnings, noted robot by robot (-1: a
@@ -613,6 +617,10 @@ void ir_channel_hand_over(uint32_t latency_cycles);
 void ir_channel_robot_reset(int index);
 /* The receivers sender reaches (up to room of them), and their count. */
 int ir_channel_links(int sender, int *receivers, int room);
+/* Frames from robots in range since the start that reached receiver (its
+ * comparator saw them: a collision or an added fault may still break
+ * them) and those the channel lost on the way (--ir-loss). */
+void ir_channel_counts(int receiver, uint64_t *heard, uint64_t *lost_channel);
 /* ir_log.c: --ir-log, the frames on the air decoded by the wire format */
 void ir_log_enable(int robots);
 int ir_log_enabled(void);

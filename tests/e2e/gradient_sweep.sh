@@ -3,7 +3,9 @@
 # trial of 10 s per point: six robots in a line, IR loss 0, 50 and 90% at
 # the range's edge. Each robot reports its hop count ("metric hops N") as it
 # changes; hops.settled_s is when the last one changed. Without loss the
-# counts settle on 0..5 (mean 2.5) within the run.
+# counts settle on 0..5 (mean 2.5) within the run. The IR metrics: the
+# channel loses nothing without loss, more with more, and the robots
+# receive fewer frames.
 #   gradient_sweep.sh OPENSWARM WORKDIR
 set -euo pipefail
 openswarm=$1 work=$2
@@ -22,5 +24,14 @@ for point in 1 2 3; do
     awk -F, '{ exit !($6 > 0 && $6 <= 10) }' <<<"$line" || fail "point $point settled at a time in the run: $line" r/summary.csv
 done
 test "$(grep -c ',hops.settled_s,' r/results.csv)" -ge 3 || fail "settling over time" r/results.csv
+# The built-in IR metrics (ir.csv): no loss, the channel lost nothing;
+# more loss, more lost and fewer received.
+value() { grep "^$1,[0-9]*,$2,1,0," r/summary.csv | cut -d, -f6; }
+test "$(value 1 ir_lost_channel)" = 0 || fail "without loss the channel lost no frame" r/summary.csv
+awk -v a="$(value 2 ir_lost_channel)" -v b="$(value 3 ir_lost_channel)" 'BEGIN { exit !(a > 0 && b > a) }' ||
+    fail "more loss, more frames lost by the channel" r/summary.csv
+awk -v a="$(value 1 ir_received)" -v b="$(value 3 ir_received)" 'BEGIN { exit !(a > 10 && b < a) }' ||
+    fail "more loss, fewer frames received" r/summary.csv
+head -c 4 r/plots/ir_lost_channel.png | grep -q PNG || fail "the IR plot" r.log
 head -c 4 r/plots/hops.settled_s.png | grep -q PNG || fail "the plot" r.log
 echo "the gradient sweep ran, settled and plotted"

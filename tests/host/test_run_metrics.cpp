@@ -37,6 +37,12 @@ fs::path three_robots(const std::string &name, bool with_world = true) {
                "0.000,0,200.00,200.00\n0.000,1,250.00,200.00\n"
                "1.000,0,200.00,200.00\n1.000,1,300.00,200.00\n"
                "2.000,0,200.00,200.00\n2.000,1,300.00,200.00\n");
+    // Robot 2's firmware keeps no IR counters: its fields are empty.
+    write_file(dir / "ir.csv",
+               "time_s,robot,sent,received,refused,bad_crc,broken,collisions,busy,heard,lost_channel\n"
+               "0.000,0,0,0,0,0,0,0,0,0,0\n0.000,1,0,0,0,0,0,0,0,0,0\n0.000,2,,,,,,,,0,0\n"
+               "1.000,0,4,3,0,1,0,0,0,5,1\n1.000,1,6,5,0,0,0,0,0,5,2\n1.000,2,,,,,,,,4,3\n"
+               "2.000,0,8,6,0,1,0,0,0,10,2\n2.000,1,10,9,0,0,0,0,0,9,4\n2.000,2,,,,,,,,8,6\n");
     if (with_world)
         write_file(dir / "world.json",
                    R"({"arena": {"width_mm": 500, "height_mm": 500}, "ir": {"range_mm": 100},
@@ -75,7 +81,7 @@ TEST(RunMetrics, EveryBuiltinAtEverySample) {
     fs::path dir = three_robots("every");
     MetricsOutcome o = measure_run({dir, {}, {}, {}, 0});
     EXPECT_TRUE(o.notes.empty());
-    ASSERT_EQ(o.results.size(), 7u); // every built-in: the world has lights and objects
+    ASSERT_EQ(o.results.size(), 11u); // every built-in: the world has lights and objects, the run ir.csv
     const MetricResult &nn = named(o, "nearest_neighbour_mm");
     ASSERT_EQ(nn.swarm.size(), 3u);
     EXPECT_DOUBLE_EQ(nn.swarm[1].time_s, 1.0);
@@ -89,6 +95,28 @@ TEST(RunMetrics, EveryBuiltinAtEverySample) {
     EXPECT_NEAR(named(o, "light_distance_mm").swarm[0].value, (100 + std::hypot(30, 100) + 140) / 3, 1e-9);
     // The objects touch rims 10 mm apart at 0 (one cluster), 60 mm later.
     EXPECT_EQ(values(named(o, "largest_cluster")), (std::vector<double>{1.0, 0.5, 0.5}));
+}
+
+// The IR metrics: means over robots of ir.csv's counts; the firmware's
+// over the robots whose firmware keeps counters (not robot 2), lost as
+// heard + lost_channel - received.
+TEST(RunMetrics, IrMetricsAreMeansOfTheCounts) {
+    fs::path dir = three_robots("ir");
+    MetricsOutcome o = measure_run({dir, {}, {"ir_sent", "ir_received", "ir_lost", "ir_lost_channel"}, {}, 0});
+    EXPECT_EQ(values(named(o, "ir_sent")), (std::vector<double>{0, 5, 9}));
+    EXPECT_EQ(values(named(o, "ir_received")), (std::vector<double>{0, 4, 7.5}));
+    EXPECT_EQ(values(named(o, "ir_lost")), (std::vector<double>{0, 2.5, 5}));
+    EXPECT_EQ(values(named(o, "ir_lost_channel")), (std::vector<double>{0, 2, 4}));
+    EXPECT_EQ(named(o, "ir_lost").unit, "frames");
+    // Without ir.csv (an e-puck world, an older simulator's run): left out
+    // by default, and an error naming the file when asked for.
+    fs::remove(dir / "ir.csv");
+    MetricsOutcome without = measure_run({dir, {}, {}, {}, 0});
+    ASSERT_EQ(without.notes.size(), 4u);
+    EXPECT_NE(without.notes[0].find("ir_sent left out: needs " + (dir / "ir.csv").string()), std::string::npos)
+        << without.notes[0];
+    EXPECT_NE(error_of({dir, {}, {"ir_lost"}, {}, 0}).find("openswarm-sim --out writes it for a world of Kilobots"),
+              std::string::npos);
 }
 
 TEST(RunMetrics, ObjectMetricsAreTheExperimentsOwn) {
@@ -129,7 +157,8 @@ TEST(RunMetrics, WithoutAWorldTheMetricsThatNeedOneAreLeftOutAndSaySo) {
     MetricsOutcome o = measure_run({dir, {}, {}, {}, 0});
     std::vector<std::string> names;
     for (const auto &r : o.results) names.push_back(r.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"nearest_neighbour_mm", "largest_group", "led_agreement"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"nearest_neighbour_mm", "largest_group", "led_agreement", "ir_sent",
+                                               "ir_received", "ir_lost", "ir_lost_channel"}));
     ASSERT_EQ(o.notes.size(), 4u);
     EXPECT_NE(o.notes[0].find("coverage left out: needs the arena's size"), std::string::npos) << o.notes[0];
     // The IR range falls back to the simulator's 100 mm.

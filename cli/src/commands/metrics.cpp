@@ -24,7 +24,7 @@ struct MetricsOptions {
 
 void print_list() {
     std::printf("Built-in metrics (--metric NAME or NAME:key=value,...), measured at every sample of "
-                "trajectories.csv:\n\n");
+                "trajectories.csv\n(objects.csv for the objects, ir.csv for the IR frames):\n\n");
     for (const auto &m : builtin_metrics()) {
         std::printf("  %-22s %s\n", m.name.c_str(), m.doc.c_str());
         for (const auto &a : m.arguments) std::printf("  %-22s   %s: %s\n", "", a.key.c_str(), a.doc.c_str());

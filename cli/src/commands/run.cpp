@@ -184,7 +184,7 @@ void add_run_command(CLI::App &app, const Paths &paths) {
             ->type_name("FILE")
             ->excludes(robots)->excludes(distance)->excludes(line)->excludes(positions);
     cmd->add_option("--out", o->out,
-                    "with --world: write trajectories.csv, objects.csv, final.png and viewer.html "
+                    "with --world: write trajectories.csv, objects.csv, ir.csv (Kilobots), final.png and viewer.html "
                     "here (default: <app>/out/<world file's name>)")
         ->type_name("DIR")->needs(world);
     auto video = cmd->add_flag("--video", o->video, "with --world: also video.mp4 (needs ffmpeg)")->needs(world);

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "../suggest.hpp"
+#include "ir_measures.hpp"
 #include "metrics_error.hpp"
 #include "swarm_measures.hpp"
 
@@ -44,6 +45,13 @@ double object_radius(const RunWorld &w, const MetricArguments &a, const std::str
                                " differ in size; give the radius to measure with, e.g. --metric " + name +
                                ":radius_mm=" + std::to_string((int)w.object_radii_mm[0]));
     return w.object_radii_mm[0];
+}
+
+// The mean over robots of one of ir.csv's counts.
+BuiltinMetric ir_metric(const std::string &name, const std::string &doc, IrCount what) {
+    return {name, "frames", doc, {}, MetricNeeds::ir, [what](const RunWorld &, const MetricArguments &) {
+                return per_sample([what](const Snapshot &s) { return mean_ir_count(s.ir, what); });
+            }};
 }
 
 std::vector<BuiltinMetric> make_catalogue() {
@@ -105,6 +113,19 @@ std::vector<BuiltinMetric> make_catalogue() {
              double r = object_radius(w, a, "compactness");
              return per_sample([r](const Snapshot &s) { return s.objects.empty() ? NAN : compactness(s.objects, r); });
          }},
+        ir_metric("ir_sent", "mean over robots of the IR frames its firmware sent so far (its own counter)",
+                  IrCount::sent),
+        ir_metric("ir_received",
+                  "mean over robots of the IR frames its firmware received so far (delivered to the app)",
+                  IrCount::received),
+        ir_metric("ir_lost",
+                  "mean over robots of the frames robots in range sent so far that it did not receive "
+                  "(lost on the way, in a collision, with a bad CRC, while it was sending...)",
+                  IrCount::lost),
+        ir_metric("ir_lost_channel",
+                  "mean over robots of the frames robots in range sent so far that the channel lost on the way "
+                  "(ir.loss_pct)",
+                  IrCount::lost_channel),
     };
 }
 
@@ -154,7 +175,7 @@ MetricRequest parse_metric_request(const std::string &text) {
 }
 
 std::unique_ptr<Metric> make_builtin_metric(const BuiltinMetric &m, const MetricRequest &request,
-                                            const RunWorld &world) {
+                                            const RunWorld &world, const std::filesystem::path &run_dir) {
     std::vector<std::string> keys;
     for (const auto &a : m.arguments) keys.push_back(a.key);
     for (const auto &[key, v] : request.arguments) {
@@ -171,14 +192,22 @@ std::unique_ptr<Metric> make_builtin_metric(const BuiltinMetric &m, const Metric
     }
     // The objects' size given: objects.csv has the rest.
     bool sized = m.needs == MetricNeeds::objects && request.arguments.count("radius_mm");
-    std::string why = sized ? "" : builtin_metric_unavailable(m, world);
+    std::string why = sized ? "" : builtin_metric_unavailable(m, world, run_dir);
     if (!why.empty()) throw MetricsError(m.name + ": " + why);
     return m.make(world, request.arguments);
 }
 
-std::string builtin_metric_unavailable(const BuiltinMetric &m, const RunWorld &world) {
+std::string builtin_metric_unavailable(const BuiltinMetric &m, const RunWorld &world,
+                                       const std::filesystem::path &run_dir) {
+    std::error_code ec;
     switch (m.needs) {
     case MetricNeeds::robots: return "";
+    case MetricNeeds::ir:
+        return std::filesystem::is_regular_file(run_dir / "ir.csv", ec)
+                   ? ""
+                   : "needs " + (run_dir / "ir.csv").string() +
+                         ", which is not there: openswarm-sim --out writes it for a world of Kilobots (e-pucks "
+                         "have no IR channel); run the world again";
     case MetricNeeds::arena:
         return world.known() ? "" : "needs the arena's size, and the run's folder has no world.json; give the "
                                     "world the run was in with --world FILE";

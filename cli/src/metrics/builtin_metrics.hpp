@@ -3,6 +3,7 @@
 // measured sample by sample from the run's folder (run_snapshots.hpp).
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -31,8 +32,8 @@ struct MetricArgument {
     double min, max;
 };
 
-// What a metric reads besides trajectories.csv.
-enum class MetricNeeds { robots, objects, lights, arena };
+// What a metric reads besides trajectories.csv (ir: the run's ir.csv).
+enum class MetricNeeds { robots, objects, lights, arena, ir };
 
 using MetricArguments = std::map<std::string, double>;
 
@@ -59,10 +60,11 @@ MetricRequest parse_metric_request(const std::string &text);
 // The request's arguments checked against the metric's (unknown keys,
 // ranges), then the metric made for this world. Throws MetricsError.
 std::unique_ptr<Metric> make_builtin_metric(const BuiltinMetric &m, const MetricRequest &request,
-                                            const RunWorld &world);
+                                            const RunWorld &world, const std::filesystem::path &run_dir);
 
-// Why this run cannot give the metric ("" if it can): no world known, no
-// lights in it, no objects.
-std::string builtin_metric_unavailable(const BuiltinMetric &m, const RunWorld &world);
+// Why the run in run_dir cannot give the metric ("" if it can): no world
+// known, no lights in it, no objects, no ir.csv.
+std::string builtin_metric_unavailable(const BuiltinMetric &m, const RunWorld &world,
+                                       const std::filesystem::path &run_dir);
 
 }  // namespace openswarm

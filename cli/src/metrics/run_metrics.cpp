@@ -109,15 +109,16 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
     outcome.notes = firmware.warnings;
     std::vector<Measuring> measuring;
     std::vector<std::string> from_firmware, settled;
-    bool with_objects = false;
+    bool with_objects = false, with_ir = false;
     auto measure = [&](const BuiltinMetric &m, const MetricRequest &q) {
-        measuring.push_back({make_builtin_metric(m, q, world), outcome.results.size()});
+        measuring.push_back({make_builtin_metric(m, q, world, request.run_dir), outcome.results.size()});
         outcome.results.push_back(result_of(m));
         with_objects |= m.needs == MetricNeeds::objects;
+        with_ir |= m.needs == MetricNeeds::ir;
     };
     if (request.metrics.empty()) {
         for (const auto &m : builtin_metrics()) {
-            std::string why = builtin_metric_unavailable(m, world);
+            std::string why = builtin_metric_unavailable(m, world, request.run_dir);
             if (why.empty()) measure(m, {m.name, {}, m.name});
             else outcome.notes.push_back(m.name + " left out: " + why);
         }
@@ -146,7 +147,7 @@ MetricsOutcome measure_run(const MetricsRequest &request) {
     // The samples, one at a time.
     std::vector<double> times;
     std::vector<size_t> robots_at; // the robots at each time kept
-    SnapshotReader reader(request.run_dir, with_objects);
+    SnapshotReader reader(request.run_dir, with_objects, with_ir);
     Snapshot s;
     double next_due = -INFINITY;
     while (reader.next(s)) {

@@ -14,14 +14,16 @@ namespace {
 
 size_t count_fields(const std::string &header) { return (size_t)std::count(header.begin(), header.end(), ',') + 1; }
 
-// A CSV row of numbers, or false: a row cut short, a word, an empty field.
-bool parse_numbers(const std::string &line, size_t fields, std::vector<double> &out) {
+// A CSV row of numbers, or false: a row cut short, a word, an empty field
+// (unless blanks: NaN then).
+bool parse_numbers(const std::string &line, size_t fields, bool blanks, std::vector<double> &out) {
     out.clear();
     const char *p = line.c_str();
     for (size_t k = 0; k < fields; k++) {
         char *end;
         double v = std::strtod(p, &end);
-        if (end == p || !std::isfinite(v)) return false;
+        if (end == p && blanks && (*p == ',' || *p == '\0' || *p == '\r')) v = NAN;
+        else if (end == p || !std::isfinite(v)) return false;
         out.push_back(v);
         if (k + 1 < fields && *end != ',') return false;
         p = end + 1;
@@ -32,8 +34,8 @@ bool parse_numbers(const std::string &line, size_t fields, std::vector<double> &
 
 }  // namespace
 
-TimedRows::TimedRows(const fs::path &file, const std::string &header, bool optional)
-    : file_(file), fields_(count_fields(header)) {
+TimedRows::TimedRows(const fs::path &file, const std::string &header, bool optional, bool blanks)
+    : file_(file), fields_(count_fields(header)), blanks_(blanks) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
         if (optional) return;
@@ -58,7 +60,7 @@ void TimedRows::read_ahead() {
     while (std::getline(in_, line)) {
         line_++;
         if (line.empty() || line == "\r") continue;
-        if (!parse_numbers(line, fields_, next_))
+        if (!parse_numbers(line, fields_, blanks_, next_) || std::isnan(next_[0]))
             throw MetricsError(file_.string() + ":" + std::to_string(line_) + ": expected " +
                                std::to_string(fields_) + " numbers separated by commas, found \"" +
                                line.substr(0, 80) + "\"; was the run cut short? Run the world again");
@@ -79,23 +81,32 @@ void TimedRows::take(double t, std::vector<std::vector<double>> &rows) {
                            " s; the rows must be in time order, as openswarm-sim writes them");
 }
 
-SnapshotReader::SnapshotReader(const fs::path &run_dir, bool with_objects)
+SnapshotReader::SnapshotReader(const fs::path &run_dir, bool with_objects, bool with_ir)
     : robots_(run_dir / "trajectories.csv", "time_s,robot,x_mm,y_mm,heading_deg,led_r,led_g,led_b", false),
-      objects_(with_objects ? TimedRows(run_dir / "objects.csv", "time_s,object,x_mm,y_mm", true) : TimedRows()) {}
+      objects_(with_objects ? TimedRows(run_dir / "objects.csv", "time_s,object,x_mm,y_mm", true) : TimedRows()),
+      ir_(with_ir ? TimedRows(run_dir / "ir.csv", IR_TABLE_HEADER, false, true) : TimedRows()) {}
 
 bool SnapshotReader::next(Snapshot &s) {
     if (done()) return false;
-    double t = robots_.empty() ? objects_.next_time()
-             : objects_.empty() ? robots_.next_time()
-                                : std::min(robots_.next_time(), objects_.next_time());
+    double t = INFINITY;
+    for (const TimedRows *rows : {&robots_, &objects_, &ir_})
+        if (!rows->empty()) t = std::min(t, rows->next_time());
     s.time_s = t;
     s.robots.clear();
     s.objects.clear();
+    s.ir.clear();
     robots_.take(t, rows_);
     for (const auto &r : rows_)
         s.robots.push_back({(int)r[1], r[2], r[3], r[4], (int)r[5], (int)r[6], (int)r[7]});
     objects_.take(t, rows_);
     for (const auto &o : rows_) s.objects.push_back({o[2], o[3]});
+    ir_.take(t, rows_);
+    for (const auto &r : rows_) {
+        if (std::isnan(r[1]) || std::isnan(r[9]) || std::isnan(r[10]))
+            throw MetricsError("ir.csv: a row at " + std::to_string(t) + " s has no robot, heard or lost_channel; "
+                               "it is not a file openswarm-sim wrote: run the world again");
+        s.ir.push_back({(int)r[1], r[2], r[3], r[9], r[10]});
+    }
     return true;
 }
 

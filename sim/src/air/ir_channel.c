@@ -99,6 +99,7 @@ typedef struct ir_station {
     int head, tail, queue_room;
     avr_cycle_count_t next_free;
     uint32_t sensed_high, sensed_low; /* last applied to ADC0 / ADC1 */
+    uint64_t heard, lost_channel;     /* frames from robots in range: reached it, or lost on the way */
 } ir_station;
 
 static ir_station *stations;
@@ -270,10 +271,24 @@ static void add_due_pulses(ir_station *from, uint32_t latency) {
     from->added_pending = pending;
 }
 
+/* A frame starting: each receiver in range counts it heard or lost
+ * (ir.csv). A powered-off receiver counts neither: it was not there. */
+static void count_frame(const ir_station *from, avr_cycle_count_t start) {
+    for (int k = 0; k < from->n_links; k++) {
+        ir_station *to = &stations[from->links[k].to];
+        if (to->robot->off_until != 0) continue;
+        if (start < from->links[k].lost_until)
+            to->lost_channel++;
+        else
+            to->heard++;
+    }
+}
+
 static void collect(ir_station *from, uint32_t latency) {
     int faults = ir_faults_active();
     for (int e = 0; e < from->n_out; e++) {
         const ir_sent *sent = &from->outbox[e];
+        if (sent->starts_frame) count_frame(from, sent->cycle);
         if (faults) note_rise(from, sent);
         for (int k = 0; k < from->n_links; k++) {
             ir_link *l = &from->links[k];
@@ -367,6 +382,11 @@ void ir_channel_robot_reset(int index) {
     s->sensed_high = s->sensed_low = 0;
     s->added_pending = 0;
     for (int k = 0; k < s->n_links; k++) s->links[k].faults.next_added = s->links[k].faults.n_added;
+}
+
+void ir_channel_counts(int receiver, uint64_t *heard, uint64_t *lost_channel) {
+    *heard = stations[receiver].heard;
+    *lost_channel = stations[receiver].lost_channel;
 }
 
 int ir_channel_links(int sender, int *receivers, int room) {

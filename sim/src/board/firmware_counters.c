@@ -21,9 +21,9 @@ static const char *const kernel_names[] = {
 #define KERNEL_COUNTERS (sizeof kernel_names / sizeof kernel_names[0])
 #define KERNEL_BYTES (2 * KERNEL_COUNTERS + 1) /* and event_queue_peak */
 
-static const char *const ir_names[] = {"sent", "received", "refused", "bad_crc", "broken",
-                                       "collisions", "busy"};
-#define IR_COUNTERS (sizeof ir_names / sizeof ir_names[0])
+static const char *const ir_names[KILOBOT_IR_COUNTERS] = {"sent", "received", "refused", "bad_crc",
+                                                           "broken", "collisions", "busy"};
+#define IR_COUNTERS KILOBOT_IR_COUNTERS
 
 typedef struct counter_symbols counter_symbols;
 
@@ -80,6 +80,14 @@ void firmware_counters_print_ir(FILE *out, const uint8_t *bytes, int layout_know
 static const uint8_t *counters_at(const avr_t *avr, uint32_t address, uint32_t size, uint32_t n, int *fits) {
     *fits = size == n && address + n <= avr->ramend + 1u;
     return address == 0 ? NULL : avr->data + address;
+}
+
+int firmware_ir_counters(const robot *r, uint16_t out[KILOBOT_IR_COUNTERS]) {
+    int fits;
+    const uint8_t *bytes = counters_at(r->avr, r->counters.ir, r->counters.ir_size, 2 * IR_COUNTERS, &fits);
+    if (bytes == NULL || !fits) return 0;
+    for (unsigned i = 0; i < IR_COUNTERS; i++) out[i] = (uint16_t)u16_at(bytes + 2 * i);
+    return 1;
 }
 
 #define MAX_THREAD_STACKS 16 /* the kernel's OS_CFG_MAX_THREADS at most */

@@ -28,6 +28,9 @@ static void *distance_ctx;
 static uint64_t *receiver_rng; /* each receiver's loss and noise draws */
 static uint64_t *last_start;   /* each sender's last frame's start, nominal cycles; 0: none */
 static uint64_t *frames_sent;  /* each sender's frames so far: the distance error's frame count */
+/* Each receiver's frames from robots in range: in its inbox, or lost on
+ * the way (the loss's draw, a full inbox); counted on its own thread. */
+static uint64_t *heard, *lost_channel;
 static ir_distance_error distance_error;
 /* Each thread's: the frames on their way to its receivers, and those
  * that found an inbox full. */
@@ -43,6 +46,8 @@ void native_air_start(int n, int range, double loss_pct, uint64_t seed, uint32_t
     n_robots = n;
     distance_error = distance != NULL ? *distance : (ir_distance_error){0, 0, 0};
     frames_sent = calloc((size_t)n, sizeof *frames_sent);
+    heard = calloc((size_t)n, sizeof *heard);
+    lost_channel = calloc((size_t)n, sizeof *lost_channel);
     range_mm = range;
     loss = loss_pct / 100.0;
     nominal = nominal_hz;
@@ -203,7 +208,10 @@ static void deliver_to(int t, int receiver, int sender, uint64_t frame, const na
     deliveries *out = &by_thread[t];
     uint64_t *rng = &receiver_rng[receiver];
     double chance = loss * (mm / range_mm) * (mm / range_mm);
-    if (chance > 0 && world_random_uniform(rng) < chance) return;
+    if (chance > 0 && world_random_uniform(rng) < chance) {
+        lost_channel[receiver]++;
+        return;
+    }
     uint32_t from_hz = native_swarm_robot(sender)->hz, to_hz = native_swarm_robot(receiver)->hz;
     uint64_t start = s->at * nominal / from_hz + latency; /* nominal cycles */
     if (out->n_pending == out->pending_room) {
@@ -236,12 +244,12 @@ static int by_receiver_then_start(const void *a, const void *b) {
 /* Into the receiver's inbox, kept by start (a robot's frame handed over
  * now starts after those before it; the overhead controller's may come
  * between); frames that overlap there are broken, both, as two senders'
- * pulses interleave at the receiver. */
-static void enqueue(deliveries *out, native_io *io, native_frame f) {
+ * pulses interleave at the receiver. 0: no room, the frame lost. */
+static int enqueue(deliveries *out, native_io *io, native_frame f) {
     if (io->inbox_count == NATIVE_INBOX_ROOM) {
         io->frames_lost_inbox_full++;
         out->overflowed++;
-        return;
+        return 0;
     }
     unsigned at = io->inbox_count;
     for (unsigned k = 0; k < io->inbox_count; k++) {
@@ -253,13 +261,14 @@ static void enqueue(deliveries *out, native_io *io, native_frame f) {
         io->inbox[(io->inbox_head + k) % NATIVE_INBOX_ROOM] = io->inbox[(io->inbox_head + k - 1) % NATIVE_INBOX_ROOM];
     io->inbox[(io->inbox_head + at) % NATIVE_INBOX_ROOM] = f;
     io->inbox_count++;
+    return 1;
 }
 
 /* Frames from outside the swarm: their overflows. */
 static deliveries from_outside;
 
 void native_air_hand_over(int receiver, const native_frame *f) {
-    enqueue(&from_outside, native_swarm_robot(receiver)->io, *f);
+    (void)enqueue(&from_outside, native_swarm_robot(receiver)->io, *f); /* not a robot's: uncounted */
     native_swarm_woken(receiver);
 }
 
@@ -317,8 +326,12 @@ static int deliver_share(int t) {
     }
     qsort(out->pending, out->n_pending, sizeof *out->pending, by_receiver_then_start);
     for (size_t k = 0; k < out->n_pending; k++) {
-        enqueue(out, native_swarm_robot(out->pending[k].receiver)->io, out->pending[k].frame);
-        native_swarm_woken(out->pending[k].receiver);
+        int receiver = out->pending[k].receiver;
+        if (enqueue(out, native_swarm_robot(receiver)->io, out->pending[k].frame))
+            heard[receiver]++;
+        else
+            lost_channel[receiver]++;
+        native_swarm_woken(receiver);
     }
     out->n_pending = 0;
     return 1;
@@ -349,4 +362,9 @@ uint64_t native_air_overflowed(void) {
     uint64_t n = from_outside.overflowed;
     for (int t = 0; by_thread != NULL && t < window_workers_threads(); t++) n += by_thread[t].overflowed;
     return n;
+}
+
+void native_air_counts(int receiver, uint64_t *heard_by, uint64_t *lost_to) {
+    *heard_by = heard != NULL ? heard[receiver] : 0;
+    *lost_to = lost_channel != NULL ? lost_channel[receiver] : 0;
 }

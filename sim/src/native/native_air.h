@@ -36,6 +36,10 @@ void native_air_deliver(const int *senders, unsigned n);
 /* A frame from outside the swarm (the overhead controller's) into the
  * receiver's inbox, between windows, starting in its future. */
 void native_air_hand_over(int receiver, const native_frame *f);
+/* Frames from robots in range since the start that reached receiver's
+ * inbox (heard_by; overlapping ones are broken there) and those lost on
+ * the way (lost_to: --ir-loss, a full inbox), as ir_channel_counts. */
+void native_air_counts(int receiver, uint64_t *heard_by, uint64_t *lost_to);
 /* Frames lost because a receiver's inbox had no room (0 in any sane swarm). */
 uint64_t native_air_overflowed(void);
 

@@ -12,10 +12,11 @@
 
 #include <gelf.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "native/native_swarm.h"
 
-#define IR_COUNTER_BYTES 14 /* kilobot_ir_stats: seven 16-bit counters */
+#define IR_COUNTER_BYTES (KILOBOT_IR_COUNTERS * 2) /* kilobot_ir_stats: seven 16-bit counters */
 
 typedef struct ir_symbol {
     uint32_t offset, size; /* in the shared object; 0: none */
@@ -39,14 +40,31 @@ void native_counters_locate(const native_apps *apps) {
     app_of = apps->app_of;
 }
 
+/* Robot index's IR counters' bytes now, or NULL: its app keeps none; *fits
+ * 0: they are not laid out as kilobot_ir_stats. */
+static const uint8_t *ir_bytes(int index, int *fits) {
+    ir_symbol ir = irs != NULL ? irs[app_of[index]] : (ir_symbol){0, 0};
+    *fits = ir.size == IR_COUNTER_BYTES;
+    if (ir.offset == 0) return NULL;
+    const void *at = (const void *)(native_swarm_copy_of(index)->base + ir.offset);
+    return native_swarm_robot_memory(index, at, IR_COUNTER_BYTES);
+}
+
+int native_counters_ir(int index, uint16_t out[KILOBOT_IR_COUNTERS]) {
+    int fits;
+    const uint8_t *bytes = ir_bytes(index, &fits);
+    if (bytes == NULL || !fits) return 0;
+    memcpy(out, bytes, IR_COUNTER_BYTES); /* little-endian, as the AVR's */
+    return 1;
+}
+
 void native_counters_print(int n_robots, double seconds) {
     for (int i = 0; i < n_robots; i++) {
+        int fits;
         printf("counters t=%.3f robot=%d", seconds, i);
         firmware_counters_print_kernel(stdout, native_swarm_robot_stats(i), 1);
-        ir_symbol ir = irs != NULL ? irs[app_of[i]] : (ir_symbol){0, 0};
-        const void *at = (const void *)(native_swarm_copy_of(i)->base + ir.offset);
-        firmware_counters_print_ir(stdout, ir.offset != 0 ? native_swarm_robot_memory(i, at, IR_COUNTER_BYTES) : NULL,
-                                   ir.size == IR_COUNTER_BYTES);
+        const uint8_t *ir = ir_bytes(i, &fits);
+        firmware_counters_print_ir(stdout, ir, fits);
         printf(" main_stack=unmeasured thread_stacks=none\n");
     }
     stdout_flush();

@@ -78,7 +78,12 @@ static void place(ir_distance_fn distance, void *ctx) {
     native_air_place(distance, ctx, positions);
 }
 
-static const world_robots native_robots = {led, light, place, native_air_links};
+static void ir(int index, output_ir *out) {
+    out->firmware_known = native_counters_ir(index, out->firmware);
+    native_air_counts(index, &out->heard, &out->lost_channel);
+}
+
+static const world_robots native_robots = {led, light, place, native_air_links, ir};
 
 /* ---- what each robot is told before it starts ---- */
 
@@ -210,7 +215,7 @@ static int start(const options *o) {
     native_apps apps;
     if (native_apps_load(o, threads, &apps) != 0) return -1;
     nominal_hz = apps.copies[0].entry.cpu_hz;
-    if (o->counters_period >= 0) native_counters_locate(&apps);
+    native_counters_locate(&apps); /* --counters and ir.csv */
     if (native_swarm_create(apps.copies, apps.n, threads, apps.app_of, o->robots) != 0) return -1;
     lines = calloc((size_t)o->robots, sizeof *lines);
     senders = malloc((size_t)o->robots * sizeof *senders);

@@ -17,6 +17,7 @@ static struct {
     const world_spec *world;
     char *dir;
     output_tables tables;
+    ir_table ir; /* Kilobot worlds only: e-pucks have no IR channel */
     output_history history;
     picture picture;
     video video;
@@ -77,6 +78,7 @@ static int make_folder(const char *dir)
 static void close_all(void)
 {
     tables_close(&out.tables, 0);
+    ir_table_close(&out.ir, 0);
     video_close(&out.video);
     video_clock_free(&out.clock);
     picture_free(&out.picture);
@@ -107,6 +109,13 @@ int output_open(const output_options *o, const world_spec *w)
     free(objects);
     if (rc)
         goto fail;
+    if (w->robot_kind == WORLD_ROBOT_KILOBOT) {
+        char *ir = path_in(dir, "ir.csv");
+        rc = ir ? ir_table_open(&out.ir, ir) : -1;
+        free(ir);
+        if (rc)
+            goto fail;
+    }
     history_init(&out.history, w, o->history_bytes);
     if (picture_init(&out.picture, w))
         goto fail;
@@ -133,6 +142,8 @@ int output_sample_add(const output_sample *s)
         return -1;
     int rc = 0;
     if (tables_add(&out.tables, out.world, s))
+        rc = -1;
+    if (ir_table_add(&out.ir, out.world->n_robots, s))
         rc = -1;
     if (history_add(&out.history, s)) {
         fprintf(stderr, "openswarm-sim: out of memory keeping the run for %s/viewer.html at "
@@ -216,6 +227,14 @@ int output_close(void)
         free(path);
     } else {
         rc = -1;
+    }
+    if (out.ir.file) {
+        path = path_in(out.dir, "ir.csv");
+        if (ir_table_close(&out.ir, 1) == 0)
+            list_add(written, sizeof written, path);
+        else
+            rc = -1;
+        free(path);
     }
 
     out.picture.trail_s = INFINITY; /* where they went, start to end */

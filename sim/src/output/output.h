@@ -1,6 +1,6 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* What a run in a world leaves in --out DIR: trajectories.csv, objects.csv,
- * final.png (a top view at the end), viewer.html (the run played back in a
+ * ir.csv (Kilobot worlds), final.png (a top view at the end), viewer.html (the run played back in a
  * browser, one file, no network) and, when asked, video.mp4 (Cairo frames
  * piped to ffmpeg). The simulator hands over one sample per sample period,
  * and the video's frames at the video's own rate. */
@@ -24,12 +24,26 @@ typedef struct output_link {
     int sender, receiver;
 } output_link;
 
+/* A Kilobot's IR at one sample (a row of ir.csv), counted from the run's
+ * start: its firmware's own counters (kilobot_ir_stats, in its order:
+ * sent, received, refused, bad_crc, broken, collisions, busy; unknown for
+ * a firmware that keeps none) and the channel's, for it as a receiver:
+ * frames from robots in range that reached it, and those the channel lost
+ * on the way (ir.loss_pct's draw; natively also a full inbox). */
+#define OUTPUT_IR_FIRMWARE_COUNTERS 7
+typedef struct output_ir {
+    int firmware_known;
+    uint16_t firmware[OUTPUT_IR_FIRMWARE_COUNTERS];
+    uint64_t heard, lost_channel;
+} output_ir;
+
 typedef struct output_sample {
     double time_s;
     const output_robot *robots; /* world_spec.n_robots of them */
     const world_point *objects; /* world_spec.n_objects centres */
     const output_link *links;
     int n_links;
+    const output_ir *ir; /* one a robot; NULL: no IR (e-pucks, a video frame) */
 } output_sample;
 
 typedef struct output_options {

@@ -19,6 +19,12 @@ char *part_file_name(const char *path); /* malloc'd "path.part", NULL out of mem
 /* complete: rename path.part to path; otherwise remove path.part. -1
  * after a message, or when not complete. */
 int part_file_finish(const char *path, int complete);
+/* A CSV file written row by row as path.part, its header line first;
+ * NULL after a message naming the path. */
+FILE *part_table_open(const char *path, const char *header);
+/* Closed; keep: renamed into place (else removed). -1 after a message
+ * when it could not be written whole. A NULL f is nothing to close. */
+int part_table_close(FILE *f, const char *path, int keep);
 
 /* ---- history.c: the run so far, copied sample by sample for final.png's
  * trails and viewer.html. It is bounded: past its budget (by default
@@ -67,6 +73,17 @@ int tables_open(output_tables *t, const char *robots_path, const char *objects_p
 int tables_add(output_tables *t, const world_spec *w, const output_sample *s);
 /* keep: rename the .part files into place (else they are removed). */
 int tables_close(output_tables *t, int keep);
+
+/* ---- ir_table.c: ir.csv, each Kilobot's IR counters at every sample. */
+typedef struct ir_table {
+    FILE *file;
+    char *path;
+} ir_table;
+
+int ir_table_open(ir_table *t, const char *path);
+/* s->ir's n_robots rows; a sample without them (NULL) writes none. */
+int ir_table_add(ir_table *t, int n_robots, const output_sample *s);
+int ir_table_close(ir_table *t, int keep);
 
 /* ---- picture.c: a top view of the world at one sample. The image fits
  * the arena in about 800 pixels on its long side; its width and height are

@@ -38,3 +38,32 @@ int part_file_finish(const char *path, int complete)
     free(part);
     return rc;
 }
+
+FILE *part_table_open(const char *path, const char *header)
+{
+    char *part = part_file_name(path);
+    FILE *f = part ? fopen(part, "w") : NULL;
+    if (!f) {
+        fprintf(stderr, "openswarm-sim: cannot write %s: %s; choose another --out folder\n",
+                part ? part : path, strerror(errno));
+        free(part);
+        return NULL;
+    }
+    free(part);
+    fprintf(f, "%s\n", header);
+    return f;
+}
+
+int part_table_close(FILE *f, const char *path, int keep)
+{
+    if (!f)
+        return 0;
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        fprintf(stderr, "openswarm-sim: cannot write %s: %s; is the disk full?\n", path,
+                strerror(errno));
+        part_file_finish(path, 0);
+        return -1;
+    }
+    return part_file_finish(path, keep) != 0 && keep ? -1 : 0;
+}

@@ -12,30 +12,14 @@
 
 #include "output/output_parts.h"
 
-/* Written as path.part (part_file.c) until the run ends. */
-static FILE *open_table(const char *path, const char *header)
-{
-    char *part = part_file_name(path);
-    FILE *f = part ? fopen(part, "w") : NULL;
-    if (!f) {
-        fprintf(stderr, "openswarm-sim: cannot write %s: %s; choose another --out folder\n",
-                part ? part : path, strerror(errno));
-        free(part);
-        return NULL;
-    }
-    free(part);
-    fprintf(f, "%s\n", header);
-    return f;
-}
-
 int tables_open(output_tables *t, const char *robots_path, const char *objects_path)
 {
     memset(t, 0, sizeof *t);
     t->robots_path = strdup(robots_path);
     t->objects_path = strdup(objects_path);
-    t->robots = open_table(robots_path, "time_s,robot,x_mm,y_mm,heading_deg,led_r,led_g,led_b");
+    t->robots = part_table_open(robots_path, "time_s,robot,x_mm,y_mm,heading_deg,led_r,led_g,led_b");
     if (t->robots)
-        t->objects = open_table(objects_path, "time_s,object,x_mm,y_mm");
+        t->objects = part_table_open(objects_path, "time_s,object,x_mm,y_mm");
     if (!t->robots_path || !t->objects_path || !t->robots || !t->objects) {
         tables_close(t, 0);
         return -1;
@@ -81,27 +65,12 @@ int tables_add(output_tables *t, const world_spec *w, const output_sample *s)
     return 0;
 }
 
-/* keep: put it in place under its name, when whole. */
-static int close_table(FILE *f, const char *path, int keep)
-{
-    if (!f)
-        return 0;
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        fprintf(stderr, "openswarm-sim: cannot write %s: %s; is the disk full?\n", path,
-                strerror(errno));
-        part_file_finish(path, 0);
-        return -1;
-    }
-    return part_file_finish(path, keep) != 0 && keep ? -1 : 0;
-}
-
 int tables_close(output_tables *t, int keep)
 {
     int rc = 0;
-    if (close_table(t->robots, t->robots_path, keep))
+    if (part_table_close(t->robots, t->robots_path, keep))
         rc = -1;
-    if (close_table(t->objects, t->objects_path, keep))
+    if (part_table_close(t->objects, t->objects_path, keep))
         rc = -1;
     free(t->robots_path);
     free(t->objects_path);

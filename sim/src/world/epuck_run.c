@@ -101,14 +101,14 @@ static void observe(const world *physics, const world_spec *spec) {
 }
 
 static int record(double t) {
-    output_sample s = {t, poses, object_centres, NULL, 0};
+    output_sample s = {t, poses, object_centres, NULL, 0, NULL};
     return output_sample_add(&s);
 }
 
 /* The video's frames at its own times, before the run's end. */
 static int record_frame(double t, double end_s) {
     if (t >= end_s - 1e-9 || t + 1e-9 < output_next_frame_s()) return 0;
-    output_sample s = {t, poses, object_centres, NULL, 0};
+    output_sample s = {t, poses, object_centres, NULL, 0, NULL};
     return output_frame_add(&s);
 }
 

@@ -22,7 +22,14 @@ static void motors_changed(void *ctx, int index, uint8_t left, uint8_t right, av
     world_run_motors(index, left, right, (double)cycle / robots[index].avr->frequency);
 }
 
-static const world_robots avr_robots = {led, light, ir_channel_place, ir_channel_links};
+_Static_assert(OUTPUT_IR_FIRMWARE_COUNTERS == KILOBOT_IR_COUNTERS, "ir.csv's firmware columns");
+
+static void ir(int index, output_ir *out) {
+    out->firmware_known = firmware_ir_counters(&robots[index], out->firmware);
+    ir_channel_counts(index, &out->heard, &out->lost_channel);
+}
+
+static const world_robots avr_robots = {led, light, ir_channel_place, ir_channel_links, ir};
 
 void world_avr_robot_noise(robot *r, int index) {
     analog_noise_attach(r, world_robot_noise_seed(index), WORLD_ANALOG_NOISE_COUNTS);

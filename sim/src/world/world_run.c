@@ -41,6 +41,7 @@ static output_robot *poses;
 static world_point *object_centres;
 static output_link *links;
 static int links_room;
+static output_ir *ir_counts; /* each robot's at the sample */
 static int *light_mv; /* last applied to each robot's ADC7, -1 none */
 static double ir_range_mm;
 
@@ -284,7 +285,8 @@ static int sample(double t) {
     for (int k = 0; k < spec.n_objects; k++)
         world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
     int n_links = collect_links();
-    output_sample s = {t, poses, object_centres, links, n_links};
+    for (int i = 0; i < n_robots; i++) robots->ir(i, &ir_counts[i]);
+    output_sample s = {t, poses, object_centres, links, n_links, ir_counts};
     return output_sample_add(&s);
 }
 
@@ -292,7 +294,7 @@ static int sample(double t) {
 static int frame(double t) {
     for (int k = 0; k < spec.n_objects; k++)
         world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
-    output_sample s = {t, poses, object_centres, NULL, 0};
+    output_sample s = {t, poses, object_centres, NULL, 0, NULL};
     return output_frame_add(&s);
 }
 
@@ -305,6 +307,7 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
     object_centres = allocate((size_t)spec.n_objects, sizeof *object_centres);
     light_mv = allocate((size_t)n, sizeof *light_mv);
     reached_by = allocate((size_t)n, sizeof *reached_by);
+    ir_counts = allocate((size_t)n, sizeof *ir_counts);
     for (int i = 0; i < n; i++) light_mv[i] = -1;
     /* Of the nominal clock, as world_run_after_window counts (robot 0's own
      * may run fast or slow). */

@@ -6,6 +6,7 @@
 #define OPENSWARM_WORLD_RUN_H
 
 #include "sim.h"
+#include "output/output.h"
 
 /* Read the world file and set the robots, their firmware, the duration and
  * the channel from it (the command line's --time, --ir-range, --ir-loss and
@@ -30,6 +31,7 @@ typedef struct world_robots {
     void (*light)(int index, int millivolts);  /* its light sensor's input changed */
     void (*place)(ir_distance_fn distance, void *ctx); /* they moved: the IR channel follows */
     int (*links)(int sender, int *receivers, int room); /* whom sender reaches now */
+    void (*ir)(int index, output_ir *out);              /* its IR counts so far, for ir.csv */
 } world_robots;
 /* The robots are loaded: place them on the IR channel, open the outputs;
  * -1 after a message. physics_thread: step the physics on a thread of its
