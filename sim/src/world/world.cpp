@@ -48,6 +48,9 @@ struct Robot {
     kilobot_motor motor[2]{};
     int16_t wheel_steps[2]{}; /* an e-puck's: steps/s, left and right */
     uint64_t rng = 0;
+    /* What its legs walk it at in a step, drawn by world_step_prepare:
+     * one for the step the bodies take now, one for the next. */
+    kilobot_twist twist[2]{};
 };
 
 /* What a body is, in its user data: walls and obstacles carry 0. */
@@ -71,6 +74,7 @@ struct world {
     b2World walls{b2Vec2(0.0f, 0.0f)};
     std::vector<Robot> robots;
     std::vector<b2Body *> objects;
+    unsigned prepared = 0, stepped = 0; /* steps so far: twist[count % 2] */
 };
 
 namespace {
@@ -262,21 +266,34 @@ void world_epuck_wheels(world *w, int i, int16_t left, int16_t right) {
     r.wheel_steps[1] = right;
 }
 
-void world_step(world *w, double t) {
+/* The motors' part: the same draws from each robot's stream, in the same
+ * order, wherever it runs. */
+void world_step_prepare(world *w, double t) {
     const bool epuck = w->spec->robot_kind == WORLD_ROBOT_EPUCK;
     const double wheel_noise = world_wheel_noise(w->spec);
+    const unsigned slot = w->prepared++ % 2;
     for (Robot &r : w->robots) {
         if (epuck) {
             double factor[2] = {1.0, 1.0};
             if (wheel_noise > 0) /* drawn from the robot's own stream */
                 for (double &f : factor) f += wheel_noise * (2.0 * world_random_uniform(&r.rng) - 1.0);
-            walk(r, epuck_twist(r.wheel_steps, factor));
+            r.twist[slot] = epuck_twist(r.wheel_steps, factor);
             continue;
         }
         for (kilobot_motor &motor : r.motor) kilobot_motor_advance(&motor, t);
-        walk(r, kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng));
+        r.twist[slot] = kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng);
     }
+}
+
+void world_step_bodies(world *w) {
+    const unsigned slot = w->stepped++ % 2;
+    for (Robot &r : w->robots) walk(r, r.twist[slot]);
     w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+}
+
+void world_step(world *w, double t) {
+    world_step_prepare(w, t);
+    world_step_bodies(w);
 }
 
 void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg) {

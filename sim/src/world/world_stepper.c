@@ -3,7 +3,11 @@
  * packed robots costs about as much as the robots' own work between two
  * steps: on a thread of its own it costs the run nothing it waits for.
  * Handing a step over is rare (100 times a simulated second): a mutex and
- * a condition, and the thread sleeps between steps. */
+ * a condition, and the thread sleeps between steps. The motors' part of a
+ * step (world_step_prepare: the motion model and its noise, a tenth of a
+ * step at a thousand robots) is the caller's, done while the step before
+ * still runs there, so the physics' thread - the busier at a thousand
+ * robots - does only Box2D's part. */
 #include "world/world_stepper.h"
 
 #include <pthread.h>
@@ -31,7 +35,6 @@ static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_cond_t turn = PTHREAD_COND_INITIALIZER;
 static int stepping; /* a step is begun and not over */
 static int stopping;
-static double step_end;
 
 static void *step_on_thread(void *unused) {
     (void)unused;
@@ -39,9 +42,8 @@ static void *step_on_thread(void *unused) {
     for (;;) {
         while (!stepping && !stopping) pthread_cond_wait(&turn, &lock);
         if (!stepping) break;
-        double t = step_end;
         pthread_mutex_unlock(&lock);
-        world_step(physics, t);
+        world_step_bodies(physics);
         pthread_mutex_lock(&lock);
         stepping = 0;
         pthread_cond_broadcast(&turn);
@@ -79,19 +81,24 @@ void world_stepper_motor(int index, int side, uint8_t duty, double t) {
     c->at[c->n++] = (motor_change){t, (uint8_t)side, duty};
 }
 
-void world_stepper_begin(double t) {
-    world_stepper_wait();
+/* The motors are the caller's alone: the step running meanwhile walks
+ * the bodies by what was prepared for it (world.h). */
+void world_stepper_prepare(double t) {
     for (int i = 0; i < n_robots; i++) {
         motor_changes *c = &kept[i];
         for (unsigned k = 0; k < c->n; k++) world_motor_duty(physics, i, c->at[k].side, c->at[k].duty, c->at[k].t);
         c->n = 0;
     }
+    world_step_prepare(physics, t);
+}
+
+void world_stepper_begin(void) {
+    world_stepper_wait();
     if (!threaded) {
-        world_step(physics, t);
+        world_step_bodies(physics);
         return;
     }
     pthread_mutex_lock(&lock);
-    step_end = t;
     stepping = 1;
     pthread_cond_broadcast(&turn);
     pthread_mutex_unlock(&lock);
