@@ -49,7 +49,7 @@ struct Robot {
     int16_t wheel_steps[2]{}; /* an e-puck's: steps/s, left and right */
     uint64_t rng = 0;
     /* What its legs walk it at in a step, drawn by world_step_prepare:
-     * one for the step the bodies take now, one for the next. */
+     * one for the step the bodies take now, one for the next (world.h). */
     kilobot_twist twist[2]{};
 };
 
@@ -74,7 +74,6 @@ struct world {
     b2World walls{b2Vec2(0.0f, 0.0f)};
     std::vector<Robot> robots;
     std::vector<b2Body *> objects;
-    unsigned prepared = 0, stepped = 0; /* steps so far: twist[count % 2] */
 };
 
 namespace {
@@ -266,13 +265,13 @@ void world_epuck_wheels(world *w, int i, int16_t left, int16_t right) {
     r.wheel_steps[1] = right;
 }
 
-/* The motors' part: the same draws from each robot's stream, in the same
- * order, wherever it runs. */
-void world_step_prepare(world *w, double t) {
+/* The motors' part: the same draws from each robot's own stream, in the
+ * same order, whichever share and thread it falls to. */
+void world_step_prepare(world *w, double t, unsigned slot, int share, int shares) {
     const bool epuck = w->spec->robot_kind == WORLD_ROBOT_EPUCK;
     const double wheel_noise = world_wheel_noise(w->spec);
-    const unsigned slot = w->prepared++ % 2;
-    for (Robot &r : w->robots) {
+    for (size_t i = size_t(share); i < w->robots.size(); i += size_t(shares)) {
+        Robot &r = w->robots[i];
         if (epuck) {
             double factor[2] = {1.0, 1.0};
             if (wheel_noise > 0) /* drawn from the robot's own stream */
@@ -285,15 +284,14 @@ void world_step_prepare(world *w, double t) {
     }
 }
 
-void world_step_bodies(world *w) {
-    const unsigned slot = w->stepped++ % 2;
+void world_step_bodies(world *w, unsigned slot) {
     for (Robot &r : w->robots) walk(r, r.twist[slot]);
     w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);
 }
 
 void world_step(world *w, double t) {
-    world_step_prepare(w, t);
-    world_step_bodies(w);
+    world_step_prepare(w, t, 0, 0, 1);
+    world_step_bodies(w, 0);
 }
 
 void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg) {

@@ -19,7 +19,9 @@ void world_stepper_start(world *physics, int n, int threaded);
  * next step. From any thread, one robot's changes from one at a time. */
 void world_stepper_motor(int index, int side, uint8_t duty, double t);
 /* The motor changes kept go in, and the step ending at t is prepared
- * (world_step_prepare): while the step begun before may still run. */
+ * (world_step_prepare, shared over the robots' threads as their windows
+ * are: call it between windows): while the step begun before may still
+ * run. */
 void world_stepper_prepare(double t);
 /* The step prepared begins, once the one before it is over. */
 void world_stepper_begin(void);
