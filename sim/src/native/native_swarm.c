@@ -80,7 +80,6 @@ static uint64_t swap_halves(uint64_t x) { return x << 32 | x >> 32; }
  * any x86-64, one AVX2 register where the CPU has it (the clone below). */
 typedef uint64_t four_words __attribute__((vector_size(32)));
 
-
 /* dst = src (n bytes), and what they sum to. It runs twice per switch of
  * robots, about a hundred times a robot a simulated second in a packed
  * swarm: one pass that stores each 64 bytes as it adds them, in eight
