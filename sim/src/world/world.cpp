@@ -48,6 +48,9 @@ struct Robot {
     kilobot_motor motor[2]{};
     int16_t wheel_steps[2]{}; /* an e-puck's: steps/s, left and right */
     uint64_t rng = 0;
+    /* What its legs walk it at in a step, drawn by world_step_prepare:
+     * one for the step the bodies take now, one for the next (world.h). */
+    kilobot_twist twist[2]{};
 };
 
 /* What a body is, in its user data: walls and obstacles carry 0. */
@@ -262,21 +265,33 @@ void world_epuck_wheels(world *w, int i, int16_t left, int16_t right) {
     r.wheel_steps[1] = right;
 }
 
-void world_step(world *w, double t) {
+/* The motors' part: the same draws from each robot's own stream, in the
+ * same order, whichever share and thread it falls to. */
+void world_step_prepare(world *w, double t, unsigned slot, int share, int shares) {
     const bool epuck = w->spec->robot_kind == WORLD_ROBOT_EPUCK;
     const double wheel_noise = world_wheel_noise(w->spec);
-    for (Robot &r : w->robots) {
+    for (size_t i = size_t(share); i < w->robots.size(); i += size_t(shares)) {
+        Robot &r = w->robots[i];
         if (epuck) {
             double factor[2] = {1.0, 1.0};
             if (wheel_noise > 0) /* drawn from the robot's own stream */
                 for (double &f : factor) f += wheel_noise * (2.0 * world_random_uniform(&r.rng) - 1.0);
-            walk(r, epuck_twist(r.wheel_steps, factor));
+            r.twist[slot] = epuck_twist(r.wheel_steps, factor);
             continue;
         }
         for (kilobot_motor &motor : r.motor) kilobot_motor_advance(&motor, t);
-        walk(r, kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng));
+        r.twist[slot] = kilobot_motion(r.motor, &r.motors, WORLD_STEP_S, &r.rng);
     }
+}
+
+void world_step_bodies(world *w, unsigned slot) {
+    for (Robot &r : w->robots) walk(r, r.twist[slot]);
     w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+}
+
+void world_step(world *w, double t) {
+    world_step_prepare(w, t, 0, 0, 1);
+    world_step_bodies(w, 0);
 }
 
 void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg) {

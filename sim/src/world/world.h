@@ -30,8 +30,17 @@ const kilobot_motors_model *world_robot_motors(const world *w, int i);
 void world_motor_duty(world *w, int i, int side, uint8_t duty, double t);
 /* An e-puck's steppers: robot i's wheels turn at these steps/s. */
 void world_epuck_wheels(world *w, int i, int16_t left, int16_t right);
-/* Advance the physics by one WORLD_STEP_S, ending at time t. */
+/* Advance the physics by one WORLD_STEP_S, ending at time t: the two
+ * halves below, one after the other. */
 void world_step(world *w, double t);
+/* The step's first half, for robots share, share + shares, ...: each
+ * one's motors advanced to t and what its legs (or wheels) will walk it
+ * at, its noise drawn, kept in its twist slot (0 or 1). It touches no
+ * Box2D body, so it may run while the step before, prepared in the other
+ * slot, is still taking its bodies (world_stepper.c). */
+void world_step_prepare(world *w, double t, unsigned slot, int share, int shares);
+/* The second half: the bodies walked as prepared in slot, and Box2D's step. */
+void world_step_bodies(world *w, unsigned slot);
 void world_robot_pose(const world *w, int i, double *x_mm, double *y_mm, double *heading_deg);
 void world_object_position(const world *w, int k, double *x_mm, double *y_mm);
 /* 1 when a wall or an obstacle stands between two points (IR cannot pass:

@@ -342,6 +342,7 @@ static void step_over(void) {
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
     while (end >= next_step) {
         double t = (double)next_step / nominal_hz;
+        world_stepper_prepare(t); /* while the step before may still run */
         step_over();
         if (recording && t + 1e-9 >= next_sample_s) {
             sample_due = 1;
@@ -349,7 +350,7 @@ void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
         }
         frame_due = recording && t + 1e-9 >= output_next_frame_s() && t < end_s - 1e-9;
         if (sample_due || frame_due) note_leds();
-        world_stepper_begin(t);
+        world_stepper_begin();
         step_begun = 1;
         step_t = t;
         next_step += step_cycles;

@@ -18,8 +18,13 @@ void world_stepper_start(world *physics, int n, int threaded);
 /* Robot index set a motor (0 left, 1 right) at time t (s): kept for the
  * next step. From any thread, one robot's changes from one at a time. */
 void world_stepper_motor(int index, int side, uint8_t duty, double t);
-/* The motor changes kept go in, and the step ending at t begins. */
-void world_stepper_begin(double t);
+/* The motor changes kept go in, and the step ending at t is prepared
+ * (world_step_prepare, shared over the robots' threads as their windows
+ * are: call it between windows): while the step begun before may still
+ * run. */
+void world_stepper_prepare(double t);
+/* The step prepared begins, once the one before it is over. */
+void world_stepper_begin(void);
 /* Until the step begun is over (nothing to wait for when none is). */
 void world_stepper_wait(void);
 void world_stepper_stop(void);
