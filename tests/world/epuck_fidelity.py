@@ -67,6 +67,21 @@ def cpu_account(work, robot, failures):
     return [int(v) for v in account.groups()], console
 
 
+def kernel_account(work, robot, failures):
+    """Robot's CPU account must be a kernel's robot's: at least the run's
+    10 s of virtual time, asleep for most of it, awake for some (the
+    sensors' deliveries and the rest). Its console, None if it printed no
+    account."""
+    found = cpu_account(work, robot, failures)
+    if found is None:
+        return None
+    (robot_us, asleep, sensors, other), console = found
+    if robot_us < 10_000_000 or not 0.9 * robot_us < asleep < robot_us or sensors == 0 or other == 0:
+        failures.append(f"qemu: robot {robot}'s CPU account does not add up: {robot_us} us robot time, "
+                        f"{asleep} asleep, {sensors} on the sensors, {other} else awake")
+    return console
+
+
 def read(out, name):
     with open(os.path.join(out, name)) as f:
         return f.read()
