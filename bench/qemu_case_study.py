@@ -1,18 +1,22 @@
 #!/usr/bin/env python3
 """The case study's two arms with real instruction timing: the OpenSwarm
-arm's controller (tests/world/epuck_link_app.c: the template's camera
-handler, plus a thread blinking the LEDs) and the plain loop
+arm, the object-clustering template's own app (templates/object-clustering/
+main.c, built by `openswarm build --port epuck_world`, and its e-puck2
+image, tests/qemu's clustering_app_qemu), and the plain loop
 (templates/object-clustering/plain) run in the case study's setup
 (docs/case-study.md: 4 x 3 m, 5 e-pucks and 20 objects on random marks of
 the 15 x 11 grid) as their host builds and as e-puck2 images under QEMU
 (-icount: the kernel runs instruction by instruction), for each seed.
 Says whether the world's records are the same byte for byte, the wall
-time of each, and the robots' CPU from the images' 'cpu account' lines.
-Rewrites its section of docs/case-study.md.
+time of each, the robots' CPU from the images' 'cpu account' lines, and
+each run's largest cluster at its end (`openswarm metrics`). Rewrites its
+section of docs/case-study.md.
 
-    python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 120]
+    python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 600] [--jobs 1]
 """
 import argparse
+import concurrent.futures
+import csv
 import json
 import os
 import random
@@ -73,32 +77,83 @@ def busy_per_robot_second(name, duration):
     return busy_us * 1e3 / qwb.NS_PER_INSTRUCTION / duration
 
 
+def largest_cluster(openswarm, out, world_file, duration):
+    """The share of objects in the largest cluster at the run's end, as
+    `openswarm metrics` measures it (docs/experiments.md, "Metrics")."""
+    values = os.path.join(out, "largest_cluster.csv")
+    qwb.run([openswarm, "metrics", out, "--world", world_file, "-m", "largest_cluster", "--csv", values])
+    with open(values) as f:
+        at_end = [r for r in csv.DictReader(f) if float(r["time_s"]) == duration]
+    return float(at_end[0]["value"])
+
+
+def seed_runs(sim, openswarm, controllers, seed, duration):
+    """Both arms of one seed, each as its host build and its QEMU image."""
+    runs = []
+    for arm, label in (("template", "OpenSwarm"), ("plain", "plain loop")):
+        host_app, image = controllers[arm]
+        name = f"case-{arm}-qemu-{seed}"
+        host_out, host_wall = trial(sim, f"case-{arm}-host-{seed}", seed, duration, host_app)
+        qemu_out, qemu_wall = trial(sim, name, seed, duration, qwb.qemu_script(name, image, False))
+        run = {"seed": seed, "same": same(host_out, qemu_out), "busy": busy_per_robot_second(name, duration),
+               "host_wall": host_wall, "qemu_wall": qemu_wall,
+               "host_cluster": largest_cluster(openswarm, host_out, host_out + ".json", duration),
+               "qemu_cluster": largest_cluster(openswarm, qemu_out, qemu_out + ".json", duration)}
+        print(f"seed {seed} {label}: {run}", file=sys.stderr, flush=True)
+        runs.append((label, run))
+    return runs
+
+
+def mean_sd(values):
+    return f"{statistics.mean(values) * 100:.1f}% +- {statistics.stdev(values) * 100 if len(values) > 1 else 0:.1f}"
+
+
+def summary(results, trials, duration):
+    """Per arm: the largest cluster at the end, host build and QEMU image,
+    mean +- standard deviation over the trials; the instructions awake."""
+    lines = [f"| arm | largest cluster at {duration} s, host build | under QEMU | records the same | "
+             "instructions awake per robot-second (QEMU), mean |", "|---|---|---|---|---|"]
+    for label, runs in results.items():
+        lines.append(f"| {label} | {mean_sd([r['host_cluster'] for r in runs])} | "
+                     f"{mean_sd([r['qemu_cluster'] for r in runs])} | {sum(r['same'] for r in runs)} of {trials} | "
+                     f"{statistics.mean(r['busy'] for r in runs):,.0f} |")
+    cost = statistics.mean(r["busy"] for r in results["OpenSwarm"]) - \
+        statistics.mean(r["busy"] for r in results["plain loop"])
+    lines.append(f"\nThe OS's cost, the difference of the arms' awake instructions: {cost:,.0f} per robot-second "
+                 f"({cost / qwb.F407_HZ * 100:.2f}% of a 168 MHz F407 at one instruction a cycle).")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--trials", type=int, default=3)
-    parser.add_argument("--duration", type=int, default=120)
+    parser.add_argument("--duration", type=int, default=600)
+    parser.add_argument("--jobs", type=int, default=1, help="seeds run side by side (their wall times then share the CPU)")
     args = parser.parse_args()
     os.makedirs(qwb.WORK, exist_ok=True)
     sim, controllers = qwb.build(args.build)
+    openswarm = os.path.join(args.build, "cli", "openswarm")
     load_before = os.getloadavg()[0]
-    rows = []
-    for seed in range(1, args.trials + 1):
-        for arm, label in (("kernel", "OpenSwarm"), ("plain", "plain loop")):
-            host_app, image = controllers[arm]
-            name = f"case-{arm}-qemu-{seed}"
-            host_out, host_wall = trial(sim, f"case-{arm}-host-{seed}", seed, args.duration, host_app)
-            qemu_out, qemu_wall = trial(sim, name, seed, args.duration, qwb.qemu_script(name, image, False))
-            rows.append(f"| {seed} | {label} | {'yes' if same(host_out, qemu_out) else 'NO'} | {host_wall:.1f} | "
-                        f"{qemu_wall:.1f} | {busy_per_robot_second(name, args.duration):,.0f} |")
+    results = {"OpenSwarm": [], "plain loop": []}
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:  # seeds side by side, in order
+        for runs in pool.map(lambda seed: seed_runs(sim, openswarm, controllers, seed, args.duration),
+                             range(1, args.trials + 1)):
+            for label, run in runs:
+                results[label].append(run)
+    rows = [f"| {r['seed']} | {label} | {'yes' if r['same'] else 'NO'} | {r['host_wall']:.1f} | "
+            f"{r['qemu_wall']:.1f} | {r['busy']:,.0f} | {r['host_cluster'] * 100:.0f}% | {r['qemu_cluster'] * 100:.0f}% |"
+            for seed in range(args.trials) for label in results for r in [results[label][seed]]]
     text = "\n".join([
         BEGIN,
-        f"Measured by `python3 bench/qemu_case_study.py --trials {args.trials} --duration {args.duration}` on 2 "
+        f"Measured by `python3 bench/qemu_case_study.py --trials {args.trials} --duration {args.duration} "
+        f"--jobs {args.jobs}` on 2 "
         f"cores, load average {load_before:.1f} before and {os.getloadavg()[0]:.1f} after: n = {args.trials} "
         f"trials of {args.duration} s per arm, seeds 1-{args.trials}, 5 e-pucks each.\n",
+        *summary(results, args.trials, args.duration), "",
         "| seed | arm | record the same as the host build's | host build wall s | QEMU wall s | "
-        "instructions awake per robot-second (QEMU) |",
-        "|---|---|---|---|---|---|", *rows, END])
+        "instructions awake per robot-second (QEMU) | largest cluster, host build | under QEMU |",
+        "|---|---|---|---|---|---|---|---|", *rows, END])
     print(text)
     benchmarks_page.write_section(BEGIN, END, text, PAGE)
 

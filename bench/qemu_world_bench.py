@@ -40,13 +40,16 @@ def run(cmd, **kw):
 
 
 def build(build_dir):
-    """The simulator, and each controller's host build and QEMU image: the
-    fidelity check's (kernel) and the case study's plain loop."""
-    run(["cmake", "--build", build_dir, "--target", "openswarm-sim", "epuck_link_app", "clustering_plain",
-         "qemu_firmware"])
+    """The simulator and the tool, and each controller's host build and
+    QEMU image: the fidelity check's (kernel), the case study's template
+    (its host build by `openswarm build`) and its plain loop."""
+    run(["cmake", "--build", build_dir, "--target", "openswarm-sim", "openswarm", "epuck_link_app",
+         "clustering_plain", "clustering_app", "qemu_firmware"])
     tests = os.path.join(build_dir, "tests")
     return (os.path.join(build_dir, "sim", "openswarm-sim"),
             {"kernel": (os.path.join(tests, "epuck_link_app"), os.path.join(tests, "qemu", "epuck_link_app_qemu.elf")),
+             "template": (os.path.join(tests, "clustering_app", "clustering", "build", "epuck_world", "clustering"),
+                          os.path.join(tests, "qemu", "clustering_app_qemu.elf")),
              "plain": (os.path.join(tests, "clustering_plain"), os.path.join(tests, "qemu", "clustering_plain_qemu.elf"))})
 
 

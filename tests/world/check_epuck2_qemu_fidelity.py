@@ -22,18 +22,11 @@ failures = []
 
 
 def check_console(robot):
-    """The image said its id and accounted for its CPU's time: at least
-    the run's 10 s of virtual time, asleep for most of it, awake for some
-    (the sensors' deliveries and the rest)."""
-    found = epuck_fidelity.cpu_account(WORK, robot, failures)
-    if found is None:
-        return
-    (robot_us, asleep, sensors, other), console = found
-    if f"e-puck {robot} here" not in console:
+    """The image said its id and accounted for its CPU's time as a
+    kernel's robot."""
+    console = epuck_fidelity.kernel_account(WORK, robot, failures)
+    if console is not None and f"e-puck {robot} here" not in console:
         failures.append(f"qemu: robot {robot} did not say its id ('e-puck {robot} here'):\n{console}")
-    if robot_us < 10_000_000 or not 0.9 * robot_us < asleep < robot_us or sensors == 0 or other == 0:
-        failures.append(f"qemu: robot {robot}'s CPU account does not add up: {robot_us} us robot time, "
-                        f"{asleep} asleep, {sensors} on the sensors, {other} else awake")
 
 
 os.makedirs(WORK, exist_ok=True)

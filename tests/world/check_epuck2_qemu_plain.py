@@ -9,21 +9,12 @@ pushing. Each image's CPU account must show a program that never sleeps
 
 check_epuck2_qemu_plain.py SIM HOST_PLAIN QEMU_ELF QEMU_SYSTEM_ARM WORKDIR
 """
-import os
 import sys
 
 import epuck_fidelity
 
-SIM, HOST_PLAIN, QEMU_ELF, QEMU, WORK = sys.argv[1:6]
-failures = []
-
-os.makedirs(WORK, exist_ok=True)
-host = epuck_fidelity.run(SIM, WORK, "host", HOST_PLAIN, failures, says_id=False)
-qemu = epuck_fidelity.run(SIM, WORK, "qemu", epuck_fidelity.qemu_controller(QEMU, QEMU_ELF, WORK), failures,
-                          says_id=False)
+WORK, failures = epuck_fidelity.host_against_qemu(sys.argv, blinks=False)
 if not failures:
-    epuck_fidelity.compare(host, "the host build", qemu, "the QEMU image", failures)
-    epuck_fidelity.shows_enough(qemu, failures, blinks=False)
     for robot in (0, 1):
         found = epuck_fidelity.cpu_account(WORK, robot, failures)
         if found is not None:
@@ -32,7 +23,5 @@ if not failures:
                 failures.append(f"qemu: robot {robot}'s CPU account is not a plain loop's: {robot_us} us robot "
                                 f"time, {asleep} asleep, {sensors} on the sensors, {program} the program's")
 
-for f in failures:
-    print("FAIL", f)
-print("ok: the plain loop's QEMU image and host build drive the same world identically" if not failures else "")
-sys.exit(1 if failures else 0)
+sys.exit(epuck_fidelity.report(failures, "ok: the plain loop's QEMU image and host build drive the same world "
+                                         "identically"))

@@ -67,6 +67,45 @@ def cpu_account(work, robot, failures):
     return [int(v) for v in account.groups()], console
 
 
+def host_against_qemu(argv, blinks):
+    """argv's SIM HOST_PROGRAM QEMU_ELF QEMU_SYSTEM_ARM WORKDIR: the
+    controller's host build and its QEMU image drive the world, whose
+    records must be the same and show enough (shows_enough). The work
+    folder and the failures."""
+    sim, host_program, image, qemu, work = argv[1:6]
+    failures = []
+    os.makedirs(work, exist_ok=True)
+    host = run(sim, work, "host", host_program, failures, says_id=False)
+    image_out = run(sim, work, "qemu", qemu_controller(qemu, image, work), failures, says_id=False)
+    if not failures:
+        compare(host, "the host build", image_out, "the QEMU image", failures)
+        shows_enough(image_out, failures, blinks=blinks)
+    return work, failures
+
+
+def report(failures, success):
+    """Each failure, or success; the exit status."""
+    for f in failures:
+        print("FAIL", f)
+    print(success if not failures else "")
+    return 1 if failures else 0
+
+
+def kernel_account(work, robot, failures):
+    """Robot's CPU account must be a kernel's robot's: at least the run's
+    10 s of virtual time, asleep for most of it, awake for some (the
+    sensors' deliveries and the rest). Its console, None if it printed no
+    account."""
+    found = cpu_account(work, robot, failures)
+    if found is None:
+        return None
+    (robot_us, asleep, sensors, other), console = found
+    if robot_us < 10_000_000 or not 0.9 * robot_us < asleep < robot_us or sensors == 0 or other == 0:
+        failures.append(f"qemu: robot {robot}'s CPU account does not add up: {robot_us} us robot time, "
+                        f"{asleep} asleep, {sensors} on the sensors, {other} else awake")
+    return console
+
+
 def read(out, name):
     with open(os.path.join(out, name)) as f:
         return f.read()
