@@ -1,21 +1,12 @@
 #include "trial_video.hpp"
 
 #include <algorithm>
-#include <cstdio>
+
+#include "number_text.hpp"
 
 namespace fs = std::filesystem;
 
 namespace openswarm {
-
-namespace {
-
-std::string number(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return text;
-}
-
-}  // namespace
 
 bool TrialVideo::wanted(int trial) const {
     return on && (trials.empty() || std::find(trials.begin(), trials.end(), trial + 1) != trials.end());
@@ -24,8 +15,8 @@ bool TrialVideo::wanted(int trial) const {
 std::vector<std::string> TrialVideo::arguments(int trial) const {
     if (!wanted(trial)) return {};
     std::vector<std::string> args{"--video"};
-    if (fps > 0) args.insert(args.end(), {"--video-fps", number(fps)});
-    if (speed > 0) args.insert(args.end(), {"--video-speed", number(speed)});
+    if (fps > 0) args.insert(args.end(), {"--video-fps", number_text(fps)});
+    if (speed > 0) args.insert(args.end(), {"--video-speed", number_text(speed)});
     return args;
 }
 

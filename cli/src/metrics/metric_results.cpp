@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "../number_text.hpp"
 #include "metrics_error.hpp"
 
 namespace fs = std::filesystem;
@@ -12,12 +13,6 @@ namespace fs = std::filesystem;
 namespace openswarm {
 
 namespace {
-
-std::string value_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    return text;
-}
 
 std::string time_text(double t) {
     if (std::isnan(t)) return "";
@@ -35,7 +30,7 @@ std::string per_robot_text(const MetricResult &r, size_t at_most) {
             text += ", ... (" + std::to_string(r.robots.size()) + " robots; all in the CSV)";
             break;
         }
-        text += (text.empty() ? "" : ", ") + std::to_string(robot) + ": " + value_text(points.back().value);
+        text += (text.empty() ? "" : ", ") + std::to_string(robot) + ": " + number_text(points.back().value);
     }
     return text;
 }
@@ -46,10 +41,10 @@ void write_metrics_csv(const std::vector<MetricResult> &results, const fs::path 
     std::ofstream csv(file);
     csv << "time_s,metric,robot,value\n";
     for (const auto &r : results) {
-        for (const auto &p : r.swarm) csv << time_text(p.time_s) << ',' << r.name << ",," << value_text(p.value) << '\n';
+        for (const auto &p : r.swarm) csv << time_text(p.time_s) << ',' << r.name << ",," << number_text(p.value) << '\n';
         for (const auto &[robot, points] : r.robots)
             for (const auto &p : points)
-                csv << time_text(p.time_s) << ',' << r.name << ',' << robot << ',' << value_text(p.value) << '\n';
+                csv << time_text(p.time_s) << ',' << r.name << ',' << robot << ',' << number_text(p.value) << '\n';
     }
     csv.close();
     if (!csv)
@@ -73,7 +68,7 @@ void print_metrics_table(const std::vector<MetricResult> &results, std::FILE *ou
         std::string from = r.source;
         if (!r.robots.empty()) from += ", mean of " + std::to_string(r.robots.size()) + " robots";
         std::fprintf(out, "%-*s  %12s  %12s  %12s  %7zu  %s\n", (int)width, r.name.c_str(),
-                     value_text(r.swarm.back().value).c_str(), value_text(lo).c_str(), value_text(hi).c_str(),
+                     number_text(r.swarm.back().value).c_str(), number_text(lo).c_str(), number_text(hi).c_str(),
                      r.swarm.size(), from.c_str());
         if (!r.robots.empty())
             std::fprintf(out, "%-*s  per robot at end: %s\n", (int)width, "", per_robot_text(r, 12).c_str());

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "../number_text.hpp"
 #include "group_comparison.hpp"
 #include "sweep_stats.hpp"
 
@@ -24,12 +25,6 @@ std::string csv_field(const std::string &text) {
 }
 
 std::string value_text(const json &v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
-
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    return text;
-}
 
 // "point,trial,seed,<each parameter>"
 std::string key_header(const Sweep &s) {
@@ -90,7 +85,7 @@ void print_two_point_comparison(Finals &finals, std::FILE *to) {
         Comparison c = compare_groups(finals.at[0][metric], finals.at[1][metric]);
         if (!c.valid) continue;
         std::fprintf(to, "point 1 against point 2, %s: Welch's t %s (df %.1f), p = %s; Cohen's d %s\n", metric.c_str(),
-                     number(c.t).c_str(), c.degrees, number(c.p).c_str(), number(c.d).c_str());
+                     number_text(c.t).c_str(), c.degrees, number_text(c.p).c_str(), number_text(c.d).c_str());
     }
 }
 
@@ -108,7 +103,7 @@ bool write_sweep_results(const Sweep &s, const std::vector<SweepTrial> &trials, 
         if (!t.failure.empty()) continue;
         for (const TrialSeries &series : t.series)
             for (const auto &[time, value] : series.values)
-                results << key_fields(s, t) << "," << number(time) << "," << series.metric << "," << number(value)
+                results << key_fields(s, t) << "," << number_text(time) << "," << series.metric << "," << number_text(value)
                         << "\n";
     }
     if (!close_checked(list, out / "trials.csv", why) || !close_checked(results, out / "results.csv", why))
@@ -124,8 +119,8 @@ bool write_sweep_results(const Sweep &s, const std::vector<SweepTrial> &trials, 
             summary << point + 1 << point_fields(s, point) << "," << metric << "," << m.n << ","
                     << failed_at(trials, point);
             if (m.n == 0) summary << ",,,,\n";
-            else summary << "," << number(m.mean) << "," << number(m.sd) << "," << number(m.low) << ","
-                         << number(m.high) << "\n";
+            else summary << "," << number_text(m.mean) << "," << number_text(m.sd) << "," << number_text(m.low) << ","
+                         << number_text(m.high) << "\n";
         }
     return close_checked(summary, out / "summary.csv", why);
 }
@@ -140,9 +135,9 @@ void print_sweep_summary(const Sweep &s, const std::vector<SweepTrial> &trials, 
         for (const std::string &metric : finals.order) {
             Summary m = summarise(finals.at[point][metric]);
             if (m.n == 0) continue;
-            if (m.n == 1) std::fprintf(to, "  %-28s %10s             (n=1)\n", metric.c_str(), number(m.mean).c_str());
-            else std::fprintf(to, "  %-28s %10s +- %-8s (95%%, n=%zu)\n", metric.c_str(), number(m.mean).c_str(),
-                              number((m.high - m.low) / 2).c_str(), m.n);
+            if (m.n == 1) std::fprintf(to, "  %-28s %10s             (n=1)\n", metric.c_str(), number_text(m.mean).c_str());
+            else std::fprintf(to, "  %-28s %10s +- %-8s (95%%, n=%zu)\n", metric.c_str(), number_text(m.mean).c_str(),
+                              number_text((m.high - m.low) / 2).c_str(), m.n);
         }
     }
     if (s.points.size() == 2) print_two_point_comparison(finals, to);
