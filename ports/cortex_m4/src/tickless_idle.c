@@ -125,7 +125,8 @@ static uint32_t ticks_to_sleep(uint32_t kernel_ticks) {
     uint32_t ticks = kernel_ticks;
     if (cortex_m4_tick_hook != NULL) {
         int32_t hook_ticks = (int32_t)(cortex_m4_tick_hook_ms - Sys_Get_SystemTime());
-        if (hook_ticks < (int32_t)ticks) ticks = hook_ticks > 0 ? (uint32_t)hook_ticks : 0u;
+        uint32_t hook_wait = hook_ticks > 0 ? (uint32_t)hook_ticks : 0u; /* a time past: every tick */
+        if (hook_wait < ticks) ticks = hook_wait;
     }
     uint32_t longest = SYSTICK_MAX_COUNTS / tick_counts() + 1u;
     return ticks < longest ? ticks : longest;
