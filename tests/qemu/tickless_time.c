@@ -17,6 +17,7 @@
  * of SysTick takes 1 ms of it. TIM3 updates every 250 us
  * from boot (its count cleared first: QEMU interrupts without end otherwise) and calls the kernel only at the first update past a poke's
  * time; TIM5 runs free as the virtual clock, in 100 ns counts. */
+#include "busy_threads.h"
 #include "openswarm/cortex_m4.h"
 #include "openswarm/kernel.h"
 
@@ -105,21 +106,11 @@ static void waiter(void *arg) {
     }
 }
 
-static volatile uint32_t spins[2];
-static void spinner(void *arg) {
-    volatile uint32_t *count = arg;
-    for (;;) (*count)++;
-}
-
 static void busy_threads(void) {
-    Sys_Start_Process_Ex(spinner, (void *)&spins[0], 0, 0, NULL);
-    Sys_Start_Process_Ex(spinner, (void *)&spins[1], 0, 0, NULL);
-    uint32_t switches = Sys_Get_SwitchCount();
-    Sys_Sleep(200);
-    switches = Sys_Get_SwitchCount() - switches;
-    say("busy threads: a 200 ms sleep woke at ms ", Sys_Get_SystemTime());
-    say("switches meanwhile ", switches);
-    say("both spun ", (uint32_t)(spins[0] != 0 && spins[1] != 0));
+    busy_threads_result busy = busy_threads_run();
+    say("busy threads: a 200 ms sleep woke at ms ", busy.woke_at_ms);
+    say("switches meanwhile ", busy.switches);
+    say("both spun ", (uint32_t)busy.both_spun);
 }
 
 static void sleeper(void *arg) {
