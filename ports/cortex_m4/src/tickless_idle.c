@@ -16,8 +16,9 @@
  * os_isr_enter) credits the ticks the counter says have passed and puts
  * the counter back on the tick grid: the counts to the next tick are
  * loaded by a write of the current value, then the ordinary reload. The
- * kernel's time is exact; only the grid may move by the few counts the
- * write takes (REPHASE_LAG compensates them under QEMU). */
+ * kernel's time is exact; only the grid may move by the few counts between
+ * the read and the write (under QEMU less than 0.4 us a re-phase:
+ * qemu.tickless_time's grid line). */
 #include "openswarm/cortex_m4.h"
 #include "openswarm/port.h"
 #include "openswarm/system_time.h"
@@ -29,10 +30,6 @@
 /* A tick due within this many counts is waited for rather than put back
  * on the grid: the write that does it must come before the tick. */
 #define REPHASE_MARGIN 256u
-/* The counts that pass between reading the counter and the write that
- * restarts it, under QEMU 7.2's netduinoplus2 (measured by
- * qemu.tickless_time's virtual clock). */
-#define REPHASE_LAG 0u
 
 /* AWAKE: every tick interrupts. ARMED: the stretched reload is set, the
  * next tick will load it. STRETCHED: the counter runs the stretched
@@ -59,7 +56,7 @@ static bool systick_wrapped(void) {
  * on the tick grid, and reloads ordinary periods from there. The counter
  * takes the written reload at the clock after the write of CVR. */
 static void rephase(uint32_t counts) {
-    SYST_RVR = counts - 1u - REPHASE_LAG;
+    SYST_RVR = counts - 1u;
     SYST_CVR = 0;
     while (SYST_CVR == 0) {
     }
