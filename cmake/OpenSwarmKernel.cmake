@@ -60,6 +60,7 @@ set(OPENSWARM_EPUCK_SOURCES
 # bootloader).
 set(OPENSWARM_PORT_epuck2_SOURCES
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/port.c
+    ${OPENSWARM_ROOT}/ports/cortex_m4/src/tickless_idle.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/switch.S
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/faults.c
     ${OPENSWARM_ROOT}/ports/cortex_m4/src/fault_report.c

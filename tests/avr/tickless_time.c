@@ -8,6 +8,7 @@
  *     the thread waiting for what it sends, at once;
  *   - two threads that never block keep the tick: the time slice switches
  *     between them every 10 ms (about 20 switches in 200 ms). */
+#include "busy_threads.h"
 #include "openswarm/kernel.h"
 #include "openswarm/kilobot.h"
 #include "openswarm/kilobot_sim.h"
@@ -50,12 +51,6 @@ static void waiter(void *arg) {
     say(PSTR("its waiter woke at ms "), now);
 }
 
-static volatile uint32_t spins[2];
-static void spinner(void *arg) {
-    volatile uint32_t *count = arg;
-    for (;;) (*count)++;
-}
-
 static void sleeper(void *arg) {
     (void)arg;
     Sys_Sleep(10000);
@@ -65,14 +60,10 @@ static void sleeper(void *arg) {
     kilobot_led_apply(KILOBOT_RGB(0, 1, 0));
     say(PSTR("a 2.5 s timeout ended at ms "), Sys_Get_SystemTime());
     say(PSTR("timed out "), (uint32_t)(st == SYS_E_TIMEOUT));
-    Sys_Start_Process_Ex(spinner, (void *)&spins[0], 0, 0, NULL);
-    Sys_Start_Process_Ex(spinner, (void *)&spins[1], 0, 0, NULL);
-    uint32_t switches = Sys_Get_SwitchCount();
-    Sys_Sleep(200);
-    switches = Sys_Get_SwitchCount() - switches;
-    say(PSTR("busy threads: a 200 ms sleep woke at ms "), Sys_Get_SystemTime());
-    say(PSTR("switches meanwhile "), switches);
-    say(PSTR("both spun "), (uint32_t)(spins[0] != 0 && spins[1] != 0));
+    busy_threads_result busy = busy_threads_run();
+    say(PSTR("busy threads: a 200 ms sleep woke at ms "), busy.woke_at_ms);
+    say(PSTR("switches meanwhile "), busy.switches);
+    say(PSTR("both spun "), (uint32_t)busy.both_spun);
     sim_exit(0);
 }
 

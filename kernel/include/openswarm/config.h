@@ -44,8 +44,8 @@
  * at once when it wakes: time, timeouts and slices stay exact. Only while
  * the clock event has no listener; a port without tickless idle (its
  * port_arch.h does not define PORT_TICKLESS_IDLE) keeps the periodic tick,
- * and asking it for tickless idle is a build error. Off by default; the
- * Kilobot's port_config.h turns it on. */
+ * and asking it for tickless idle is a build error. Off by default (the
+ * Kilobot has it off too); the Cortex-M4's port_config.h turns it on. */
 #ifndef OS_CFG_TICKLESS
 #define OS_CFG_TICKLESS 0
 #endif

@@ -1,5 +1,5 @@
 /* Cortex-M4 port: interrupt masking by priority (BASEPRI), the SysTick
- * 1 ms tick, sleeping idle, a new thread's first frame, and the
+ * 1 ms tick, sleeping idle (tickless idle: tickless_idle.c), a new thread's first frame, and the
  * interrupt epilogue's bookkeeping. The switch itself is in switch.S. */
 #include "openswarm/cortex_m4.h"
 #include "openswarm/port.h"
@@ -74,6 +74,7 @@ void port_tick_start(void) {
 }
 
 void (*cortex_m4_tick_hook)(void);
+uint32_t cortex_m4_tick_hook_ms;
 
 void SysTick_Handler(void) {
     cortex_m4_isr_enter();

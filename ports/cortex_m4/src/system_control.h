@@ -21,6 +21,7 @@
 
 #define SCB_ICSR SCS_REG(0xE000ED04u)
 #define SCB_ICSR_PENDSVSET (1u << 28)
+#define SCB_ICSR_PENDSTSET (1u << 26) /* SysTick pending */
 #define SCB_VTOR SCS_REG(0xE000ED08u)
 #define SCB_CCR SCS_REG(0xE000ED14u)
 #define SCB_CCR_DIV_0_TRP (1u << 4)
@@ -29,6 +30,7 @@
 #define SCB_SHPR2 SCS_REG(0xE000ED1Cu) /* SVCall in bits 31:24 */
 #define SCB_SHPR3 SCS_REG(0xE000ED20u) /* PendSV 23:16, SysTick 31:24 */
 #define SCB_SHCSR SCS_REG(0xE000ED24u)
+#define SCB_SHCSR_SYSTICKACT (1u << 11) /* SysTick being handled */
 #define SCB_SHCSR_FAULTS_ENABLE ((1u << 16) | (1u << 17) | (1u << 18)) /* Mem, Bus, Usage */
 #define SCB_CFSR SCS_REG(0xE000ED28u)
 #define SCB_HFSR SCS_REG(0xE000ED2Cu)

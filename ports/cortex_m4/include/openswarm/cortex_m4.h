@@ -44,9 +44,14 @@ void cortex_m4_isr_exit(void);
 void cortex_m4_irq_enable(int irq, uint8_t priority);
 void cortex_m4_irq_disable(int irq);
 
-/* Work the board adds to every 1 ms tick (in the tick interrupt, after
- * the kernel's). NULL for none. */
+/* Work the board adds to the 1 ms tick (in the tick interrupt, after the
+ * kernel's). NULL for none. With tickless idle (OS_CFG_TICKLESS) the CPU
+ * sleeps through ticks without their interrupt: the hook runs at every
+ * tick that interrupts, and certainly at the tick when the kernel's time
+ * reaches cortex_m4_tick_hook_ms (the board keeps it up to date; a time
+ * past: every tick). */
 extern void (*cortex_m4_tick_hook)(void);
+extern uint32_t cortex_m4_tick_hook_ms;
 
 /* Called by the idle thread with interrupts held (PRIMASK) just before it
  * sleeps (asleep true) and just after it wakes, before the interrupt that

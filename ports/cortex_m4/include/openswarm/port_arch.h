@@ -21,6 +21,11 @@ typedef uint32_t port_irq_state_t; /* BASEPRI */
 #define PORT_STACK_EXTRA 384u
 #define PORT_STACK_ALIGN 8u /* AAPCS: 8-byte aligned at every call */
 
+/* Tickless idle (OS_CFG_TICKLESS, on by default: port_config.h): SysTick
+ * stretches a period over the ticks until the kernel's next deadline
+ * (src/tickless_idle.c). */
+#define PORT_TICKLESS_IDLE 1
+
 /* Event ids the board reserves for its devices (the e-puck's: epuck.h). */
 #ifndef PORT_EVENT_COUNT
 #define PORT_EVENT_COUNT 16

@@ -75,7 +75,10 @@ void board_init(void) {
         board_selector_position = (uint8_t)(number_given(line, "--selector=") & 0x0Fu);
         board_robot_id = (uint16_t)number_given(line, "--id=");
     }
-    if (stop_ms != 0) cortex_m4_tick_hook = stop_when_due;
+    if (stop_ms != 0) {
+        cortex_m4_tick_hook = stop_when_due;
+        cortex_m4_tick_hook_ms = stop_ms; /* tickless idle wakes then at the latest */
+    }
 }
 
 void board_console_write(const char *text, uint32_t length) {

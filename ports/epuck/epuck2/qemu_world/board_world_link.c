@@ -7,7 +7,9 @@
  * (cpu_account.h): the link's own work apart from the robot's.
  *
  * Lockstep: the world's steps are counted in the kernel's ticks. When a
- * step's advance_ms ticks have run, the tick interrupt answers with the
+ * step's advance_ms ticks have run (the kernel's time reaches
+ * cortex_m4_tick_hook_ms, which tickless idle wakes for), the tick
+ * interrupt answers with the
  * robot's outputs and, with SysTick stopped, waits for the next step's
  * inputs (the robot is frozen meanwhile, as between two world steps),
  * delivers them to the devices and starts SysTick again. Nothing else
@@ -24,6 +26,7 @@
 #include "world_link_io.h"
 #include "openswarm/cortex_m4.h"
 #include "openswarm/epuck_world_link.h"
+#include "openswarm/system_time.h"
 #include "world_outputs.h"
 
 #include <stddef.h>
@@ -34,7 +37,6 @@
 #define SCB_ICSR (*(volatile uint32_t *)0xE000ED04u)
 #define SCB_ICSR_PENDSTCLR (1u << 25)
 
-static uint32_t ticks_left; /* of the current step; 0: answer at the next tick */
 static uint32_t link_since; /* when the link's own work (not the robot's) began */
 static int last_selector = -1;
 static uint16_t frame[WORLD_LINK_MAX_PIXELS];
@@ -76,15 +78,13 @@ static void take_inputs(void) {
     }
     cpu_account_add(CPU_SENSORS, delivering);
     link_since = cpu_account_now();
-    ticks_left = in.advance_ms;
+    cortex_m4_tick_hook_ms = Sys_Get_SystemTime() + in.advance_ms; /* the step's last tick */
 }
 
-/* In the tick interrupt, after the kernel's tick. */
+/* In the tick interrupt, after the kernel's tick. The first step ends at
+ * the first tick (cortex_m4_tick_hook_ms 0). */
 static void world_step(void) {
-    if (ticks_left > 1) {
-        ticks_left--;
-        return;
-    }
+    if ((int32_t)(Sys_Get_SystemTime() - cortex_m4_tick_hook_ms) < 0) return;
     link_since = cpu_account_now();
     uint32_t running = SYST_CSR;
     SYST_CSR = 0;
@@ -92,7 +92,7 @@ static void world_step(void) {
     answer();
     for (;;) {
         take_inputs();
-        if (ticks_left != 0) break;
+        if (cortex_m4_tick_hook_ms != Sys_Get_SystemTime()) break;
         answer(); /* an input of 0 ms: answered at once */
     }
     __asm__ __volatile__("cpsie i" ::: "memory");
