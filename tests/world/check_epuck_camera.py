@@ -109,13 +109,14 @@ def same_file(a, b, name):
         return f.read() == g.read()
 
 
+pure = {"0xf800", "0x07e0", "0xffff", "0x0000"}
 off, _ = run("noise_off", {"pixel_noise": 0, "misread_pct_per_m": 0})
-check("noise off", off == plain and same_file("default", "noise_off", "trajectories.csv"),
+check("noise off", off == plain and same_file("default", "noise_off", "trajectories.csv")
+      and {c for _, c, _ in plain} <= pure,
       "with \"pixel_noise\": 0 and \"misread_pct_per_m\": 0 the frames or the trajectories differ from a world "
-      "without them")
+      f"without them, or a world without them shows colours off the pure ones: {sorted({c for _, c, _ in plain})}")
 noisy, _ = run("pixel_noise", {"pixel_noise": 3})
 again, _ = run("pixel_noise_again", {"pixel_noise": 3})
-pure = {"0xf800", "0x07e0", "0xffff", "0x0000"}
 check("pixel noise", len({c for _, c, _ in noisy} - pure) >= 6 and noisy == again,
       f"centre pixels {[c for _, c, _ in noisy]} with pixel noise 3: expected colours off the pure ones, the same in "
       f"a second run of the same seed ({[c for _, c, _ in again]})")
