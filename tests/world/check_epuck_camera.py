@@ -9,7 +9,10 @@ with the stand-in controller (epuck_double.py) logging every step's input:
   as without the lag, each arriving lag_ms later;
   twice the field of view, an object straight ahead half as many pixels
   wide; past the camera's range it shows as the wall behind;
-  rates and lags off the 10 ms step are refused at their place.
+  rates and lags off the 10 ms step are refused at their place;
+  the camera's noise given as 0 changes nothing, byte for byte; pixel
+  noise moves the pixels, the same way for the same seed; noise settings
+  out of range are refused at their place, the field named.
 
 check_epuck_camera.py SIM DOUBLE WORKDIR
 """
@@ -101,9 +104,28 @@ for name, range_mm, red in (("in_range", 1200, True), ("out_of_range", 800, Fals
     check(name, centre == ("0xf800" if red else "0xffff"),
           f"an object 1000 mm ahead, range {range_mm} mm: centre {centre}, expected {'red' if red else 'the white wall'}")
 
+def same_file(a, b, name):
+    with open(os.path.join(WORK, a, name), "rb") as f, open(os.path.join(WORK, b, name), "rb") as g:
+        return f.read() == g.read()
+
+
+pure = {"0xf800", "0x07e0", "0xffff", "0x0000"}
+off, _ = run("noise_off", {"pixel_noise": 0, "misread_pct_per_m": 0})
+check("noise off", off == plain and same_file("default", "noise_off", "trajectories.csv")
+      and {c for _, c, _ in plain} <= pure,
+      "with \"pixel_noise\": 0 and \"misread_pct_per_m\": 0 the frames or the trajectories differ from a world "
+      f"without them, or a world without them shows colours off the pure ones: {sorted({c for _, c, _ in plain})}")
+noisy, _ = run("pixel_noise", {"pixel_noise": 3})
+again, _ = run("pixel_noise_again", {"pixel_noise": 3})
+check("pixel noise", len({c for _, c, _ in noisy} - pure) >= 6 and noisy == again,
+      f"centre pixels {[c for _, c, _ in noisy]} with pixel noise 3: expected colours off the pure ones, the same in "
+      f"a second run of the same seed ({[c for _, c, _ in again]})")
+
 for name, camera, words in (("bad_rate", {"frames_per_s": 3}, "must divide 100"),
                             ("bad_lag", {"lag_ms": 125}, "multiple of 10 ms"),
-                            ("bad_key", {"fps": 4}, "fps")):
+                            ("bad_key", {"fps": 4}, "fps"),
+                            ("bad_pixel_noise", {"pixel_noise": -1}, "\"pixel_noise\": 2"),
+                            ("bad_misread", {"misread_pct_per_m": 150}, "\"misread_pct_per_m\": 20")):
     _, err = run(name, camera, expect=2)
     check(name, name + ".json:" in err and words in err, f"expected an error at its place saying {words!r}: {err}")
 

@@ -1,7 +1,7 @@
 // world.json's "noise" (docs/world.md, "noise"): the switch that turns the
 // e-puck's wheel noise off, on by default, refused at its place when not a
 // boolean or when it names a noise the world does not have; "wheels_pct"
-// its width. And "camera": the e-puck's frame rate and lag.
+// its width. And "camera": the e-puck's frame rate and lag, and its noise.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -72,6 +72,30 @@ TEST_F(WorldFile, CameraRateAndLag) {
     EXPECT_NE(err.find("camera.lag_ms"), std::string::npos) << err;
     err = error_of(R"({"arena": {"width_mm": 600, "height_mm": 400}, "camera": {"lag_ms": 10}})");
     EXPECT_NE(err.find("a Kilobot has no camera"), std::string::npos) << err;
+}
+
+TEST_F(WorldFile, CameraNoise) {
+    const std::string epuck = R"({"robot": "epuck", "arena": {"width_mm": 600, "height_mm": 400}, )";
+    world_spec w{};
+    ASSERT_EQ(load(epuck + R"("robots": [{"count": 1}]})", &w), "");
+    EXPECT_EQ(w.camera_pixel_noise, 0.0) << "off unless given: no measured figure";
+    EXPECT_EQ(w.camera_misread_pct_per_m, 0.0);
+    world_spec_free(&w);
+    ASSERT_EQ(load(epuck + R"("camera": {"pixel_noise": 2.5, "misread_pct_per_m": 20},
+"robots": [{"count": 1}]})", &w), "");
+    EXPECT_EQ(w.camera_pixel_noise, 2.5);
+    EXPECT_EQ(w.camera_misread_pct_per_m, 20.0);
+    world_spec_free(&w);
+    std::string err = error_of(epuck + R"(
+"camera": {"pixel_noise": 40}, "robots": [{"count": 1}]})");
+    EXPECT_NE(err.find("world.json:2:27: camera.pixel_noise: expected each colour channel's noise"), std::string::npos)
+        << err;
+    EXPECT_NE(err.find("0..31, found 40; e.g. \"pixel_noise\": 2"), std::string::npos) << err;
+    err = error_of(epuck + R"(
+"camera": {"misread_pct_per_m": "high"}, "robots": [{"count": 1}]})");
+    EXPECT_NE(err.find("world.json:2:33: camera.misread_pct_per_m: expected percent chance per metre"),
+              std::string::npos) << err;
+    EXPECT_NE(err.find("e.g. \"misread_pct_per_m\": 20"), std::string::npos) << err;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "interrupt.h"
 #include "output/output.h"
+#include "world/epuck_camera_noise.h"
 #include "world/epuck_link.h"
 #include "world/epuck_sensors.h"
 #include "world/world_random.h"
@@ -16,8 +17,9 @@
 #define FRAME_PIXELS (EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT)
 
 typedef struct epuck_robot {
-    uint64_t rng;      /* its proximity sensors' noise */
-    uint16_t *frames;  /* the frames taken and not yet delivered, camera_depth of them */
+    uint64_t rng;        /* its proximity sensors' noise */
+    uint64_t camera_rng; /* its camera's noise */
+    uint16_t *frames;    /* the frames taken and not yet delivered, camera_depth of them */
 } epuck_robot;
 
 static const epuck_controllers *controllers;
@@ -47,6 +49,7 @@ static int start_controllers(const options *o, const world_spec *spec) {
         epuck_robot *r = &robots[i];
         r->rng = (uint64_t)spec->seed * 0x9E3779B97F4A7C15ull ^ ((uint64_t)i << 32 | 0xE9u);
         world_random_next(&r->rng);
+        r->camera_rng = epuck_camera_stream(spec->seed, i);
         r->frames = allocate((size_t)camera_depth * FRAME_PIXELS, sizeof *r->frames);
     }
     return controllers->start(o, n_robots, answers);
@@ -59,7 +62,8 @@ static int start_controllers(const options *o, const world_spec *spec) {
 static const uint16_t *camera_frame(const world *physics, int i, uint32_t t_ms) {
     epuck_robot *r = &robots[i];
     if (t_ms % (uint32_t)camera_period_ms == 0)
-        epuck_camera_render(physics, i, r->frames + (t_ms / camera_period_ms % camera_depth) * FRAME_PIXELS);
+        epuck_camera_render(physics, i, r->frames + (t_ms / camera_period_ms % camera_depth) * FRAME_PIXELS,
+                            &r->camera_rng);
     if (t_ms < (uint32_t)camera_lag_ms || (t_ms - camera_lag_ms) % (uint32_t)camera_period_ms != 0) return NULL;
     return r->frames + ((t_ms - camera_lag_ms) / camera_period_ms % camera_depth) * FRAME_PIXELS;
 }

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "world/epuck_camera_noise.h"
 #include "world/world_random.h"
 
 /* Where each sensor looks, counter-clockwise from the heading: sensor 0
@@ -90,7 +91,7 @@ static uint16_t colour_of(world_hit hit, double range_mm) {
 }
 
 void epuck_camera_render(const world *w, int robot,
-                         uint16_t pixels[EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT]) {
+                         uint16_t pixels[EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT], uint64_t *rng) {
     double x, y, heading;
     world_robot_pose(w, robot, &x, &y, &heading);
     const world_spec *s = world_spec_of(w);
@@ -101,7 +102,12 @@ void epuck_camera_render(const world *w, int robot,
     for (int col = 0; col < EPUCK_FRAME_WIDTH; col++) {
         /* Column 0 is the image's left: counter-clockwise of the heading. */
         double offset = fov_deg * (0.5 - (col + 0.5) / EPUCK_FRAME_WIDTH);
-        uint16_t c = colour_of(world_ray(w, robot, x, y, heading + offset, reach), range_mm);
+        world_hit hit = world_ray(w, robot, x, y, heading + offset, reach);
+        uint16_t c = colour_of(hit, range_mm);
+        int body = hit.kind == WORLD_HIT_ROBOT || hit.kind == WORLD_HIT_OBJECT;
+        if (body && c != WHITE565 && epuck_camera_misread(hit.distance_mm, s->camera_misread_pct_per_m, rng))
+            c = WHITE565;
         for (int row = 0; row < EPUCK_FRAME_HEIGHT; row++) pixels[row * EPUCK_FRAME_WIDTH + col] = c;
     }
+    epuck_camera_pixel_noise(pixels, EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT, s->camera_pixel_noise, rng);
 }

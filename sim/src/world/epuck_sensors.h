@@ -26,9 +26,11 @@ void epuck_proximity_read(const world *w, int robot, uint16_t off[EPUCK_SENSOR_C
 double epuck_reflection_counts(double distance_mm);
 /* A frame as the camera takes it: RGB565, row after row. Robots show
  * green, objects red, walls white (as in the experiment the paper
- * reproduces); each column is the colour of the first body its ray meets. */
+ * reproduces); each column is the colour of the first body its ray meets.
+ * rng: the robot's camera stream (epuck_camera_stream), which the world's
+ * camera noise draws from; without noise nothing is drawn. */
 void epuck_camera_render(const world *w, int robot,
-                         uint16_t pixels[EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT]);
+                         uint16_t pixels[EPUCK_FRAME_WIDTH * EPUCK_FRAME_HEIGHT], uint64_t *rng);
 
 #ifdef __cplusplus
 }

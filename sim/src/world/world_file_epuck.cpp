@@ -11,7 +11,8 @@ namespace world_file {
 namespace {
 
 const std::string camera_example =
-    "\"camera\": {\"frames_per_s\": 4, \"lag_ms\": 0, \"fov_deg\": 56, \"range_mm\": 1500}";
+    "\"camera\": {\"frames_per_s\": 4, \"lag_ms\": 0, \"fov_deg\": 56, \"range_mm\": 1500, \"pixel_noise\": 0, "
+    "\"misread_pct_per_m\": 0}";
 const std::string noise_example = "\"noise\": {\"wheels\": false}";
 
 }  // namespace
@@ -20,7 +21,7 @@ const std::string noise_example = "\"noise\": {\"wheels\": false}";
 void Reader::camera(const Node &n, world_spec &w) {
     if (kind_ != WORLD_ROBOT_EPUCK)
         fail(n, "a Kilobot has no camera; \"camera\" is for e-puck worlds (\"robot\": \"epuck\"): remove it");
-    object(n, {"frames_per_s", "lag_ms", "fov_deg", "range_mm"}, camera_example);
+    object(n, {"frames_per_s", "lag_ms", "fov_deg", "range_mm", "pixel_noise", "misread_pct_per_m"}, camera_example);
     if (auto f = get(n, "frames_per_s")) {
         long fps = whole(*f, 1, 100, "frames a second", "\"frames_per_s\": 4");
         if (100 % fps != 0)
@@ -42,6 +43,22 @@ void Reader::camera(const Node &n, world_spec &w) {
         w.camera_range_mm = number(*r, 10, 100000, false,
                                    "mm within which the camera tells a robot or an object from the wall behind",
                                    "\"range_mm\": 1500");
+    camera_noise(n, w);
+}
+
+/* The camera's noise, off unless given: no measured figure was found
+ * (docs/world.md, "camera noise"), so these are for sensitivity studies. */
+void Reader::camera_noise(const Node &n, world_spec &w) {
+    if (auto s = get(n, "pixel_noise"))
+        w.camera_pixel_noise = number(*s, 0, WORLD_CAMERA_MAX_PIXEL_NOISE, false,
+                                      "each colour channel's noise, its standard deviation in 5-bit counts (green, "
+                                      "6 bits, twice as many of its own)",
+                                      "\"pixel_noise\": 2");
+    if (auto p = get(n, "misread_pct_per_m"))
+        w.camera_misread_pct_per_m = number(*p, 0, WORLD_CAMERA_MAX_MISREAD_PCT_PER_M, false,
+                                            "percent chance per metre of distance that a robot's or an object's "
+                                            "column shows the wall behind it",
+                                            "\"misread_pct_per_m\": 20");
 }
 
 void Reader::noise(const Node &n, world_spec &w) {

@@ -171,6 +171,7 @@ class Reader {
     void light(const Node &n, world_spec &w);
     void noise(const Node &n, world_spec &w);
     void camera(const Node &n, world_spec &w);
+    void camera_noise(const Node &n, world_spec &w); /* "camera": "pixel_noise", "misread_pct_per_m" */
     std::optional<Conflict> round_conflict(P c, double r) const; /* an object's */
     int obstacle_hit(P c, double r, double &d) const;
     int object_hit(P c, double r, double &d) const;

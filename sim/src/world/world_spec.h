@@ -28,6 +28,8 @@
 #define WORLD_CAMERA_MAX_LAG_MS 1000
 #define WORLD_CAMERA_FOV_DEG 56.0     /* horizontal field of view */
 #define WORLD_CAMERA_RANGE_MM 1500.0  /* a robot or an object farther shows as the wall behind */
+#define WORLD_CAMERA_MAX_PIXEL_NOISE 31.0    /* sd in 5-bit counts: a whole channel's range */
+#define WORLD_CAMERA_MAX_MISREAD_PCT_PER_M 100.0
 /* Each e-puck wheel's speed is its command times a factor drawn anew every
  * step, uniform in 1 +- this %: Enki's e-puck model (DifferentialWheeled's
  * noiseAmount 0.05, EPuck.cpp), slip and all (docs/world.md). */
@@ -101,6 +103,8 @@ typedef struct world_spec {
     int camera_lag_ms;       /* "camera": {"lag_ms": L}: a frame reaches the controller L ms after it is taken */
     double camera_fov_deg;   /* "camera": {"fov_deg": D}; 0: the default */
     double camera_range_mm;  /* "camera": {"range_mm": R}; 0: the default */
+    double camera_pixel_noise;       /* "camera": {"pixel_noise": S}: each channel's sd, 5-bit counts; 0: none */
+    double camera_misread_pct_per_m; /* "camera": {"misread_pct_per_m": P}: a far body's column shows the wall; 0: none */
     world_robot *robots;
     int n_robots;
     char **firmware; /* ELF paths named in the file, relative to the file resolved */
