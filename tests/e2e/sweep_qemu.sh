@@ -8,7 +8,8 @@
 # and world.epuck2_qemu_plain establish for these controllers. A QEMU that
 # fails fails its trials with the reason, the others kept, and the same
 # command then runs only those; qemu-system-arm missing, and a Kilobot
-# app's sweep asking for qemu, are refused with the fix.
+# app's sweep asking for qemu, are refused with the fix. `openswarm run
+# --world` with a trial's world runs the image too.
 #   sweep_qemu.sh OPENSWARM WORKDIR
 set -uo pipefail
 openswarm=$1 work=$2
@@ -81,6 +82,10 @@ assert set(by) == {"exact", "qemu"}, set(by)
 assert by["exact"] == by["qemu"], sorted(set(by["exact"].items()) ^ set(by["qemu"].items()))[:4]
 assert len(by["qemu"]) == 2 * 2 * 41, len(by["qemu"])  # 2 programs x 2 metrics x samples 0..4 s
 PY
+# A world of its own with "fidelity": "qemu": `openswarm run --world`
+# builds and runs the image alike (point 3's trial: the app's image).
+"$openswarm" run --world results/point-03/trial-01/world.json --out run >run.log 2>&1 || fail "run --world" run.log
+cmp run/trajectories.csv results/point-03/trial-01/trajectories.csv || fail "run --world: the trial's record" run.log
 echo "$passed checks passed"
 test "$failed" -eq 0
 echo "a sweep's qemu points record what its exact ones do"

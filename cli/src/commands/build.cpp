@@ -207,8 +207,11 @@ void print_json_failure() {
 // build, once its options are parsed: exit_code says how it went.
 void build_command(const BuildOptions &o, const Paths &paths) {
     Progress progress = o.json ? Progress::on_stderr : Progress::on_stdout;
+    std::string given; // the variants asked for, of which one may be
+    for (const auto &[flag, on] : {std::pair{"--debug", o.debug}, {"--native", o.native}, {"--qemu", o.qemu}})
+        if (on) given += (given.empty() ? "" : " and ") + std::string(flag);
     if (o.debug + o.native + o.qemu > 1) {
-        report("--debug, --native and --qemu: give one (a debug image runs in the exact mode)");
+        report(given + ": give one (a debug image runs in the exact mode)");
         exit_code = EXIT_USAGE;
         return;
     }
@@ -315,8 +318,9 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         return std::nullopt;
     }
     if (qemu && port != "epuck_world") {
-        report("--qemu: the e-puck2 image for the world under QEMU is built from an e-puck app of the world "
-               "(--port epuck_world), and this one is for " + port + ": build it without --qemu");
+        report("--qemu (or a world's \"fidelity\": \"qemu\"): the e-puck2 image for the world under QEMU is built "
+               "from an e-puck app of the world (--port epuck_world), and this one is for " + port +
+               ": build it without --qemu, in a world without \"fidelity\": \"qemu\"");
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }
