@@ -6,8 +6,8 @@
 # QEMU, and each qemu trial's record (trajectories.csv, objects.csv) and
 # metrics are the host build's byte for byte, as world.epuck2_qemu_template
 # and world.epuck2_qemu_plain establish for these controllers. A QEMU that
-# fails fails its trials with the reason, the others kept, and the same
-# command then runs only those; qemu-system-arm missing, and a Kilobot
+# fails or hangs fails its trials with the reason, the others kept, and
+# the same command then runs only those; qemu-system-arm missing, and a Kilobot
 # app's sweep asking for qemu, are refused with the fix. `openswarm run
 # --world` with a trial's world runs the image too.
 #   sweep_qemu.sh OPENSWARM WORKDIR
@@ -59,6 +59,17 @@ grep -q "^2 of 4 trials done (0 by an earlier run), 2 failed" bad.log || fail "t
 grep -q "^3,1,1,qemu,clusters,failed," results/trials.csv && grep -q "^1,1,1,exact,clusters,done," results/trials.csv &&
     grep -q "^openswarm-sim: robot 0's controller .*/clusters.elf exited with status 1" results/trials.csv ||
     fail "trials.csv: the QEMU trials failed with the reason, the others done" results/trials.csv
+
+# A QEMU that hangs (a stand-in that never answers): killed after the
+# link's wait, its trials failed with the reason; the others done before.
+mkdir -p hungqemu && printf '#!/bin/sh\nexec sleep 600\n' >hungqemu/qemu-system-arm && chmod +x hungqemu/qemu-system-arm
+status=0
+PATH="$PWD/hungqemu:$PATH" OPENSWARM_LINK_TIMEOUT_S=2 "$openswarm" experiment experiments/qemu.json --out results \
+    >hung.log 2>&1 || status=$?
+test "$status" -eq 1 || fail "a hanging QEMU: exit $status, not 1" hung.log
+grep -q "^2 of 4 trials done (2 by an earlier run), 2 failed" hung.log &&
+    grep -q "robot 0's controller .*/clusters.elf did not answer .* within 2 s of wall time" results/trials.csv ||
+    fail "the hanging QEMU's trials" hung.log results/trials.csv
 
 # The same command with QEMU: only the failed trials run.
 "$openswarm" experiment experiments/qemu.json --out results >good.log 2>&1 || fail "the sweep" good.log
