@@ -56,6 +56,10 @@ PATH="$PWD/badqemu:$PATH" "$openswarm" experiment experiments/qemu.json --out re
 test "$status" -eq 1 || fail "a failing QEMU: exit $status, not 1" bad.log
 grep -q "^Built .*build/epuck_world-qemu/clusters.elf (e-puck2 image for QEMU)$" bad.log || fail "the QEMU image's build" bad.log
 grep -q "^2 of 4 trials done (0 by an earlier run), 2 failed" bad.log || fail "the failing QEMU's trials" bad.log
+# Progress: a line as each trial ends, with the failures so far.
+grep -Eq "^\[[1-4]/4\] point [34], trial 1: FAILED; [12] failed, [0-9]+ s so far" bad.log &&
+    grep -Eq "^\[[1-4]/4\] point [12], trial 1: largest_cluster [0-9.]+; [0-2] failed, [0-9]+ s so far" bad.log ||
+    fail "the progress lines" bad.log
 grep -q "^3,1,1,qemu,clusters,failed,\"an e-puck's controller failed (the simulator says which and how):$" results/trials.csv && grep -q "^1,1,1,exact,clusters,done," results/trials.csv &&
     grep -q "^openswarm-sim: robot 0's controller .*/clusters.elf exited with status 1" results/trials.csv ||
     fail "trials.csv: the QEMU trials failed with the reason, the others done" results/trials.csv
