@@ -24,6 +24,11 @@ option(OPENSWARM_WERROR "the app's warnings are errors" OFF)
 # PORT epuck2: also the image for the real robot (<name>-robot.elf), not
 # only QEMU's (off for `openswarm size`'s measuring build: one map).
 option(OPENSWARM_ROBOT_IMAGE "PORT epuck2: build the robot's image too" ON)
+# PORT epuck_world with the ARM toolchain (openswarm build --qemu): the app
+# as the e-puck2's image for the world, <name>.elf on the board that
+# speaks the world's link under QEMU (ports/epuck/epuck2/qemu_world),
+# instead of the host program; a plain controller likewise.
+option(OPENSWARM_EPUCK2_WORLD "PORT epuck_world: the e-puck2 image for the world under QEMU" OFF)
 function(openswarm_app_warnings target)
   set(flags -Wall -Wextra)
   if(OPENSWARM_WERROR)
@@ -72,6 +77,8 @@ endfunction()
 # against it: <name>.elf for a robot, <name> for the host and epuck_world
 # (a process the world simulator runs, ports/epuck/host). For epuck2,
 # <name>.elf runs in QEMU and <name>-robot.elf (and .bin) is for the robot.
+# For epuck_world with OPENSWARM_EPUCK2_WORLD: <name>.elf, the e-puck2 image
+# the world runs under QEMU.
 function(openswarm_add_firmware name)
   cmake_parse_arguments(F "" "PORT;CONFIG" "SOURCES" ${ARGN})
   openswarm_firmware_sources(${name} "${F_SOURCES}" F_SOURCES)
@@ -92,7 +99,7 @@ function(openswarm_add_firmware name)
       "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/kilobot/cmake/avr-gcc.cmake "
       "(or build with `openswarm build`)")
   endif()
-  if(F_PORT STREQUAL "epuck2" AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "arm")
+  if((F_PORT STREQUAL "epuck2" OR OPENSWARM_EPUCK2_WORLD) AND NOT CMAKE_SYSTEM_PROCESSOR STREQUAL "arm")
     message(FATAL_ERROR "openswarm_add_firmware(${name}): PORT epuck2 needs the ARM toolchain: "
       "configure with -DCMAKE_TOOLCHAIN_FILE=${OPENSWARM_SDK_ROOT}/ports/cortex_m4/cmake/arm-none-eabi.cmake "
       "(or build with `openswarm build`)")
@@ -123,7 +130,11 @@ function(openswarm_add_firmware name)
     openswarm_app_flags(${name})
     return()
   endif()
-  if(F_PORT STREQUAL "epuck_world")
+  set(host_world FALSE) # the host program the world runs, its main renamed
+  if(F_PORT STREQUAL "epuck_world" AND OPENSWARM_EPUCK2_WORLD)
+    openswarm_add_kernel(${name}_openswarm PORT epuck2 BOARD world ${config_args})
+  elseif(F_PORT STREQUAL "epuck_world")
+    set(host_world TRUE)
     openswarm_add_kernel(${name}_openswarm PORT host BOARD epuck_world ${config_args})
   else()
     openswarm_add_kernel(${name}_openswarm PORT ${F_PORT} ${config_args})
@@ -131,7 +142,7 @@ function(openswarm_add_firmware name)
   add_executable(${name} ${F_SOURCES} ${generated_sources})
   target_link_libraries(${name} PRIVATE ${name}_openswarm)
   openswarm_app_flags(${name})
-  if(F_PORT STREQUAL "epuck_world")
+  if(host_world)
     # The process's main is the world link's (ports/epuck/host); the app's
     # own, renamed, is what it runs on the simulated CPU.
     set_property(SOURCE ${F_SOURCES} TARGET_DIRECTORY ${name} APPEND PROPERTY
@@ -189,7 +200,8 @@ endfunction()
 # e-puck layer's plain functions (epuck_classify_frame), nothing of the
 # kernel. Builds the host program <name>, or, with OPENSWARM_NATIVE, the
 # native-mode robot <name>.so (board epuck_plain: the kernel is linked for
-# the native port's clock, never started).
+# the native port's clock, never started), or, with OPENSWARM_EPUCK2_WORLD,
+# its e-puck2 image for the world under QEMU, <name>.elf.
 function(openswarm_add_plain_controller name)
   cmake_parse_arguments(F "" "" "SOURCES" ${ARGN})
   if(NOT F_SOURCES)
@@ -197,6 +209,16 @@ function(openswarm_add_plain_controller name)
   endif()
   if(OPENSWARM_NATIVE)
     openswarm_add_native_robot(${name} BOARD epuck_plain SOURCES ${F_SOURCES})
+    openswarm_app_warnings(${name})
+    return()
+  endif()
+  if(OPENSWARM_EPUCK2_WORLD)
+    # <name>.elf: the link over semihosting as the kernel's board world has
+    # it; the kernel gives the start-up, the console and the exit, and is
+    # never started.
+    openswarm_add_kernel(${name}_openswarm PORT epuck2 BOARD world)
+    add_executable(${name} ${F_SOURCES} ${OPENSWARM_SDK_ROOT}/ports/epuck/epuck2/qemu_world/plain_world_qemu.c)
+    target_link_libraries(${name} PRIVATE ${name}_openswarm)
     openswarm_app_warnings(${name})
     return()
   endif()

@@ -96,6 +96,7 @@ struct BuildOptions {
     bool debug = false;
     bool werror = false;
     bool native = false;
+    bool qemu = false;
     std::vector<std::string> parameters; // -D NAME=VALUE
 };
 
@@ -127,6 +128,11 @@ void print_summary(const BuildResult &r, const std::vector<Share> &shares, const
     if (r.native) {
         std::printf("Built %s for %s, native: for the host, a robot of openswarm-sim's native mode "
                     "(`openswarm run --native`, docs/world.md)\n", r.image.string().c_str(), r.port.c_str());
+        return;
+    }
+    if (r.qemu) {
+        std::printf("Built %s for %s, qemu: the e-puck2's image, a robot of a world with \"fidelity\": \"qemu\" "
+                    "(docs/world.md)\n", r.image.string().c_str(), r.port.c_str());
         return;
     }
     if (info.flash_bytes == 0) { // a host program: no memory of a robot's to fill
@@ -163,7 +169,7 @@ void print_summary(const BuildResult &r, const std::vector<Share> &shares, const
 void print_json(const BuildResult &r, const std::vector<Share> &shares, const std::string &why) {
     const PortInfo &info = port_info(r.port);
     nlohmann::ordered_json j = {
-        {"image", r.image.string()},       {"port", r.port}, {"native", r.native}, {"flash", r.flash},
+        {"image", r.image.string()},       {"port", r.port}, {"native", r.native}, {"qemu", r.qemu}, {"flash", r.flash},
         {"flash_total", r.flash_total},    {"ram", r.ram},   {"ram_total", info.ram_bytes}};
     j["parameters"] = r.parameters;
     if (shares.empty()) {
@@ -201,12 +207,15 @@ void print_json_failure() {
 // build, once its options are parsed: exit_code says how it went.
 void build_command(const BuildOptions &o, const Paths &paths) {
     Progress progress = o.json ? Progress::on_stderr : Progress::on_stdout;
-    if (o.debug && o.native) {
-        report("--debug and --native: give one (a debug image runs in the exact mode)");
+    std::string given; // the variants asked for, of which one may be
+    for (const auto &[flag, on] : {std::pair{"--debug", o.debug}, {"--native", o.native}, {"--qemu", o.qemu}})
+        if (on) given += (given.empty() ? "" : " and ") + std::string(flag);
+    if (o.debug + o.native + o.qemu > 1) {
+        report(given + ": give one (a debug image runs in the exact mode)");
         exit_code = EXIT_USAGE;
         return;
     }
-    Variant variant = o.debug ? Variant::debug : o.native ? Variant::native : Variant::release;
+    Variant variant = o.debug ? Variant::debug : o.native ? Variant::native : o.qemu ? Variant::qemu : Variant::release;
     auto parameters = parameter_options(o.parameters);
     if (!parameters) return;
     auto r = build_app(paths, o.dir, o.port, progress, variant, o.werror, *parameters);
@@ -216,7 +225,8 @@ void build_command(const BuildOptions &o, const Paths &paths) {
     const bool host = port_info(r->port).flash_bytes == 0;
     if (host) why = "a host program has no robot's memory to share";
     if (r->native) why = "the native mode's build has no robot's memory to share";
-    auto shares = o.debug || host || r->native ? std::vector<Share>{}
+    if (r->qemu) why = "not measured for the world's e-puck2 image (`openswarm build --port epuck2` measures the robot's)";
+    auto shares = o.debug || host || r->native || r->qemu ? std::vector<Share>{}
                                    : measure_shares(paths, o.dir, *r, progress, why);
     if (o.json)
         print_json(*r, shares, why);
@@ -300,21 +310,30 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     const ParameterValues changed = changed_parameters(config, parameters);
     const std::string port = config.port;
     const bool debug = variant == Variant::debug, native = variant == Variant::native;
+    const bool qemu = variant == Variant::qemu;
     if (native && port != "kilobot" && port != "epuck_world") {
         report("--native: the native mode runs Kilobot apps and the world's e-pucks (--port epuck_world) "
                "so far, and this one is for " + port + "; run it without --native (the exact mode)");
         exit_code = EXIT_USAGE;
         return std::nullopt;
     }
+    if (qemu && port != "epuck_world") {
+        report("--qemu (or a world's \"fidelity\": \"qemu\"): the e-puck2 image for the world under QEMU is built "
+               "from an e-puck app of the world (--port epuck_world), and this one is for " + port +
+               ": build it without --qemu, in a world without \"fidelity\": \"qemu\"");
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
+    }
     bool have_cmake = find_program("cmake").has_value();
     if (!have_cmake) report("cmake was not found: sudo apt-get install cmake");
-    bool have_compiler = native ? find_program("cc").has_value() : toolchain_present(port_info(port));
+    // The QEMU image is the e-puck2's, built by its toolchain.
+    bool have_compiler = native ? find_program("cc").has_value() : toolchain_present(port_info(qemu ? "epuck2" : port));
     if (native && !have_compiler) report("cc was not found, and --native builds with it: sudo apt-get install gcc");
     if (!have_cmake || !have_compiler) {
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    fs::path build_dir = dir / "build" / ((debug ? port + "-debug" : native ? port + "-native" : port) +
+    fs::path build_dir = dir / "build" / ((debug ? port + "-debug" : native ? port + "-native" : qemu ? port + "-qemu" : port) +
                                           parameters_folder_suffix(changed));
     fs::path generated = generated_dir(dir, port);
     const PortInfo &info = port_info(port);
@@ -338,9 +357,13 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
     // Where the e-puck2's robot image is linked (cmake/OpenSwarmKernel.cmake).
     if (port == "epuck2")
         configure.push_back("-DOPENSWARM_EPUCK2_BOOTLOADER=" + robot_placement(config).bootloader);
+    if (qemu)
+        configure.insert(configure.end(), {"-DCMAKE_TOOLCHAIN_FILE=" + (paths.root / port_info("epuck2").toolchain).string(),
+                                           "-DOPENSWARM_EPUCK2_WORLD=ON"});
     say("Configuring " + config.name + " for " + port +
         (debug ? " (debug: -Og, no link-time optimisation)"
-               : native ? " (native: for the host, the simulator's native mode)" : ""));
+               : native ? " (native: for the host, the simulator's native mode)"
+               : qemu   ? " (qemu: the e-puck2's image for the world under QEMU)" : ""));
     if (run(configure) != 0) {
         failed_log();
         report("configuring failed (CMake's messages are above); check " +
@@ -366,15 +389,16 @@ std::optional<BuildResult> build_app(const Paths &paths, const fs::path &dir,
         exit_code = EXIT_FAILED;
         return std::nullopt;
     }
-    if (!native) publish_compile_commands(build_dir);
+    if (!native && !qemu) publish_compile_commands(build_dir);
     BuildResult result;
     result.name = config.name;
     result.port = port;
     result.parameters = changed;
-    if (native) {
-        result.native = true;
-        result.image = build_dir / (config.name + ".so");
-        if (brief) std::printf("Built %s (native)\n", result.image.string().c_str());
+    if (native || qemu) {
+        result.native = native;
+        result.qemu = qemu;
+        result.image = build_dir / (config.name + (native ? ".so" : ".elf"));
+        if (brief) std::printf("Built %s (%s)\n", result.image.string().c_str(), native ? "native" : "e-puck2 image for QEMU");
         return result;
     }
     result.image = build_dir / (config.name + info.image_suffix);
@@ -438,6 +462,10 @@ void add_build_command(CLI::App &app, const Paths &paths) {
     cmd->add_flag("--native", o->native,
                   "the app for the host, in build/<port>-native/<app>.so: a robot of the "
                   "simulator's native mode, which runs thousands (docs/world.md, \"Native mode\")");
+    cmd->add_flag("--qemu", o->qemu,
+                  "an e-puck app of the world (port epuck_world) as the e-puck2's image, in "
+                  "build/epuck_world-qemu/<app>.elf: a robot of a world with \"fidelity\": \"qemu\", "
+                  "run by QEMU instruction by instruction (docs/world.md)");
     cmd->add_flag("--debug", o->debug,
                   "a debug image in build/<port>-debug: -Og -g, no link-time optimisation, so "
                   "the debugger (openswarm run --debug --gdb PORT) knows every line and variable");

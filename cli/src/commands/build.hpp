@@ -35,6 +35,7 @@ struct BuildResult {
     // runs (the e-puck2's: <app>-robot.elf, and .bin beside it).
     std::optional<RobotImage> robot;
     bool native = false; // the app built for the host (Variant::native): no robot's memory
+    bool qemu = false;   // the e-puck2 image for the world (Variant::qemu): not measured
     ParameterValues parameters; // those that differ from openswarm.json's defaults
 };
 
@@ -55,11 +56,13 @@ std::vector<std::string> configure_command(const Paths &paths, const std::filesy
 enum class Progress { on_stdout, on_stderr, brief };
 
 // A release image (-Os, link-time optimisation: what goes to the robot),
-// a debug one (-Og, no LTO: every line and variable for the debugger), or
+// a debug one (-Og, no LTO: every line and variable for the debugger),
 // the app built for the host as a native-mode robot (ports/native: a
-// shared object openswarm-sim runs by the thousand), built in
-// build/<port>, build/<port>-debug or build/<port>-native.
-enum class Variant { release, debug, native };
+// shared object openswarm-sim runs by the thousand), or an epuck_world
+// app as the e-puck2's image the world runs under QEMU (<app>.elf), built
+// in build/<port>, build/<port>-debug, build/<port>-native or
+// build/<port>-qemu.
+enum class Variant { release, debug, native, qemu };
 
 // Configure and build the app in dir for port ("" = the app's own);
 // prints progress, and errors ending with what to do. nullopt on failure,

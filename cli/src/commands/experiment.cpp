@@ -372,7 +372,10 @@ void add_experiment_command(CLI::App &app, const Paths &paths) {
     auto o = std::make_shared<ExperimentOptions>();
     CLI::App *cmd = app.add_subcommand(
         "experiment", "Run trials of controllers in worlds an experiment file describes, and compare them");
-    cmd->add_option("file", o->file, "the experiment (docs/case-study.md), e.g. experiments/paper.json")
+    cmd->add_option("file", o->file,
+                    "the experiment: a sweep file (docs/experiments.md; its points' \"fidelity\": \"exact\", "
+                    "\"native\", or \"qemu\" - an e-puck app's e-puck2 image under QEMU), or a clustering "
+                    "experiment (docs/case-study.md), e.g. experiments/paper.json")
         ->required();
     cmd->add_option("-o,--out", o->out, "where the results go (default: next to FILE, <FILE's name>-results)");
     cmd->add_option("-j,--jobs", o->jobs, "trials run at once (default: one per core)")

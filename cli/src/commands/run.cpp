@@ -56,18 +56,21 @@ int run_app(RunOptions o, const Paths &paths) {
     if (is_port(port) && port_info(port).runner == Runner::world && !world_options_usable(o, port))
         return EXIT_USAGE;
     bool out_given = false;
+    bool qemu = false; // the world runs the app's e-puck2 image
     if (!o.world.empty()) {
         if (!world_file_usable(o)) return EXIT_USAGE;
         out_given = !o.out.empty();
         if (!out_given)
             o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
-        o.native = o.native || world_wants_native(o.world);
+        o.native = o.native || world_fidelity(o.world) == "native";
+        qemu = !o.native && world_fidelity(o.world) == "qemu";
     }
     if (o.native && !native_options_usable(o)) return EXIT_USAGE;
     auto parameters = parameter_options(o.parameters);
     if (!parameters) return exit_code;
     auto built = build_app(paths, o.dir, o.port, Progress::brief,
-                           o.debug ? Variant::debug : o.native ? Variant::native : Variant::release, false, *parameters);
+                           o.debug ? Variant::debug : o.native ? Variant::native : qemu ? Variant::qemu : Variant::release,
+                           false, *parameters);
     if (!built) return exit_code;
     if (std::string why = simulator_problem(paths); !why.empty()) {
         report(why);

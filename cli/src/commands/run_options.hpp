@@ -54,7 +54,7 @@ bool native_options_usable(const RunOptions &o);
 // The world file of --world (run_world.cpp).
 bool world_file_usable(const RunOptions &o);
 std::string world_duration(const std::string &path);
-bool world_wants_native(const std::string &path);
+std::string world_fidelity(const std::string &path); // "exact", "native" or "qemu"
 bool keep_world_beside_run(const std::string &world_path, const std::string &out);
 
 }  // namespace openswarm

@@ -49,16 +49,17 @@ std::string world_duration(const std::string &path) {
     return "for its duration_s";
 }
 
-// The world's "fidelity": "native" asks for the native mode (the
-// simulator checks the file; an unreadable one says exact here).
-bool world_wants_native(const std::string &path) {
+// The world's "fidelity": "native" asks for the native mode, "qemu" for
+// the e-puck2 image (the simulator checks the file; an unreadable one
+// says exact here).
+std::string world_fidelity(const std::string &path) {
     try {
         std::ifstream in(path);
         auto world = nlohmann::json::parse(in);
         auto f = world.find("fidelity");
-        return f != world.end() && f->is_string() && f->get<std::string>() == "native";
+        return f != world.end() && f->is_string() ? f->get<std::string>() : "exact";
     } catch (const std::exception &) {
-        return false;
+        return "exact";
     }
 }
 

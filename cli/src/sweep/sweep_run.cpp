@@ -8,6 +8,7 @@
 #include <map>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "../app_config.hpp"
@@ -48,9 +49,12 @@ bool parse_shard(const std::string &text, size_t &k, size_t &n) {
 // sweep's "program": the case study's plain loop); false after saying
 // that the build makes no such program.
 bool select_program(const Sweep &s, const std::string &program, SweepTrial &t) {
-    // The native build's programs are shared objects beside the app's.
-    const std::string native = t.firmware.extension() == ".so" && fs::path(program).extension() != ".so" ? ".so" : "";
-    fs::path file = t.firmware.parent_path() / (program + native);
+    // The native build's programs are shared objects beside the app's, the
+    // QEMU build's e-puck2 images.
+    const fs::path image = t.firmware.extension();
+    const std::string suffix =
+        (image == ".so" || image == ".elf") && fs::path(program).extension() != image ? image.string() : "";
+    fs::path file = t.firmware.parent_path() / (program + suffix);
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
         report(s.file.string() + ": \"program\": the app's build made no " + file.string() +
@@ -62,6 +66,32 @@ bool select_program(const Sweep &s, const std::string &program, SweepTrial &t) {
     t.firmware = file;
     t.firmware_hash = file_fingerprint(file);
     return true;
+}
+
+// The build a point's world's "fidelity" runs: the exact mode's image (an
+// e-puck's host program), the native mode's shared object, or an e-puck's
+// e-puck2 image under QEMU; nullopt after saying why a point cannot have it.
+std::optional<Variant> fidelity_variant(const Sweep &s, const AppConfig &config, size_t point) {
+    const json world = point_world(s, point, 0);
+    const std::string fidelity = world.value("fidelity", "exact");
+    if (fidelity == "native") return Variant::native;
+    if (fidelity != "qemu") return Variant::release;
+    if (config.port != "epuck_world" || world.value("robot", "kilobot") != "epuck") {
+        report(s.file.string() + ": \"fidelity\": \"qemu\" (" + point_label(s, point) + ") runs e-pucks' e-puck2 "
+               "images under QEMU, and " + s.app.string() + " is a " + config.port + " app in a world of " +
+               world.value("robot", "kilobot") + "s: a Kilobot app's sweep takes \"exact\" (simavr) and "
+               "\"native\"; drop \"qemu\" from the file's \"fidelity\" values");
+        exit_code = EXIT_USAGE;
+        return std::nullopt;
+    }
+    if (!find_program("qemu-system-arm")) {
+        report(s.file.string() + ": \"fidelity\": \"qemu\" (" + point_label(s, point) + ") runs the robots in "
+               "QEMU, and qemu-system-arm was not found: sudo apt-get install qemu-system-arm (or OpenSwarm's "
+               "./setup.sh)");
+        exit_code = EXIT_FAILED;
+        return std::nullopt;
+    }
+    return Variant::qemu;
 }
 
 // The app built once for each fidelity its points run in (the exact
@@ -85,19 +115,19 @@ bool build_images(const Sweep &s, const Paths &paths, std::vector<SweepTrial> &t
         exit_code = EXIT_USAGE;
         return false;
     }
-    using Build = std::pair<bool, ParameterValues>; // native, the parameters
+    using Build = std::pair<Variant, ParameterValues>; // the fidelity's build, the parameters
     std::vector<Build> of_point(s.points.size());
     for (size_t p = 0; p < s.points.size(); p++) {
-        json world = point_world(s, p, 0);
-        of_point[p] = {world.contains("fidelity") && world["fidelity"] == "native", point_parameters(s, p)};
+        auto variant = fidelity_variant(s, config, p);
+        if (!variant) return false;
+        of_point[p] = {*variant, point_parameters(s, p)};
     }
     std::map<Build, std::pair<fs::path, std::string>> built; // the image and its fingerprint
     for (SweepTrial &t : trials) {
         const Build &b = of_point[t.point];
         auto it = built.find(b);
         if (it == built.end()) {
-            auto image = build_app(paths, s.app, "", Progress::brief, b.first ? Variant::native : Variant::release,
-                                   false, b.second);
+            auto image = build_app(paths, s.app, "", Progress::brief, b.first, false, b.second);
             if (!image) return false;
             it = built.emplace(b, std::make_pair(image->image, file_fingerprint(image->image))).first;
         }

@@ -118,8 +118,8 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
                                      (t.dir / "world.json").string(), "--out", t.dir.string()};
     // e-pucks' controllers print to the simulator's standard error; the
     // console's CSV is the Kilobots' (openswarm-sim refuses it beside e-pucks).
-    if (!point.contains("robot") || point["robot"] != "epuck")
-        command.insert(command.end(), {"--console-csv", (t.dir / "console.csv").string()});
+    const bool epucks = point.value("robot", "") == "epuck";
+    if (!epucks) command.insert(command.end(), {"--console-csv", (t.dir / "console.csv").string()});
     for (const std::string &option : s.video.arguments(t.trial)) command.push_back(option);
     command.push_back(t.firmware.string());
     std::string output;
@@ -128,7 +128,11 @@ void run_sweep_trial(const Sweep &s, const fs::path &simulator, SweepTrial &t) {
     if (status != 0) {
         t.refused = status == 2;
         std::string said = tail(output, 12);
-        t.failure = (status == 2 ? "the simulator refused the trial's world.json" : simulator_failure(status)) +
+        // An e-puck world's 3 is a controller (a program, or QEMU) that
+        // ended, hung or answered nonsense, not a crashed Kilobot firmware.
+        t.failure = (status == 2              ? "the simulator refused the trial's world.json"
+                     : status == 3 && epucks ? "an e-puck's controller failed (the simulator says which and how)"
+                                             : simulator_failure(status)) +
                     (said.empty() ? "" : ":\n" + said);
     } else {
         measure(s, t);

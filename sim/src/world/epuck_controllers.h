@@ -1,6 +1,7 @@
 /* Copyright (c) 2026 The OpenSwarm authors. GPLv3 or later: links libsimavr (see sim/COPYING). */
 /* Where a world's e-puck controllers run, as the world's steps see them
- * (epuck_run.c): one host process each over a pipe (epuck_pipes.c), or
+ * (epuck_run.c): one host process each over a pipe (epuck_pipes.c: a
+ * program, or QEMU running an e-puck2 image), or
  * all in the simulator's process in the native mode
  * (native/native_epuck.c). Either way a step is the same exchange: every
  * robot's inputs, the step run, every robot's answer. */
@@ -30,5 +31,7 @@ typedef struct epuck_controllers {
 } epuck_controllers;
 
 extern const epuck_controllers epuck_pipes;
+/* The same, each controller an e-puck2 image run by QEMU ("fidelity": "qemu"). */
+extern const epuck_controllers epuck_qemu;
 
 #endif

@@ -144,7 +144,35 @@ static int failed(epuck_link *l, int io, int writing) {
     return -1;
 }
 
-int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_world_output *first) {
+int epuck_link_is_epuck2_image(const char *path) {
+    unsigned char header[20];
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) return 0;
+    size_t n = fread(header, 1, sizeof header, f);
+    fclose(f);
+    /* ELF, 32-bit, little-endian, e_machine (at 18) EM_ARM = 40 */
+    return n == sizeof header && memcmp(header, "\177ELF\1\1", 6) == 0 && header[18] == 40 && header[19] == 0;
+}
+
+/* In the controller's child: QEMU running the e-puck2 image (board world)
+ * with the link on its standard input and output through semihosting, the
+ * robot's index as its --id, its console appended to our standard error
+ * (appended: a log file there is not truncated), every instruction 8 ns
+ * of virtual time (-icount), as docs/world.md's script runs it. Returns
+ * only if QEMU cannot be run, after saying how to install it. */
+static void exec_qemu(const char *image, int index) {
+    char semihosting[96];
+    snprintf(semihosting, sizeof semihosting, "enable=on,target=native,arg=app,arg=--id=%d", index);
+    execlp("qemu-system-arm", "qemu-system-arm", "-M", "netduinoplus2", "-display", "none", "-monitor", "none",
+           "-chardev", "file,id=console,path=/dev/stderr,append=on", "-serial", "chardev:console",
+           "-semihosting-config", semihosting, "-icount", "shift=3,align=off,sleep=off", "-kernel", image,
+           (char *)NULL);
+    fprintf(stderr, "openswarm-sim: cannot run qemu-system-arm for robot %d's e-puck2 image %s: %s: sudo "
+                    "apt-get install qemu-system-arm\n", index, image, strerror(errno));
+    _exit(127);
+}
+
+int epuck_link_start(epuck_link *l, const char *controller, int under_qemu, int index, epuck_world_output *first) {
     int down[2], up[2];
     l->index = index;
     l->controller = controller;
@@ -164,6 +192,7 @@ int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_wor
         char id[16]; /* the robot's robot_id() (ports/epuck/host/src/robot_world.c) */
         snprintf(id, sizeof id, "%d", index);
         setenv("OPENSWARM_ROBOT_ID", id, 1);
+        if (under_qemu) exec_qemu(controller, index);
         execl(controller, controller, (char *)NULL);
         fprintf(stderr, "openswarm-sim: cannot run %s: %s\n", controller, strerror(errno));
         _exit(127);

@@ -29,9 +29,13 @@ typedef struct epuck_link {
  * number of seconds in (0, 86400]. */
 int epuck_link_wait_from_environment(void);
 
-/* Start the controller for robot index and read its first answer; -1
- * after a message naming the controller and what went wrong. */
-int epuck_link_start(epuck_link *l, const char *controller, int index, epuck_world_output *first);
+/* Whether the file is an e-puck2 image (a 32-bit ARM ELF), which runs
+ * under QEMU, not as a program of the host's. */
+int epuck_link_is_epuck2_image(const char *path);
+/* Start the controller for robot index (under_qemu: the e-puck2 image
+ * controller in QEMU) and read its first answer; -1 after a message
+ * naming the controller and what went wrong. */
+int epuck_link_start(epuck_link *l, const char *controller, int under_qemu, int index, epuck_world_output *first);
 /* One exchange's halves: the input (and pixels when it carries a frame),
  * then the answer. -1 after a message (the process ended, said nonsense
  * or did not move within the wait: then it is killed). */

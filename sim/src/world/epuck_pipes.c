@@ -11,7 +11,8 @@
 static epuck_link *links;
 static int n_links;
 
-static int start(const options *o, int n, epuck_world_output *first) {
+/* Each controller a program, or each an e-puck2 image in QEMU. */
+static int start_them(const options *o, int n, int under_qemu, epuck_world_output *first) {
     links = calloc(n ? (size_t)n : 1, sizeof *links);
     if (links == NULL) {
         fprintf(stderr, "openswarm-sim: out of memory for %d e-pucks\n", n);
@@ -19,9 +20,13 @@ static int start(const options *o, int n, epuck_world_output *first) {
     }
     n_links = n;
     for (int i = 0; i < n; i++)
-        if (epuck_link_start(&links[i], o->robot_elf[i], i, &first[i]) != 0) return -1;
+        if (epuck_link_start(&links[i], o->robot_elf[i], under_qemu, i, &first[i]) != 0) return -1;
     return 0;
 }
+
+static int start(const options *o, int n, epuck_world_output *first) { return start_them(o, n, 0, first); }
+
+static int start_in_qemu(const options *o, int n, epuck_world_output *first) { return start_them(o, n, 1, first); }
 
 static int send(int i, uint32_t t_ms, const epuck_world_input *in, const uint16_t *pixels) {
     links[i].t_ms = (int32_t)t_ms;
@@ -45,3 +50,4 @@ static int stop(void) {
 }
 
 const epuck_controllers epuck_pipes = {start, send, receive, stop, NULL};
+const epuck_controllers epuck_qemu = {start_in_qemu, send, receive, stop, NULL};

@@ -88,16 +88,22 @@ void Reader::robot_kind(const Node &n) {
     }
 }
 
-/* "exact": the firmware's ELF in simavr; "native": the app built for the
- * host (openswarm build --native), by the thousand. */
+/* "exact": the firmware's ELF in simavr (an e-puck's host program);
+ * "native": the app built for the host (openswarm build --native), by the
+ * thousand; "qemu": an e-puck's e-puck2 image under QEMU. */
 int Reader::fidelity(const Node &n) {
     const std::string ex = "\"fidelity\": \"native\"";
-    if (!n->is_string()) fail(n, "expected \"exact\" or \"native\", found " + found(*n) + "; e.g. " + ex);
+    if (!n->is_string()) fail(n, "expected \"exact\", \"native\" or \"qemu\", found " + found(*n) + "; e.g. " + ex);
     std::string f = n->get<std::string>();
     if (f == "native") return WORLD_FIDELITY_NATIVE;
+    if (f == "qemu" && kind_ != WORLD_ROBOT_EPUCK)
+        fail(n, "\"qemu\" runs e-puck2 images, and this is a world of Kilobots: give \"robot\": \"epuck\" "
+                "with images built by `openswarm build --qemu`, or \"exact\" or \"native\" for Kilobots");
+    if (f == "qemu") return WORLD_FIDELITY_QEMU;
     if (f != "exact")
-        fail(n, "unknown fidelity " + quote(f) + "; known: exact (the firmware in simavr), native (the app "
-                "built for the host)" + openswarm::did_you_mean(f, {"exact", "native"}, '"'));
+        fail(n, "unknown fidelity " + quote(f) + "; known: exact (the firmware in simavr, an e-puck's host "
+                "program), native (the app built for the host), qemu (an e-puck's e-puck2 image under QEMU)" +
+                    openswarm::did_you_mean(f, {"exact", "native", "qemu"}, '"'));
     return WORLD_FIDELITY_EXACT;
 }
 

@@ -15,6 +15,7 @@
 
 #include "interrupt.h"
 #include "output/output.h"
+#include "world/epuck_link.h"
 #include "world/epuck_run.h"
 #include "native/native_epuck.h"
 #include "native/native_load.h"
@@ -368,9 +369,28 @@ int world_run_is_native(void) { return spec.fidelity == WORLD_FIDELITY_NATIVE; }
 
 /* The native mode when the controller is a native robot (as for
  * Kilobots, whatever the world says); a world that asks for it refuses
- * controllers built for the pipe mode. NULL after a message. */
+ * controllers built for the pipe mode. "qemu" runs e-puck2 images in
+ * QEMU, and only those; the pipe mode refuses one. NULL after a message. */
 static const epuck_controllers *controllers_for(const options *o) {
     if (o->robots > 0 && native_is_robot(o->robot_elf[0])) return &native_epucks;
+    int images = 1;
+    for (int i = 0; i < o->robots; i++) {
+        if (epuck_link_is_epuck2_image(o->robot_elf[i])) continue;
+        images = 0;
+        if (spec.fidelity != WORLD_FIDELITY_QEMU) break;
+        fprintf(stderr, "openswarm-sim: %s asks for \"fidelity\": \"qemu\", and robot %d's controller %s "
+                        "is not an e-puck2 image (an ARM ELF): give the app's image for the world "
+                        "(`openswarm build --qemu`: build/epuck_world-qemu/<app>.elf), or drop \"fidelity\" "
+                        "from the world to run a host program\n", spec.path, i, o->robot_elf[i]);
+        return NULL;
+    }
+    if (spec.fidelity == WORLD_FIDELITY_QEMU) return &epuck_qemu;
+    if (o->robots > 0 && images) {
+        fprintf(stderr, "openswarm-sim: %s is an e-puck2 image, which runs under QEMU: give the world "
+                        "\"fidelity\": \"qemu\", or the app's host program (`openswarm build`: "
+                        "build/epuck_world/<app>)\n", o->robot_elf[0]);
+        return NULL;
+    }
     if (spec.fidelity != WORLD_FIDELITY_NATIVE) return &epuck_pipes;
     fprintf(stderr, "openswarm-sim: %s asks for \"fidelity\": \"native\", and %s is a controller "
                     "for the pipe mode (a program): give the app built for the host's native mode "

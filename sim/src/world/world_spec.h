@@ -41,7 +41,9 @@
 enum { WORLD_ROBOT_KILOBOT = 0, WORLD_ROBOT_EPUCK = 1 };
 /* How they run: their firmware in simavr (exact), or their app built for
  * the host (native: docs/world.md, "Native mode"). */
-enum { WORLD_FIDELITY_EXACT = 0, WORLD_FIDELITY_NATIVE = 1 };
+/* qemu: an e-puck world's controllers are e-puck2 images, each run by
+ * QEMU (epuck_link.c). */
+enum { WORLD_FIDELITY_EXACT = 0, WORLD_FIDELITY_NATIVE = 1, WORLD_FIDELITY_QEMU = 2 };
 
 typedef struct world_point {
     double x, y;
