@@ -37,6 +37,7 @@ constexpr double EPUCK_MM_PER_STEP = 3.14159265358979323846 * 41.0 / 1000.0;
 constexpr double EPUCK_AXLE_MM = 53.0;
 constexpr double CONTACT_FRICTION = 0.3; /* body against body */
 constexpr int VELOCITY_ITERATIONS = 8, POSITION_ITERATIONS = 3;
+constexpr double EDGE_PIECE_MM = 200.0; /* walls and obstacles' sides: add_outline */
 constexpr double PI = 3.14159265358979323846;
 
 b2Vec2 to_units(world_point p) { return b2Vec2(float(p.x / MM_PER_UNIT), float(p.y / MM_PER_UNIT)); }
@@ -93,13 +94,25 @@ EdgeKey edge_key(world_point a, world_point b) {
  * copies: 2.7 GB, then a crash in b2BroadPhase; issue 30). */
 void add_outline(b2Body *ground, const world_point *v, int n, std::set<EdgeKey> &added) {
     for (int i = 0; i < n; i++) {
-        if (!added.insert(edge_key(v[i], v[(i + 1) % n])).second) continue;
-        b2EdgeShape edge;
-        edge.SetTwoSided(to_units(v[i]), to_units(v[(i + 1) % n]));
-        b2FixtureDef f;
-        f.shape = &edge;
-        f.friction = float(CONTACT_FRICTION);
-        ground->CreateFixture(&f);
+        world_point a = v[i], b = v[(i + 1) % n];
+        if (!added.insert(edge_key(a, b)).second) continue;
+        /* In pieces of at most EDGE_PIECE_MM: an arena's wall as one edge
+         * has a box as large as the arena in Box2D's broad-phase tree,
+         * which every query for a moving robot then descends into
+         * (docs/world.md, "Physics"). Collinear pieces of a two-sided
+         * edge hold a disc as the whole edge does. */
+        int pieces = int(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / EDGE_PIECE_MM));
+        if (pieces < 1) pieces = 1;
+        for (int k = 0; k < pieces; k++) {
+            double from = double(k) / pieces, to = double(k + 1) / pieces;
+            b2EdgeShape edge;
+            edge.SetTwoSided(to_units({a.x + (b.x - a.x) * from, a.y + (b.y - a.y) * from}),
+                             to_units({a.x + (b.x - a.x) * to, a.y + (b.y - a.y) * to}));
+            b2FixtureDef f;
+            f.shape = &edge;
+            f.friction = float(CONTACT_FRICTION);
+            ground->CreateFixture(&f);
+        }
     }
 }
 
