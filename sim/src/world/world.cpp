@@ -236,8 +236,11 @@ bool touches_a_body(b2Body *body) {
 void walk(world &w, Robot &r, const kilobot_twist &twist) {
     const bool still = twist.forward_mm_s == 0 && twist.left_mm_s == 0 && twist.turn_rad_s == 0;
     if (still && !r.body->IsAwake()) return;
-    double angle = r.body->GetAngle();
-    double c = std::cos(angle), s = std::sin(angle);
+    /* The heading's sine and cosine as Box2D keeps them for the body
+     * (floats), not computed again from its angle in doubles: a third of
+     * walk's work. */
+    const b2Rot &heading = r.body->GetTransform().q;
+    double c = heading.c, s = heading.s;
     b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
              float((twist.forward_mm_s * s + twist.left_mm_s * c) / MM_PER_UNIT));
     if (!touches_a_body(r.body)) {
