@@ -9,7 +9,8 @@
  * friction joint to a massless carrier that moves as the motors would walk
  * the robot: the joint pulls the robot along with at most the force its
  * legs can put on the floor (its weight times the leg friction), in the
- * same solver as the contacts. In free space it walks at the motors'
+ * same solver as the contacts (touching nothing, it is moved as the joint
+ * alone would move it: walk). In free space it walks at the motors'
  * speed; a wall stops it, a light object is pushed at nearly its speed, a
  * heavy one may not budge. */
 #include "world/world.h"
