@@ -9,7 +9,8 @@
  * friction joint to a massless carrier that moves as the motors would walk
  * the robot: the joint pulls the robot along with at most the force its
  * legs can put on the floor (its weight times the leg friction), in the
- * same solver as the contacts. In free space it walks at the motors'
+ * same solver as the contacts (touching nothing, it is moved as the joint
+ * alone would move it: walk). In free space it walks at the motors'
  * speed; a wall stops it, a light object is pushed at nearly its speed, a
  * heavy one may not budge. */
 #include "world/world.h"
@@ -37,6 +38,7 @@ constexpr double EPUCK_MM_PER_STEP = 3.14159265358979323846 * 41.0 / 1000.0;
 constexpr double EPUCK_AXLE_MM = 53.0;
 constexpr double CONTACT_FRICTION = 0.3; /* body against body */
 constexpr int VELOCITY_ITERATIONS = 8, POSITION_ITERATIONS = 3;
+constexpr double EDGE_PIECE_MM = 200.0; /* walls and obstacles' sides: add_outline */
 constexpr double PI = 3.14159265358979323846;
 
 b2Vec2 to_units(world_point p) { return b2Vec2(float(p.x / MM_PER_UNIT), float(p.y / MM_PER_UNIT)); }
@@ -44,6 +46,8 @@ b2Vec2 to_units(world_point p) { return b2Vec2(float(p.x / MM_PER_UNIT), float(p
 struct Robot {
     b2Body *body = nullptr;
     b2Body *carrier = nullptr; /* kinematic, no shape: where the legs would take it */
+    b2Joint *legs = nullptr;   /* to the carrier, while something is near (walk) */
+    float grip_force = 0, grip_torque = 0; /* the most the legs put on the floor */
     kilobot_motors_model motors{};
     kilobot_motor motor[2]{};
     int16_t wheel_steps[2]{}; /* an e-puck's: steps/s, left and right */
@@ -93,13 +97,25 @@ EdgeKey edge_key(world_point a, world_point b) {
  * copies: 2.7 GB, then a crash in b2BroadPhase; issue 30). */
 void add_outline(b2Body *ground, const world_point *v, int n, std::set<EdgeKey> &added) {
     for (int i = 0; i < n; i++) {
-        if (!added.insert(edge_key(v[i], v[(i + 1) % n])).second) continue;
-        b2EdgeShape edge;
-        edge.SetTwoSided(to_units(v[i]), to_units(v[(i + 1) % n]));
-        b2FixtureDef f;
-        f.shape = &edge;
-        f.friction = float(CONTACT_FRICTION);
-        ground->CreateFixture(&f);
+        world_point a = v[i], b = v[(i + 1) % n];
+        if (!added.insert(edge_key(a, b)).second) continue;
+        /* In pieces of at most EDGE_PIECE_MM: an arena's wall as one edge
+         * has a box as large as the arena in Box2D's broad-phase tree,
+         * which every query for a moving robot then descends into
+         * (docs/world.md, "Physics"). Collinear pieces of a two-sided
+         * edge hold a disc as the whole edge does. */
+        int pieces = int(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / EDGE_PIECE_MM));
+        if (pieces < 1) pieces = 1;
+        for (int k = 0; k < pieces; k++) {
+            double from = double(k) / pieces, to = double(k + 1) / pieces;
+            b2EdgeShape edge;
+            edge.SetTwoSided(to_units({a.x + (b.x - a.x) * from, a.y + (b.y - a.y) * from}),
+                             to_units({a.x + (b.x - a.x) * to, a.y + (b.y - a.y) * to}));
+            b2FixtureDef f;
+            f.shape = &edge;
+            f.friction = float(CONTACT_FRICTION);
+            ground->CreateFixture(&f);
+        }
     }
 }
 
@@ -146,35 +162,94 @@ void add_object(world &w, const world_object &o) {
 }
 
 /* The legs (a Kilobot's) or wheels (an e-puck's): a friction joint
- * between the robot and its carrier, at most the grip they have. */
+ * between the robot and its carrier, at most the grip they have, anchored
+ * at both centres. It is in the solver only while the robot has something
+ * near (walk); the carrier too, which is otherwise left out (disabled). */
+void attach_legs(world &w, Robot &r) {
+    b2FrictionJointDef legs;
+    legs.bodyA = r.body;
+    legs.bodyB = r.carrier;
+    legs.maxForce = r.grip_force;
+    legs.maxTorque = r.grip_torque;
+    r.carrier->SetEnabled(true);
+    r.legs = w.physics.CreateJoint(&legs);
+}
+
+void detach_legs(world &w, Robot &r) {
+    w.physics.DestroyJoint(r.legs);
+    r.legs = nullptr;
+    r.carrier->SetEnabled(false);
+}
+
 void add_legs(world &w, Robot &r, double friction, double mass_kg, double radius_mm) {
     b2BodyDef def;
     def.type = b2_kinematicBody;
-    def.position = r.body->GetPosition();
-    def.angle = r.body->GetAngle();
+    def.enabled = false;
     r.carrier = w.physics.CreateBody(&def);
-    double force = friction * mass_kg * GRAVITY;
-    b2FrictionJointDef legs;
-    legs.Initialize(r.body, r.carrier, r.body->GetPosition());
-    legs.maxForce = float(force);
-    legs.maxTorque = float(force * radius_mm / MM_PER_UNIT);
-    w.physics.CreateJoint(&legs);
+    r.grip_force = float(friction * mass_kg * GRAVITY);
+    r.grip_torque = float(friction * mass_kg * GRAVITY * radius_mm / MM_PER_UNIT);
+}
+
+/* A robot with nothing near: what its legs' joint alone does in the
+ * solver, without the solver. The joint's impulse takes the robot's
+ * velocity to the carrier's, clamped at the grip times the step (Box2D's
+ * b2FrictionJoint: linear by length, angular by size; one iteration
+ * reaches it, anchored at the centres), and Box2D then only moves it. */
+void walk_free(Robot &r, b2Vec2 v, float turn) {
+    b2Body *body = r.body;
+    const float dt = float(WORLD_STEP_S);
+    b2Vec2 dv = v - body->GetLinearVelocity();
+    const float reach = r.grip_force * dt / body->GetMass();
+    if (dv.LengthSquared() > reach * reach) {
+        dv.Normalize();
+        dv *= reach;
+    }
+    const float turn_reach = r.grip_torque * dt / body->GetInertia();
+    const float dw = b2Clamp(turn - body->GetAngularVelocity(), -turn_reach, turn_reach);
+    body->SetLinearVelocity(body->GetLinearVelocity() + dv);
+    body->SetAngularVelocity(body->GetAngularVelocity() + dw);
+}
+
+/* Whether Box2D's next step finds the robot touching a body: its
+ * contacts (the bodies within Box2D's margin of it) evaluated where the
+ * bodies stand, as the step's collision pass evaluates them. */
+bool touches_a_body(b2Body *body) {
+    for (b2ContactEdge *edge = body->GetContactList(); edge != nullptr; edge = edge->next) {
+        b2Contact *contact = edge->contact;
+        b2Manifold manifold;
+        contact->Evaluate(&manifold, contact->GetFixtureA()->GetBody()->GetTransform(),
+                          contact->GetFixtureB()->GetBody()->GetTransform());
+        if (manifold.pointCount > 0) return true;
+    }
+    return false;
 }
 
 /* Move the carrier as the motors would move the robot. Only its velocity
- * counts: the joint holds both bodies at their centres (add_legs), so the
- * carrier's place and angle never enter the solver, and it is not put on
- * the robot each step (a SetTransform, a sincosf, per robot and step). A
- * robot whose motors are off is left to the solver: once it has been at
+ * counts: the joint holds both bodies at their centres (attach_legs), so
+ * the carrier's place and angle never enter the solver, and it is not put
+ * on the robot each step (a SetTransform, a sincosf, per robot and step).
+ * A robot whose motors are off is left to the solver: once it has been at
  * rest for Box2D's half second it sleeps and costs nothing per step until
- * its motors start or something pushes it - most of a settled swarm. */
-void walk(Robot &r, const kilobot_twist &twist) {
+ * its motors start or something pushes it - most of a settled swarm.
+ * A robot that touches nothing in this step walks without the joint
+ * (walk_free): the same motion, without the joint's share of the solver
+ * (a quarter of the physics' work at a thousand packed robots). */
+void walk(world &w, Robot &r, const kilobot_twist &twist) {
     const bool still = twist.forward_mm_s == 0 && twist.left_mm_s == 0 && twist.turn_rad_s == 0;
     if (still && !r.body->IsAwake()) return;
-    double angle = r.body->GetAngle();
-    double c = std::cos(angle), s = std::sin(angle);
+    /* The heading's sine and cosine as Box2D keeps them for the body
+     * (floats), not computed again from its angle in doubles: a third of
+     * walk's work. */
+    const b2Rot &heading = r.body->GetTransform().q;
+    double c = heading.c, s = heading.s;
     b2Vec2 v(float((twist.forward_mm_s * c - twist.left_mm_s * s) / MM_PER_UNIT),
              float((twist.forward_mm_s * s + twist.left_mm_s * c) / MM_PER_UNIT));
+    if (!touches_a_body(r.body)) {
+        if (r.legs != nullptr) detach_legs(w, r);
+        walk_free(r, v, float(twist.turn_rad_s));
+        return;
+    }
+    if (r.legs == nullptr) attach_legs(w, r);
     r.carrier->SetLinearVelocity(v);
     r.carrier->SetAngularVelocity(float(twist.turn_rad_s));
     if (!still) r.body->SetAwake(true);
@@ -243,6 +318,10 @@ world *world_create(const world_spec *spec) {
         r.body->GetUserData().pointer = tag(TAG_ROBOT, i);
         add_legs(*w, r, epuck ? EPUCK_WHEEL_FRICTION : LEG_FRICTION, mass, radius);
     }
+    /* A step of no time only finds the new bodies' contacts (Box2D finds
+     * them at its next step): a robot placed against another body then
+     * walks with its legs' joint from the first step (walk). */
+    w->physics.Step(0.0f, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
     return w.release();
 }
 
@@ -285,7 +364,7 @@ void world_step_prepare(world *w, double t, unsigned slot, int share, int shares
 }
 
 void world_step_bodies(world *w, unsigned slot) {
-    for (Robot &r : w->robots) walk(r, r.twist[slot]);
+    for (Robot &r : w->robots) walk(*w, r, r.twist[slot]);
     w->physics.Step(float(WORLD_STEP_S), VELOCITY_ITERATIONS, POSITION_ITERATIONS);
 }
 
