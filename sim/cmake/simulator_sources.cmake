@@ -17,9 +17,9 @@ foreach(piece options options_usage options_outputs progress warning_groups writ
     board/firmware_symbols board/elf_check board/ihex_check board/power_cycle
     board/firmware_counters board/firmware_warnings board/handler_watch board/event_names board/code_place board/wide_memories board/thread_stacks board/stack_watch board/register_store_watch
     board/invalid_opcode
-    air/ir_channel air/ir_distance_error air/ir_frame air/ir_log air/overhead_controller air/ir_faults
-    faults/fault_plan faults/fault_log
-    world/placement world/world_random world/kilobot_motion world/kilobot_light world/world_run
+    air/ir_channel air/ir_receiver air/ir_distance_error air/ir_frame air/ir_log air/overhead_controller air/ir_faults
+    faults/fault_spec faults/fault_plan faults/fault_log
+    world/placement world/world_random world/kilobot_motion world/kilobot_light world/world_refusals world/world_run
     world/world_stepper world/world_avr native/native_load native/native_apps native/native_swarm native/native_image_copy
     native/native_air native/native_ohc native/native_frame_faults native/native_faults native/native_counters native/native_askers native/native_handlers native/native_run world/epuck_sensors world/epuck_camera_noise world/epuck_link world/epuck_pipes world/epuck_run native/native_epuck
     tools/debug tools/profile tools/measure)

@@ -22,6 +22,24 @@ grep -q "^\[rank 0 .*OpenSwarm" mpi.log && grep -q "^\[rank 1 .*OpenSwarm" mpi.l
 grep -Eq "^6 of 6 trials ran in " mpi.log
 "$openswarm" experiment experiments/paper.json --trials 3 --duration 60 --out alone > alone.log
 cmp mpi/results.csv alone/results.csv
+# The summary table: each controller's largest cluster and compactness at
+# the end, the mean +- sample SD of its trials' last rows in results.csv.
+python3 - alone/results.csv alone.log <<'TABLE'
+import csv, statistics, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+end = max(float(r["time_s"]) for r in rows)
+table = open(sys.argv[2]).read()
+for name in sorted({r["controller"] for r in rows}):
+    last = [r for r in rows if r["controller"] == name and float(r["time_s"]) == end]
+    cluster = [100 * float(r["largest_cluster"]) for r in last]
+    compact = [float(r["compactness"]) for r in last]
+    line = next(l for l in table.splitlines() if l.startswith(name + "  "))
+    f = line[len(name):].replace("%", "").replace("+-", " ").split()
+    want = [statistics.mean(cluster), statistics.stdev(cluster), statistics.mean(compact), statistics.stdev(compact)]
+    got = [float(x) for x in f[2:6]]
+    if any(abs(g - w) > 0.06 for g, w in zip(got, want)):
+        sys.exit(f"FAILED: {name}'s row {line!r}: expected the end's mean +- SD {want}")
+TABLE
 
 # A trial that fails on rank 1 (slot = trial + controller: the second
 # controller's first trial) reaches rank 0 with its reason whole, newlines

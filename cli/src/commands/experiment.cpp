@@ -16,6 +16,7 @@
 #include "../duration_text.hpp"
 #include "../fingerprint.hpp"
 #include "../metrics/object_clusters.hpp"
+#include "../experiment_curves.hpp"
 #include "../experiment_plot.hpp"
 #include "../experiment_ranks.hpp"
 #include "../experiment_spec.hpp"
@@ -42,10 +43,6 @@ struct ExperimentOptions {
     double duration_s = 0;  // 0: the file's
     bool native = false;    // --native: as the file's "fidelity": "native"
     TrialVideo video;       // --video, --video-fps, --video-speed, --video-trials
-};
-
-struct Sample {
-    double time_s, cluster, compactness;
 };
 
 struct Job {
@@ -218,60 +215,12 @@ bool write_results(const Experiment &e, const std::vector<Job> &jobs, const fs::
 std::vector<ControllerCurves> curves_of(const Experiment &e, const std::vector<Job> &jobs) {
     std::vector<ControllerCurves> curves;
     for (size_t c = 0; c < e.controllers.size(); c++) {
-        ControllerCurves cc{e.controllers[c].name, {}, {}, {}, {}, {}};
-        std::vector<const Job *> mine;
+        std::vector<const std::vector<Sample> *> ran;
         for (const Job &j : jobs)
-            if (j.controller == c && j.failure.empty() && !j.samples.empty()) mine.push_back(&j);
-        size_t n = mine.empty() ? 0 : mine[0]->samples.size();
-        for (const Job *j : mine) n = std::min(n, j->samples.size());
-        for (size_t k = 0; k < n; k++) {
-            auto stats = [&](double Sample::*field, std::vector<double> &mean, std::vector<double> &sd) {
-                double sum = 0, squares = 0;
-                for (const Job *j : mine) sum += j->samples[k].*field;
-                double m = sum / (double)mine.size();
-                for (const Job *j : mine) squares += (j->samples[k].*field - m) * (j->samples[k].*field - m);
-                mean.push_back(m);
-                sd.push_back(mine.size() > 1 ? std::sqrt(squares / (double)(mine.size() - 1)) : 0.0);
-            };
-            cc.time_s.push_back(mine[0]->samples[k].time_s);
-            stats(&Sample::cluster, cc.cluster_mean, cc.cluster_sd);
-            stats(&Sample::compactness, cc.compact_mean, cc.compact_sd);
-        }
-        curves.push_back(cc);
+            if (j.controller == c && j.failure.empty() && !j.samples.empty()) ran.push_back(&j.samples);
+        curves.push_back(controller_curves(e.controllers[c].name, ran));
     }
     return curves;
-}
-
-// The value of a curve at the sample nearest time t.
-size_t nearest(const ControllerCurves &c, double t) {
-    size_t best = 0;
-    for (size_t k = 0; k < c.time_s.size(); k++)
-        if (std::fabs(c.time_s[k] - t) < std::fabs(c.time_s[best] - t)) best = k;
-    return best;
-}
-
-void print_table(const Experiment &e, const std::vector<ControllerCurves> &curves) {
-    double mid = e.reference_fraction >= 0 ? e.reference_time_s : e.duration_s / 2;
-    std::printf("\n%-16s %22s %22s %18s\n", "controller",
-                ("largest cluster " + duration_text(mid)).c_str(),
-                ("largest cluster " + duration_text(e.duration_s)).c_str(), "compactness end");
-    for (const auto &c : curves) {
-        if (c.time_s.empty()) {
-            std::printf("%-16s %22s\n", c.name.c_str(), "no trial ran");
-            continue;
-        }
-        size_t m = nearest(c, mid), end = c.time_s.size() - 1;
-        char a[40], b[40], d[40];
-        std::snprintf(a, sizeof a, "%.1f%% +- %.1f", c.cluster_mean[m] * 100, c.cluster_sd[m] * 100);
-        std::snprintf(b, sizeof b, "%.1f%% +- %.1f", c.cluster_mean[end] * 100, c.cluster_sd[end] * 100);
-        std::snprintf(d, sizeof d, "%.1f +- %.1f", c.compact_mean[end], c.compact_sd[end]);
-        std::printf("%-16s %22s %22s %18s\n", c.name.c_str(), a, b, d);
-    }
-    if (e.reference_fraction >= 0) {
-        char r[40];
-        std::snprintf(r, sizeof r, "%.1f%%", e.reference_fraction * 100);
-        std::printf("%-16s %22s   (%s)\n", "reference", r, e.reference_label.c_str());
-    }
 }
 
 // Every controller program must exist before hours of trials start.
@@ -340,7 +289,7 @@ int run_experiment(const ExperimentOptions &o, const Paths &paths, const Ranks &
     auto curves = curves_of(e, jobs);
     std::string why;
     bool written = write_results(e, jobs, out) && write_experiment_plot(e, curves, out, why);
-    print_table(e, curves);
+    print_experiment_table(e, curves);
     size_t failed = 0, not_run = 0;
     for (const Job &j : jobs)
         if (pending(j) || (j.failure.empty() && j.samples.empty())) {

@@ -14,12 +14,8 @@
  * format times (a bit is 33 us) and the same for every edge, so bit
  * timing is exact.
  *
- * Each receiver keeps its own queue of edges, served by one cycle timer:
- * simavr 1.6 has a pool of 64 timers per MCU, so one timer per sender and
- * edge ran out in swarms of 64. Edges to one receiver stay at least
- * EDGE_GAP cycles apart: simavr 1.6 updates the comparator a cycle after
- * its input changes, and a second change before that update replaces the
- * first: the pulse would vanish.
+ * Each receiver keeps its own queue of edges, served by one cycle timer
+ * (air/ir_receiver.h).
  *
  * The distance sensors (ADC0 high gain, ADC1 low gain) read what the
  * sender of the last flash gives at its distance: the firmware samples
@@ -33,23 +29,18 @@
  * (ir_channel_place, after every physics step in a world), into a spare
  * list swapped in: no allocation per step. A flash costs one step per
  * receiver in range. */
-#include <avr_acomp.h>
-#include <avr_adc.h>
 #include <avr_ioport.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sim_cycle_timers.h>
 #include <sim_io.h>
 
 #include "sim.h"
 #include "air/ir_distance_error.h"
 #include "air/ir_faults.h"
+#include "air/ir_receiver.h"
 #include "lockstep.h"
 #include "world/world_random.h"
-
-#define AIN1_MV 500 /* the comparator's threshold */
-#define EDGE_GAP 8
 
 /* A sender and one receiver in its range. */
 typedef struct ir_link {
@@ -61,14 +52,6 @@ typedef struct ir_link {
     ir_link_faults faults;              /* --faults: pulses lost or added, the frame cut */
 } ir_link;
 
-/* An edge on its way to a receiver, at a cycle of the receiver's clock. */
-typedef struct ir_edge {
-    avr_cycle_count_t at;
-    uint32_t level; /* AIN0 millivolts */
-    uint32_t high_gain_mv, low_gain_mv;
-    int from, to;
-} ir_edge;
-
 /* A flash or its end, as the sender's LED did it. */
 typedef struct ir_sent {
     avr_cycle_count_t cycle;
@@ -78,7 +61,6 @@ typedef struct ir_sent {
 
 typedef struct ir_station {
     robot *robot;
-    avr_irq_t *ain0, *high_gain, *low_gain; /* its comparator and distance inputs */
     /* As sender: the receivers in range, by index, and this window's edges. */
     ir_link *links, *spare;
     int n_links, links_room, spare_room;
@@ -94,11 +76,8 @@ typedef struct ir_station {
     avr_cycle_count_t *rises;
     int n_rises, rises_room;
     int added_pending;
-    /* As receiver: edges due, in time order, from head on. */
-    ir_edge *queue;
-    int head, tail, queue_room;
-    avr_cycle_count_t next_free;
-    uint32_t sensed_high, sensed_low; /* last applied to ADC0 / ADC1 */
+    /* As receiver. */
+    ir_receiver receiver;
     uint64_t heard, lost_channel;     /* frames from robots in range: reached it, or lost on the way */
 } ir_station;
 
@@ -113,46 +92,11 @@ static ir_distance_error distance_error;
  * frame, pulses are at most 9 slots apart). */
 #define FRAME_GAP_CYCLES (12 * IR_BIT_CYCLES)
 
-static void *grow(void *items, int *room, int needed, size_t size) {
-    if (needed <= *room) return items;
-    int more = *room ? *room * 2 : 16;
-    while (more < needed) more *= 2;
-    void *bigger = realloc(items, (size_t)more * size);
-    if (bigger == NULL) {
-        fprintf(stderr, "openswarm-sim: out of memory for the IR channel\n");
-        exit(EXIT_CRASH);
-    }
-    *room = more;
-    return bigger;
-}
-
-static void apply(ir_station *s, const ir_edge *e) {
-    if (e->level != 0 && (s->sensed_high != e->high_gain_mv || s->sensed_low != e->low_gain_mv)) {
-        s->sensed_high = e->high_gain_mv;
-        s->sensed_low = e->low_gain_mv;
-        avr_raise_irq(s->high_gain, e->high_gain_mv);
-        avr_raise_irq(s->low_gain, e->low_gain_mv);
-    }
-    avr_raise_irq(s->ain0, e->level);
-}
-
-/* The receiver's timer: every edge due by now, then wait for the next. */
-static avr_cycle_count_t deliver(struct avr_t *avr, avr_cycle_count_t when, void *param) {
-    (void)when;
-    ir_station *s = param;
-    while (s->head < s->tail && s->queue[s->head].at <= avr->cycle) apply(s, &s->queue[s->head++]);
-    if (s->head == s->tail) {
-        s->head = s->tail = 0;
-        return 0;
-    }
-    return s->queue[s->head].at; /* the same timer, again then */
-}
-
 /* For --ir-log: "1, 2; lost at 2", the receivers the frame starting now
  * reaches and those it is lost at. */
 static void describe_reach(ir_station *from) {
     /* "; lost at ", then up to 7 characters a receiver in each list */
-    from->frame_reach = grow(from->frame_reach, &from->reach_room, 16 * from->n_links + 16, 1);
+    from->frame_reach = ir_grow(from->frame_reach, &from->reach_room, 16 * from->n_links + 16, 1);
     int used = 0;
     from->frame_reach[0] = '\0';
     for (int k = 0; k < from->n_links; k++)
@@ -205,7 +149,7 @@ static void tx_pin(struct avr_irq_t *irq, uint32_t value, void *param) {
         starts = draw_losses(from, sent);
     }
     if (from->n_links == 0) return;
-    from->outbox = grow(from->outbox, &from->out_room, from->n_out + 1, sizeof(ir_sent));
+    from->outbox = ir_grow(from->outbox, &from->out_room, from->n_out + 1, sizeof(ir_sent));
     from->outbox[from->n_out++] = (ir_sent){sent, value != 0, starts};
 }
 
@@ -228,7 +172,7 @@ static int by_receiver_then_time(const void *a, const void *b) {
 static void add_edge(const ir_station *from, const ir_link *l, avr_cycle_count_t cycle, int lit,
                      uint32_t latency) {
     const robot *to = stations[l->to].robot;
-    window_edges = grow(window_edges, &window_edges_room, n_window_edges + 1, sizeof(ir_edge));
+    window_edges = ir_grow(window_edges, &window_edges_room, n_window_edges + 1, sizeof(ir_edge));
     window_edges[n_window_edges++] = (ir_edge){
         on_clock_of(to, from->robot, cycle) + on_clock_of(to, stations[0].robot, latency),
         lit ? IR_LIT_MV : 0, l->high_gain_mv, l->low_gain_mv, (int)(from - stations), l->to};
@@ -239,7 +183,7 @@ static void add_edge(const ir_station *from, const ir_link *l, avr_cycle_count_t
 static void note_rise(ir_station *from, const ir_sent *sent) {
     if (!sent->lit) return;
     if (sent->starts_frame) from->n_rises = 0;
-    from->rises = grow(from->rises, &from->rises_room, from->n_rises + 1, sizeof(avr_cycle_count_t));
+    from->rises = ir_grow(from->rises, &from->rises_room, from->n_rises + 1, sizeof(avr_cycle_count_t));
     from->rises[from->n_rises++] = sent->cycle;
 }
 
@@ -301,27 +245,13 @@ static void collect(ir_station *from, uint32_t latency) {
     if (faults && from->added_pending) add_due_pulses(from, latency);
 }
 
-static void enqueue(ir_station *s, ir_edge e) {
-    if (s->robot->off_until != 0) return; /* powered off (--faults brownout): deaf */
-    lockstep_settle(s->robot); /* an edge due at once comes after the instruction it has reached */
-    avr_t *avr = s->robot->avr;
-    if (e.at <= avr->cycle) e.at = avr->cycle + 1;
-    if (e.at < s->next_free) e.at = s->next_free;
-    s->next_free = e.at + EDGE_GAP;
-    int idle = s->head == s->tail;
-    s->queue = grow(s->queue, &s->queue_room, s->tail + 1, sizeof(ir_edge));
-    s->queue[s->tail++] = e;
-    if (idle) avr_cycle_timer_register(avr, e.at - avr->cycle, deliver, s);
-    s->robot->doze_until = 0; /* a new timer: look at it again */
-}
-
 void ir_channel_hand_over(uint32_t latency_cycles) {
     n_window_edges = 0;
     for (int i = 0; i < n_stations; i++)
         if (stations[i].n_out != 0 || stations[i].added_pending) collect(&stations[i], latency_cycles);
     if (n_window_edges == 0) return;
     qsort(window_edges, (size_t)n_window_edges, sizeof(ir_edge), by_receiver_then_time);
-    for (int e = 0; e < n_window_edges; e++) enqueue(&stations[window_edges[e].to], window_edges[e]);
+    for (int e = 0; e < n_window_edges; e++) ir_receiver_enqueue(&stations[window_edges[e].to].receiver, window_edges[e]);
 }
 
 /* ADC readings (0..1023) a receiver gets from a sender d mm away: the high
@@ -345,7 +275,7 @@ static void link_sender(int s, ir_distance_fn distance, void *ctx) {
         if (j == s) continue;
         double mm = distance(s, j, ctx);
         if (mm > range_mm) continue;
-        from->spare = grow(from->spare, &from->spare_room, n + 1, sizeof(ir_link));
+        from->spare = ir_grow(from->spare, &from->spare_room, n + 1, sizeof(ir_link));
         ir_link *l = &from->spare[n++];
         l->to = j;
         l->mm = mm;
@@ -376,10 +306,7 @@ void ir_channel_place(ir_distance_fn distance, void *ctx) {
  * was sending stops where it was (its links' added pulses too). */
 void ir_channel_robot_reset(int index) {
     ir_station *s = &stations[index];
-    if (s->head != s->tail) avr_cycle_timer_cancel(s->robot->avr, deliver, s);
-    s->head = s->tail = 0;
-    s->next_free = 0;
-    s->sensed_high = s->sensed_low = 0;
+    ir_receiver_reset(&s->receiver);
     s->added_pending = 0;
     for (int k = 0; k < s->n_links; k++) s->links[k].faults.next_added = s->links[k].faults.n_added;
 }
@@ -411,13 +338,8 @@ void ir_channel_attach(robot *all, int n, int range, double loss, uint64_t loss_
         ir_station *s = &stations[i];
         s->robot = &all[i];
         s->loss_random = world_random_stream(loss_seed, (uint64_t)i);
-        avr_t *avr = all[i].avr;
-        s->ain0 = avr_io_getirq(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN0);
-        s->high_gain = avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC0);
-        s->low_gain = avr_io_getirq(avr, AVR_IOCTL_ADC_GETIRQ, ADC_IRQ_ADC1);
-        avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
+        avr_irq_register_notify(avr_io_getirq(all[i].avr, AVR_IOCTL_IOPORT_GETIRQ('B'), IOPORT_IRQ_PIN0),
                                 tx_pin, s);
-        avr_raise_irq(avr_io_getirq(avr, AVR_IOCTL_ACOMP_GETIRQ, ACOMP_IRQ_AIN1), AIN1_MV);
-        avr_raise_irq(s->ain0, 0);
+        ir_receiver_attach(&s->receiver, &all[i]);
     }
 }

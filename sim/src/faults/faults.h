@@ -4,7 +4,7 @@
  * calibration is blank, a robot's clock runs fast or slow. Every fault drawn is logged, one line each, and
  * counted for the run's summary.
  *
- * fault_plan.c reads the spec and fires the robots' resets and brown-outs
+ * fault_spec.c reads the spec; fault_plan.c fires the robots' resets and brown-outs
  * between windows, in either mode (a fault_robots says what they do to a
  * robot); air/ir_faults.c applies the IR faults as the exact mode's
  * channel hands edges over; board/power_cycle.c is what a reset and a
@@ -55,12 +55,13 @@ typedef struct fault_spec {
     const char *log_path;      /* --fault-log FILE; NULL: stderr */
 } fault_spec;
 
-/* fault_plan.c */
+/* fault_spec.c */
 /* One --faults argument, added to spec; -1 after a message. */
 int faults_parse(const char *text, fault_spec *spec);
 /* The checks that need the robots' count and the run's length (a fault
  * at a time after it would never be injected); -1 after a message. */
 int faults_check(const fault_spec *spec, int robots, double seconds);
+/* fault_plan.c */
 /* Draw the faults of n robots; open the log. -1 after a message. */
 int faults_start(const fault_spec *spec, int n);
 /* What a reset and a power cut do to the robots of a mode; cycles are of

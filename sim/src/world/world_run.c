@@ -21,6 +21,7 @@
 #include "native/native_load.h"
 #include "world/kilobot_light.h"
 #include "world/world.h"
+#include "world/world_refusals.h"
 #include "world/world_stepper.h"
 
 #define ROOM_TEMPERATURE_MV 314   /* the ATmega328P's sensor at 25 C (datasheet) */
@@ -55,27 +56,6 @@ static void *allocate(size_t n, size_t size) {
     return p;
 }
 
-/* Options a world sets itself: refused beside it, with where to set them. */
-static int refuse_beside_world(const options *o) {
-    static const struct {
-        unsigned bit;
-        const char *option, *instead;
-    } owned[] = {
-        {GIVEN_ROBOTS, "--robots", "robots[] (count, poses, grid)"},
-        {GIVEN_PLACEMENT, "--distance, --line and --positions", "robots[] (poses, region, grid)"},
-        {GIVEN_UID, "--uid", "robots[].uid"},
-        {GIVEN_CALIBRATION, "--calibration", "robots[].calibration"},
-        {GIVEN_LIGHT, "--light", "light.ambient_mv and light.sources"},
-    };
-    for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++) {
-        if (!(o->given & owned[i].bit)) continue;
-        fprintf(stderr, "openswarm-sim: %s: the world file %s sets this; drop the option and set "
-                        "%s there (docs/world.md)\n", owned[i].option, o->world, owned[i].instead);
-        return -1;
-    }
-    return 0;
-}
-
 /* Robots whose group names no firmware run the command line's ELFs: the
  * k-th such robot the k-th ELF, the last ELF the rest. */
 static int assign_firmware(options *o) {
@@ -107,56 +87,9 @@ static int assign_firmware(options *o) {
     return 0;
 }
 
-/* Every sample writes a row a robot and a row an object: at most
- * OUTPUT_MAX_ROWS of them, checked before the run. */
-static int sample_count_check(const options *o) {
-    double things = (double)spec.n_robots + spec.n_objects;
-    double samples = floor(o->seconds / spec.sample_period_s + 1e-9) + 1, rows = things * samples;
-    if (o->out_dir == NULL || rows <= OUTPUT_MAX_ROWS) return 0;
-    double bytes = samples * (spec.n_robots * 40.0 + spec.n_objects * 25.0); /* a row's text */
-    /* the shortest period that fits, rounded up to 3 significant digits */
-    double least = o->seconds / (floor(OUTPUT_MAX_ROWS / things) - 1), unit = pow(10, floor(log10(least)) - 2);
-    least = ceil(least / unit - 1e-9) * unit;
-    const char *kind = spec.robot_kind == WORLD_ROBOT_EPUCK ? "e-puck" : "robot";
-    char who[64] = "", objects[64] = "";
-    if (spec.n_robots > 0) snprintf(who, sizeof who, "%d %s%s", spec.n_robots, kind, spec.n_robots == 1 ? "" : "s");
-    if (spec.n_objects > 0)
-        snprintf(objects, sizeof objects, "%s%d object%s", who[0] ? " and " : "", spec.n_objects,
-                 spec.n_objects == 1 ? "" : "s");
-    fprintf(stderr, "openswarm-sim: --out %s: %s%s sampled every %g s for %g s make %.3g rows of "
-                    "trajectories.csv and objects.csv (about %.0f %s); at most %.0f are written: a "
-                    "sample_period_s of at least %g s in %s, a shorter run (--time or duration_s), or no --out\n",
-            o->out_dir, who, objects, spec.sample_period_s, o->seconds, rows,
-            bytes >= 1e9 ? bytes / 1e9 : bytes / 1e6, bytes >= 1e9 ? "GB" : "MB", OUTPUT_MAX_ROWS, least,
-            spec.path);
-    return -1;
-}
-
-/* e-pucks are host processes, not simulated MCUs (epuck_run.c): the
- * options that watch or drive a Kilobot's MCU, IR or overhead controller
- * are refused by name, not ignored. Checked before the world's own values
- * fill the options in. */
-static int refuse_kilobot_only(const options *o) {
-    const char *what = o->n_ohc ? "--ohc" : o->counters_period >= 0 ? "--counters"
-                     : o->ir_log ? "--ir-log" : (o->given & GIVEN_CLOCK_SPREAD) ? "--clock-spread"
-                     : (o->given & GIVEN_IR_RANGE) ? "--ir-range" : (o->given & GIVEN_IR_LOSS) ? "--ir-loss"
-                     : o->faults ? "--faults" : o->fault_log ? "--fault-log"
-                     : o->trace ? "--trace" : o->trace_csv ? "--trace-csv" : o->vcd ? "--vcd"
-                     : o->gdb_port ? "--gdb" : o->marks ? "--marks" : o->n_watched ? "--watch-irq"
-                     : o->profile ? "--profile" : o->main_stack ? "--main-stack"
-                     : o->timestamps ? "--timestamps" : o->charging ? "--charging"
-                     : o->voltage_mv >= 0 ? "--voltage" : o->temperature_mv >= 0 ? "--temperature"
-                     : o->expect_stop ? "--expect-stop" : NULL;
-    if (what == NULL) return 0;
-    fprintf(stderr, "openswarm-sim: %s: Kilobots only (their simulated MCU, IR or overhead controller), "
-                    "and %s holds e-pucks: drop %s (docs/world.md, \"e-pucks in the world\")\n",
-            what, o->world, what);
-    return -1;
-}
-
 int world_options_check(options *o) {
-    if (refuse_beside_world(o) != 0 || world_spec_load(o->world, &spec) != 0) return -1;
-    if (spec.robot_kind == WORLD_ROBOT_EPUCK && refuse_kilobot_only(o) != 0) return -1;
+    if (world_refuse_owned_options(o) != 0 || world_spec_load(o->world, &spec) != 0) return -1;
+    if (spec.robot_kind == WORLD_ROBOT_EPUCK && world_refuse_kilobot_only(o) != 0) return -1;
     o->robots = spec.n_robots;
     if (!(o->given & GIVEN_TIME) && spec.duration_s > 0) o->seconds = spec.duration_s;
     if (!(o->given & GIVEN_IR_RANGE) && spec.ir_range_mm > 0) o->ir_range_mm = spec.ir_range_mm;
@@ -183,7 +116,7 @@ int world_options_check(options *o) {
     output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
                           .ids = o->ids, .video_fps = o->video_fps, .video_speed = o->video_speed};
     if (o->out_dir != NULL && output_check(&out) != 0) return -1;
-    if (sample_count_check(o) != 0) return -1;
+    if (world_sample_count_check(o, &spec) != 0) return -1;
     int status = options_check_robots(o);
     o->uid = -1; /* each robot's comes from the world */
     if (status != 0) return -1;
