@@ -62,8 +62,9 @@ int run_app(RunOptions o, const Paths &paths) {
         out_given = !o.out.empty();
         if (!out_given)
             o.out = (fs::path(o.dir) / "out" / fs::path(o.world).stem()).lexically_normal().string();
-        o.native = o.native || world_fidelity(o.world) == "native";
-        qemu = !o.native && world_fidelity(o.world) == "qemu";
+        const std::string fidelity = world_fidelity(o.world);
+        o.native = o.native || fidelity == "native";
+        qemu = !o.native && fidelity == "qemu";
     }
     if (o.native && !native_options_usable(o)) return EXIT_USAGE;
     auto parameters = parameter_options(o.parameters);
