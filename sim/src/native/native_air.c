@@ -254,7 +254,7 @@ static int enqueue(deliveries *out, native_io *io, native_frame f) {
     unsigned at = io->inbox_count;
     for (unsigned k = 0; k < io->inbox_count; k++) {
         native_frame *g = &io->inbox[(io->inbox_head + k) % NATIVE_INBOX_ROOM];
-        if (g->start < f.end && f.start < g->end) g->broken = f.broken = NATIVE_FRAME_COLLIDED;
+        if (g->start < f.end && f.start < g->end) g->damage = f.damage = NATIVE_FRAME_COLLIDED;
         if (g->start > f.start && at == io->inbox_count) at = k;
     }
     for (unsigned k = io->inbox_count; k > at; k--)

@@ -153,8 +153,8 @@ int native_frame_faults_apply(int thread, int from, int to, uint64_t at, uint32_
     switch (replay(one, f->bytes, &first)) {
     case GONE: return -1;
     case WHOLE: break; /* its bytes as read: the receiver's CRC check judges them */
-    case COLLIDED: f->broken = NATIVE_FRAME_COLLIDED; break;
-    case BROKEN: f->broken = NATIVE_FRAME_BROKEN; break;
+    case COLLIDED: f->damage = NATIVE_FRAME_COLLIDED; break;
+    case BROKEN: f->damage = NATIVE_FRAME_BROKEN; break;
     }
     f->start += (uint64_t)first * IR_WIRE_BIT * to_hz / from_hz; /* its first pulse left */
     return 0;

@@ -51,7 +51,7 @@ typedef struct native_frame {
     uint64_t end;   /* its last slot: the frame is whole */
     uint8_t bytes[NATIVE_FRAME_BYTES];
     int16_t low_gain, high_gain; /* the ADC's readings at its header */
-    uint8_t broken;              /* enum native_frame_damage: the receiver drops it unless whole */
+    uint8_t damage;              /* enum native_frame_damage: the receiver drops it unless whole */
 } native_frame;
 
 /* What the receiver's decoder would make of a frame's pulses. */

@@ -76,7 +76,7 @@ void native_ir_interrupt(void) {
     memcpy(rx.frame, f->bytes, sizeof rx.frame);
     rx.low_gain = f->low_gain;
     rx.high_gain = f->high_gain;
-    int damage = f->broken;
+    int damage = f->damage;
     io->inbox_head = (io->inbox_head + 1u) % NATIVE_INBOX_ROOM;
     io->inbox_count--;
     if (damage == NATIVE_FRAME_COLLIDED)
