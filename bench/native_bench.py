@@ -2,7 +2,7 @@
 """The native mode: how fast, how much memory, and whether it agrees with
 the exact mode. Rewrites its section of docs/benchmarks.md.
 
-    python3 bench/native_bench.py [--seeds N] [--quick] [--speed-only]
+    python3 bench/native_bench.py [--seeds N] [--jobs J] [--quick] [--speed-only | --cross-only]
 
 Uses the build in build/ (cmake --build build first): openswarm-sim, the
 programs built natively by tests/native and for the AVR by tests/avr.
@@ -11,12 +11,14 @@ programs built natively by tests/native and for the AVR by tests/avr.
   real-time factor, robot-seconds per second, peak memory per robot;
   outputs at 1000 robots for 10 minutes: the time, and each file's size;
   cross-check: tests/native/crosscheck.py on disperse, orbit, phototaxis,
-  gradient and synchronisation, and on move_to_light with its light summed
-  in an `int` (16-bit on the robot: the modes must differ) and in a `long`,
-  seeds 1..N in each mode.
+  gradient and synchronisation, on frames heard in a crowd, and on
+  move_to_light with its light summed in an `int` (16-bit on the robot: the
+  modes must differ) and in a `long`, seeds 1..N (8) in each mode, J (1)
+  runs at a time.
 --quick leaves out 10 000 robots and the outputs; --speed-only measures the
 speed and keeps the page's cross-check table as it is (an hour of exact-mode
-runs on this machine: rerun it when the modes' behaviour may have changed).
+runs on this machine: rerun it when the modes' behaviour may have changed);
+--cross-only runs the cross-check alone and keeps the page's speed figures.
 """
 import json
 import math
@@ -98,20 +100,23 @@ CROSS = (("disperse", "disperse", "template_disperse.elf", "native_disperse.so",
          ("gradient", "gradient", "world_gradient.elf", "native_gradient.so", os.path.join(WORLDS, "gradient.json"), None),
          ("synchronisation", "synchronisation", "synchronise.elf", "native_synchronise.so",
           os.path.join(WORLDS, "synchronise.json"), None),
+         ("crowd reception", "reception", "world_distances.elf", "native_distances.so",
+          os.path.join(WORLDS, "distances.json"), None),
          ("move_to_light, `int` sum", "phototaxis", "move_to_light_int.elf", "native_move_to_light_int.so",
           os.path.join(WORLDS, "move_to_light.json"), None),
          ("move_to_light, `long` sum", "phototaxis", "move_to_light_long.elf", "native_move_to_light_long.so",
           os.path.join(WORLDS, "move_to_light.json"), None))
 
 
-def cross_rows(seeds):
+def cross_rows(seeds, jobs):
     rows = []
     for label, behaviour, elf, so, world, seconds in CROSS:
         out = os.path.join(OUT, "cross_" + so[len("native_"):-len(".so")])
+        started = time.monotonic()
         xs, ys, t, p = crosscheck.crosscheck(SIM, behaviour, os.path.join(AVR, elf), os.path.join(NATIVE, so),
-                                             world, out, seeds, seconds)
+                                             world, out, seeds, seconds, jobs)
         rows.append((label, behaviour, xs, ys, t, p))
-        print(rows[-1], file=sys.stderr)
+        print(f"{label}: p {p:.3f} ({time.monotonic() - started:.0f} s)", file=sys.stderr)
     return rows
 
 
@@ -135,8 +140,7 @@ def section(speed, outputs, cross, seeds, command):
         lines += ["", f"1000 robots for 10 minutes with the outputs (sample every 1 s, 2 threads): {wall:.0f} s; "
                   + ", ".join(f"{name} {size / 1e6:.1f} MB" for name, size in sizes.items()) + "."]
     if isinstance(cross, str):
-        lines += ["", "The cross-check below is kept from the last full run (this one measured the speed alone: "
-                  "`--speed-only`)."]
+        lines += ["", KEPT_CROSS]
     lines += ["", cross if isinstance(cross, str) else cross_table(cross, seeds)]
     lines += targets(speed)
     return "\n".join(lines)
@@ -150,7 +154,8 @@ def cross_table(cross, seeds):
              "|---|---|---:|---:|---:|---:|---|"]
     metric = {"disperse": "mean nearest-neighbour distance at 60 s, mm", "orbit": "mean distance off the 60 mm orbit, mm",
               "phototaxis": "final over starting distance to the lamp", "gradient": "time until every LED shows its hop count, s",
-              "synchronisation": "mean spread of a flash over the robots, second half, s"}
+              "synchronisation": "mean spread of a flash over the robots, second half, s",
+              "reception": "frames a robot heard in 20 s, 9 robots on a 40 mm grid, mean"}
     for label, behaviour, xs, ys, t, p in cross:
         (mx, sx), (my, sy) = mean_sd(xs), mean_sd(ys)
         diff = f"{(my - mx) / mx * 100:+.0f}%" if mx else f"{my - mx:+.2f}"
@@ -162,12 +167,36 @@ def cross_table(cross, seeds):
     return "\n".join(lines)
 
 
-def kept_cross_table():
-    """The page's cross-check table and its note, as the last full run left them."""
+KEPT_CROSS = ("The cross-check below is kept from the last full run (this one measured the speed alone: "
+              "`--speed-only`).")
+
+
+def page_section():
     with open(benchmarks_page.PAGE) as f:
         page = f.read()
-    start = page.index("### Cross-check against the exact mode", page.index(BEGIN))
-    return page[start:page.index("\n\nAgainst the issue's targets", start)]
+    return page[page.index(BEGIN):page.index(END) + len(END)]
+
+
+def kept_cross_table():
+    """The page's cross-check table and its note, as the last run left them."""
+    section = page_section()
+    start = section.index("### Cross-check against the exact mode")
+    return section[start:section.index("\n\nAgainst the issue's targets", start)]
+
+
+def cross_only_section(cross, seeds, command):
+    """The page's section with its speed figures kept and the cross-check
+    replaced by this run's, which says its own command and load."""
+    section = page_section()
+    old = kept_cross_table()
+    table = cross_table(cross, seeds).replace(
+        "each behaviour's metric over", f"`{command}`, load average {os.getloadavg()[0]:.1f} at the end: each "
+        "behaviour's metric over", 1)
+    for note in (KEPT_CROSS, "The cross-check below is from its own later run."):
+        section = section.replace("\n\n" + note, "")
+    speed_end = section.index("### Cross-check against the exact mode")
+    section = section[:speed_end] + "The cross-check below is from its own later run.\n\n" + section[speed_end:]
+    return section.replace(old, table)
 
 
 def targets(speed):
@@ -203,9 +232,14 @@ def main():
     quick = "--quick" in sys.argv
     speed_only = "--speed-only" in sys.argv
     seeds = int(sys.argv[sys.argv.index("--seeds") + 1]) if "--seeds" in sys.argv else 8
+    jobs = int(sys.argv[sys.argv.index("--jobs") + 1]) if "--jobs" in sys.argv else 1
+    if "--cross-only" in sys.argv:
+        command = f"python3 bench/native_bench.py --cross-only --seeds {seeds} --jobs {jobs}"
+        benchmarks_page.write_section(BEGIN, END, cross_only_section(cross_rows(seeds, jobs), seeds, command))
+        return
     speed = speed_rows(quick)
     outputs = None if quick else outputs_row()
-    cross = kept_cross_table() if speed_only else cross_rows(seeds)
+    cross = kept_cross_table() if speed_only else cross_rows(seeds, jobs)
     command = "python3 bench/native_bench.py" + (" --quick" if quick else "") + (
         " --speed-only" if speed_only else f" --seeds {seeds}")
     benchmarks_page.write_section(BEGIN, END, section(speed, outputs, cross, seeds, command))

@@ -31,6 +31,7 @@ import os
 import subprocess
 import sys
 from collections import deque
+from concurrent.futures import ThreadPoolExecutor
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "world"))
@@ -152,16 +153,20 @@ def welch(xs, ys):
     return t, student_t_cdf_tail(t, df)
 
 
-def crosscheck(sim, behaviour, exact, native, world_path, out, seeds, seconds=None):
-    """Both modes' metrics over seeds 1..seeds; (exact, native, t, p)."""
+def crosscheck(sim, behaviour, exact, native, world_path, out, seeds, seconds=None, jobs=1):
+    """Both modes' metrics over seeds 1..seeds, jobs runs at a time (each
+    run is its own process and seed: the results do not depend on jobs);
+    (exact, native, t, p)."""
     with open(world_path) as f:
         world = json.load(f)
     metric = globals()[behaviour]
     results = {}
-    for mode, firmware in (("exact", exact), ("native", native)):
-        runs = [os.path.join(out, f"{mode}{s}") for s in range(1, seeds + 1)]
-        results[mode] = [metric(run(sim, firmware, world, s, d, seconds), world, d)
-                         for s, d in zip(range(1, seeds + 1), runs)]
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        for mode, firmware in (("exact", exact), ("native", native)):
+            def one(s, firmware=firmware, mode=mode):
+                d = os.path.join(out, f"{mode}{s}")
+                return metric(run(sim, firmware, world, s, d, seconds), world, d)
+            results[mode] = list(pool.map(one, range(1, seeds + 1)))
     t, p = welch(results["exact"], results["native"])
     return results["exact"], results["native"], t, p
 
@@ -169,6 +174,13 @@ def crosscheck(sim, behaviour, exact, native, world_path, out, seeds, seconds=No
 def main():
     args = [a for a in sys.argv[1:] if a != "--differ"]
     differ = len(args) < len(sys.argv) - 1
+    if "--help" in args or "-h" in args:
+        print(__doc__)
+        return
+    if len(args) < 7:
+        print(__doc__.split("\n\n")[1].strip(), file=sys.stderr)
+        sys.exit(f"crosscheck.py: {len(args)} of its 7 arguments given; give all seven, as above "
+                 "(bench/native_bench.py runs it with the built programs' paths; --help says more)")
     sim, behaviour, exact, native, world, out, seeds = args[:7]
     seconds = float(args[7]) if len(args) > 7 else None
     xs, ys, t, p = crosscheck(sim, behaviour, exact, native, world, out, int(seeds), seconds)
