@@ -11,13 +11,22 @@ using namespace openswarm;
 
 namespace {
 
-std::filesystem::path hex_file(const std::string &text) {
-    auto path = std::filesystem::temp_directory_path() /
-                ("upload_parts_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".hex");
-    std::ofstream(path) << text;
-    return path;
-}
+// A HEX file holding text for as long as the expression that reads it
+// (removed after, so runs leave nothing in /tmp).
+struct hex_file {
+    std::filesystem::path path;
+    explicit hex_file(const std::string &text)
+        : path(std::filesystem::temp_directory_path() /
+               ("upload_parts_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".hex")) {
+        std::ofstream(path) << text;
+    }
+    ~hex_file() {
+        std::error_code ignored;
+        std::filesystem::remove(path, ignored);
+    }
+    operator const std::filesystem::path &() const { return path; }
+};
 
 uint8_t xor_of(const OhcPacket &p) {
     uint8_t x = 0;
