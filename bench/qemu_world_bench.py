@@ -44,7 +44,7 @@ def build(build_dir):
     QEMU image: the fidelity check's (kernel), the case study's template
     (its host build by `openswarm build`) and its plain loop."""
     run(["cmake", "--build", build_dir, "--target", "openswarm-sim", "openswarm", "epuck_link_app",
-         "clustering_plain", "clustering_app", "qemu_firmware"])
+         "clustering_plain", "clustering_app", "qemu_firmware", "openswarm-compare-groups"])
     tests = os.path.join(build_dir, "tests")
     return (os.path.join(build_dir, "sim", "openswarm-sim"),
             {"kernel": (os.path.join(tests, "epuck_link_app"), os.path.join(tests, "qemu", "epuck_link_app_qemu.elf")),
@@ -81,6 +81,15 @@ def qemu_script(name, image, serial_link):
                 f"-icount shift=3,align=off,sleep=off -kernel {image}\n")
     os.chmod(path, 0o755)
     return path
+
+
+def tick_of(name, robot=0):
+    """The tick a robot's image ran with, from its 'cpu account' line
+    (ports/epuck/epuck2/qemu_world/cpu_account.c): tickless idle,
+    periodic, or none (the kernel never started)."""
+    with open(os.path.join(WORK, f"{name}-{robot}.console")) as f:
+        line = [l for l in f if l.startswith("cpu account:")][-1]
+    return re.search(r", tick ([a-z ]+)$", line.rstrip("\n")).group(1)
 
 
 def timed(sim, name, controller, qemu):
