@@ -197,14 +197,18 @@ def run_seeds(args, record, sim, controllers):
         list(pool.map(one, to_run))  # re-raises a trial's failure
 
 
+def arm_cells(run):
+    """One arm's cells of a seed's row."""
+    return (f"{run['host_cluster'] * 100:.0f}% / {run['qemu_cluster'] * 100:.0f}% | {'yes' if run['same'] else 'NO'} | "
+            f"{run['host_wall']:.1f} / {run['qemu_wall']:.1f} | {run['busy']:,.0f}")
+
+
 def section(args, record):
     seeds = range(1, args.trials + 1)
     results = {label: [record.done[seed][label] for seed in seeds] for _, label in ARMS}
     loads = [record.done[seed]["load"] for seed in seeds]
     ticks = record.ticks(seeds)
-    rows = [f"| {seed} | {label} | {'yes' if r['same'] else 'NO'} | {r['host_wall']:.1f} | "
-            f"{r['qemu_wall']:.1f} | {r['busy']:,.0f} | {r['host_cluster'] * 100:.0f}% | {r['qemu_cluster'] * 100:.0f}% |"
-            for seed in seeds for label in results for r in [record.done[seed][label]]]
+    rows = [f"| {seed} | " + " | ".join(arm_cells(record.done[seed][label]) for _, label in ARMS) + " |" for seed in seeds]
     return "\n".join([
         BEGIN,
         f"Measured by `python3 bench/qemu_case_study.py --trials {args.trials} --duration {args.duration} "
@@ -213,9 +217,12 @@ def section(args, record):
         f"5 e-pucks each. The images' tick, as they report it: OpenSwarm {ticks['OpenSwarm']}, plain loop "
         f"{ticks['plain loop']}.\n",
         *summary(results, args.trials, args.duration, args.build), "",
-        "| seed | arm | record the same as the host build's | host build wall s | QEMU wall s | "
-        "instructions awake per robot-second (QEMU) | largest cluster, host build | under QEMU |",
-        "|---|---|---|---|---|---|---|---|", *rows, END])
+        "Per seed, each arm's largest cluster at the end in its host build and under QEMU, whether the two "
+        "records are the same byte for byte, each run's wall time and the robots' instructions awake per "
+        "robot-second under QEMU:\n",
+        "| seed | OpenSwarm: cluster, host / QEMU | same | wall s, host / QEMU | awake | "
+        "plain loop: cluster, host / QEMU | same | wall s, host / QEMU | awake |",
+        "|---|---|---|---|---|---|---|---|---|", *rows, END])
 
 
 def main():
