@@ -12,6 +12,12 @@ time of each, the robots' CPU from the images' 'cpu account' lines, and
 each run's largest cluster at its end (`openswarm metrics`). Rewrites its
 section of docs/case-study.md.
 
+Each seed's results are kept in build-bench/qemu-world/case-study-<duration>s.jsonl
+as it ends, with the tick each image says it ran with: run again (with as
+many or more --trials) and the seeds done are not run again, so the trials
+can run in pieces; the page refuses seeds whose images' ticks differ.
+Delete the file to start over.
+
     python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 600] [--jobs 1]
 """
 import argparse
@@ -23,6 +29,7 @@ import random
 import statistics
 import subprocess
 import sys
+import threading
 import time
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ in the source tree
@@ -35,6 +42,7 @@ BEGIN, END = "<!-- qemu_case_study: begin -->", "<!-- qemu_case_study: end -->"
 ROBOTS, OBJECTS = 5, 20
 COLUMNS, ROWS, SPACING = 15, 11, 250
 ARENA = (4000, 3000)
+ARMS = (("template", "OpenSwarm"), ("plain", "plain loop"))  # controllers' keys in qemu_world_bench.build
 
 
 def world(seed, duration, controller):
@@ -89,39 +97,132 @@ def largest_cluster(openswarm, out, world_file, duration):
 
 def seed_runs(sim, openswarm, controllers, seed, duration):
     """Both arms of one seed, each as its host build and its QEMU image."""
-    runs = []
-    for arm, label in (("template", "OpenSwarm"), ("plain", "plain loop")):
+    runs = {}
+    for arm, label in ARMS:
         host_app, image = controllers[arm]
         name = f"case-{arm}-qemu-{seed}"
         host_out, host_wall = trial(sim, f"case-{arm}-host-{seed}", seed, duration, host_app)
         qemu_out, qemu_wall = trial(sim, name, seed, duration, qwb.qemu_script(name, image, False))
         run = {"seed": seed, "same": same(host_out, qemu_out), "busy": busy_per_robot_second(name, duration),
+               "tick": qwb.tick_of(name),
                "host_wall": host_wall, "qemu_wall": qemu_wall,
                "host_cluster": largest_cluster(openswarm, host_out, host_out + ".json", duration),
                "qemu_cluster": largest_cluster(openswarm, qemu_out, qemu_out + ".json", duration)}
         print(f"seed {seed} {label}: {run}", file=sys.stderr, flush=True)
-        runs.append((label, run))
+        runs[label] = run
+    runs["load"] = os.getloadavg()[0]  # at the seed's end: the machine the walls were measured on
     return runs
+
+
+class Record:
+    """The seeds done, kept a line each as they end (several seeds run
+    side by side), so that a later run resumes."""
+
+    def __init__(self, duration):
+        self.path = os.path.join(qwb.WORK, f"case-study-{duration}s.jsonl")
+        self.lock = threading.Lock()
+        self.done = {}
+        if os.path.exists(self.path):
+            with open(self.path) as f:
+                for line in f:
+                    kept = json.loads(line)
+                    self.done[kept["seed"]] = kept["runs"]
+
+    def keep(self, seed, runs):
+        with self.lock, open(self.path, "a") as f:
+            f.write(json.dumps({"seed": seed, "runs": runs}) + "\n")
+        self.done[seed] = runs
+
+    def ticks(self, seeds):
+        """Each arm's tick over seeds; one each, or the record mixes images."""
+        ticks = {label: sorted({self.done[seed][label]["tick"] for seed in seeds}) for _, label in ARMS}
+        if any(len(t) > 1 for t in ticks.values()):
+            raise SystemExit(f"{self.path}: its seeds ran with different ticks ({ticks}): the images were rebuilt "
+                             "between pieces of the run; delete the file and run again")
+        return {label: t[0] for label, t in ticks.items()}
 
 
 def mean_sd(values):
     return f"{statistics.mean(values) * 100:.1f}% +- {statistics.stdev(values) * 100 if len(values) > 1 else 0:.1f}"
 
 
-def summary(results, trials, duration):
+def compare(build_dir, a, b):
+    """The two-point sweep's own comparison of two groups
+    (cli/src/sweep/group_comparison.cpp): t, degrees, p, d, detectable;
+    or the tool's reason why there is no test (too few values, no spread)."""
+    tool = os.path.join(build_dir, "cli", "openswarm-compare-groups")
+    done = subprocess.run([tool, ",".join(map(repr, a)), ",".join(map(repr, b))], text=True, capture_output=True)
+    if done.returncode == 1:
+        return done.stderr.strip()
+    if done.returncode != 0:
+        raise SystemExit(done.stderr)
+    return json.loads(done.stdout)
+
+
+def summary(results, trials, duration, build_dir):
     """Per arm: the largest cluster at the end, host build and QEMU image,
-    mean +- standard deviation over the trials; the instructions awake."""
-    lines = [f"| arm | largest cluster at {duration} s, host build | under QEMU | records the same | "
-             "instructions awake per robot-second (QEMU), mean |", "|---|---|---|---|---|"]
+    mean +- standard deviation over the trials; the instructions awake;
+    the arms compared by Welch's t test."""
+    lines = [f"| arm | n | largest cluster at {duration} s, host build | under QEMU | records the same | "
+             "instructions awake per robot-second (QEMU), mean |", "|---|---:|---|---|---|---|"]
     for label, runs in results.items():
-        lines.append(f"| {label} | {mean_sd([r['host_cluster'] for r in runs])} | "
+        lines.append(f"| {label} | {trials} | {mean_sd([r['host_cluster'] for r in runs])} | "
                      f"{mean_sd([r['qemu_cluster'] for r in runs])} | {sum(r['same'] for r in runs)} of {trials} | "
                      f"{statistics.mean(r['busy'] for r in runs):,.0f} |")
     cost = statistics.mean(r["busy"] for r in results["OpenSwarm"]) - \
         statistics.mean(r["busy"] for r in results["plain loop"])
     lines.append(f"\nThe OS's cost, the difference of the arms' awake instructions: {cost:,.0f} per robot-second "
-                 f"({cost / qwb.F407_HZ * 100:.2f}% of a 168 MHz F407 at one instruction a cycle).")
+                 f"({cost / qwb.F407_HZ * 100:.3f}% of a 168 MHz F407 at one instruction a cycle).")
+    c = compare(build_dir, *([r["qemu_cluster"] * 100 for r in results[label]] for _, label in ARMS))
+    if isinstance(c, str):
+        return lines + [f"\nNo Welch's t test of the arms: {c}."]
+    lines.append(f"\nThe arms' largest clusters at {duration} s under QEMU, OpenSwarm against the plain loop, by the "
+                 "experiment's own Welch's t test (two-sided; `cli/src/sweep/group_comparison.cpp`, here through "
+                 f"`openswarm-compare-groups`): t = {c['t']:.2f} (df {c['degrees']:.1f}), p = {c['p']:.3f}; "
+                 f"Cohen's d = {c['d']:.2f}. With these spreads and n = {trials} an arm the test finds a difference "
+                 f"of {c['detectable']:.1f} points 80% of the time at alpha 0.05; about "
+                 f"{trials * (c['detectable'] / 10) ** 2:.0f} trials an arm would find 10 points.")
     return lines
+
+
+def run_seeds(args, record, sim, controllers):
+    """The seeds 1..args.trials not yet done, args.jobs side by side."""
+    openswarm = os.path.join(args.build, "cli", "openswarm")
+
+    def one(seed):
+        record.keep(seed, seed_runs(sim, openswarm, controllers, seed, args.duration))
+
+    to_run = [seed for seed in range(1, args.trials + 1) if seed not in record.done]
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        list(pool.map(one, to_run))  # re-raises a trial's failure
+
+
+def arm_cells(run):
+    """One arm's cells of a seed's row."""
+    return (f"{run['host_cluster'] * 100:.0f}% / {run['qemu_cluster'] * 100:.0f}% | {'yes' if run['same'] else 'NO'} | "
+            f"{run['host_wall']:.1f} / {run['qemu_wall']:.1f} | {run['busy']:,.0f}")
+
+
+def section(args, record):
+    seeds = range(1, args.trials + 1)
+    results = {label: [record.done[seed][label] for seed in seeds] for _, label in ARMS}
+    loads = [record.done[seed]["load"] for seed in seeds]
+    ticks = record.ticks(seeds)
+    rows = [f"| {seed} | " + " | ".join(arm_cells(record.done[seed][label]) for _, label in ARMS) + " |" for seed in seeds]
+    return "\n".join([
+        BEGIN,
+        f"Measured by `python3 bench/qemu_case_study.py --trials {args.trials} --duration {args.duration} "
+        f"--jobs {args.jobs}` on 2 cores shared with other builds, load average {min(loads):.1f}-{max(loads):.1f} "
+        f"at the seeds' ends: n = {args.trials} trials of {args.duration} s per arm, seeds 1-{args.trials}, "
+        f"5 e-pucks each. The images' tick, as they report it: OpenSwarm {ticks['OpenSwarm']}, plain loop "
+        f"{ticks['plain loop']}.\n",
+        *summary(results, args.trials, args.duration, args.build), "",
+        "Per seed, each arm's largest cluster at the end in its host build and under QEMU, whether the two "
+        "records are the same byte for byte, each run's wall time and the robots' instructions awake per "
+        "robot-second under QEMU:\n",
+        "| seed | OpenSwarm: cluster, host / QEMU | same | wall s, host / QEMU | awake | "
+        "plain loop: cluster, host / QEMU | same | wall s, host / QEMU | awake |",
+        "|---|---|---|---|---|---|---|---|---|", *rows, END])
 
 
 def main():
@@ -133,27 +234,10 @@ def main():
     args = parser.parse_args()
     os.makedirs(qwb.WORK, exist_ok=True)
     sim, controllers = qwb.build(args.build)
-    openswarm = os.path.join(args.build, "cli", "openswarm")
-    load_before = os.getloadavg()[0]
-    results = {"OpenSwarm": [], "plain loop": []}
-    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:  # seeds side by side, in order
-        for runs in pool.map(lambda seed: seed_runs(sim, openswarm, controllers, seed, args.duration),
-                             range(1, args.trials + 1)):
-            for label, run in runs:
-                results[label].append(run)
-    rows = [f"| {r['seed']} | {label} | {'yes' if r['same'] else 'NO'} | {r['host_wall']:.1f} | "
-            f"{r['qemu_wall']:.1f} | {r['busy']:,.0f} | {r['host_cluster'] * 100:.0f}% | {r['qemu_cluster'] * 100:.0f}% |"
-            for seed in range(args.trials) for label in results for r in [results[label][seed]]]
-    text = "\n".join([
-        BEGIN,
-        f"Measured by `python3 bench/qemu_case_study.py --trials {args.trials} --duration {args.duration} "
-        f"--jobs {args.jobs}` on 2 "
-        f"cores, load average {load_before:.1f} before and {os.getloadavg()[0]:.1f} after: n = {args.trials} "
-        f"trials of {args.duration} s per arm, seeds 1-{args.trials}, 5 e-pucks each.\n",
-        *summary(results, args.trials, args.duration), "",
-        "| seed | arm | record the same as the host build's | host build wall s | QEMU wall s | "
-        "instructions awake per robot-second (QEMU) | largest cluster, host build | under QEMU |",
-        "|---|---|---|---|---|---|---|---|", *rows, END])
+    record = Record(args.duration)
+    print(f"seeds done before: {sorted(record.done)}", file=sys.stderr, flush=True)
+    run_seeds(args, record, sim, controllers)
+    text = section(args, record)
     print(text)
     benchmarks_page.write_section(BEGIN, END, text, PAGE)
 

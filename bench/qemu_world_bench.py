@@ -9,6 +9,9 @@ switches per exchange (one exchange: a robot's 10 ms step). The image's
 'cpu account' console line gives the robot's busy instructions. Rewrites
 its section of docs/benchmarks.md.
 
+The image of this tree runs with the port's default tick, as its console
+says (tickless idle since the Cortex-M4 port has it).
+
     python3 bench/qemu_world_bench.py [--build build] [--before 785a17a] [--runs 3]
 """
 import argparse
@@ -44,7 +47,7 @@ def build(build_dir):
     QEMU image: the fidelity check's (kernel), the case study's template
     (its host build by `openswarm build`) and its plain loop."""
     run(["cmake", "--build", build_dir, "--target", "openswarm-sim", "openswarm", "epuck_link_app",
-         "clustering_plain", "clustering_app", "qemu_firmware"])
+         "clustering_plain", "clustering_app", "qemu_firmware", "openswarm-compare-groups"])
     tests = os.path.join(build_dir, "tests")
     return (os.path.join(build_dir, "sim", "openswarm-sim"),
             {"kernel": (os.path.join(tests, "epuck_link_app"), os.path.join(tests, "qemu", "epuck_link_app_qemu.elf")),
@@ -81,6 +84,23 @@ def qemu_script(name, image, serial_link):
                 f"-icount shift=3,align=off,sleep=off -kernel {image}\n")
     os.chmod(path, 0o755)
     return path
+
+
+def tick_of(name, robot=0):
+    """The tick a robot's image ran with, from its 'cpu account' line
+    (ports/epuck/epuck2/qemu_world/cpu_account.c): tickless idle,
+    periodic, or none (the kernel never started)."""
+    with open(os.path.join(WORK, f"{name}-{robot}.console")) as f:
+        line = [l for l in f if l.startswith("cpu account:")][-1]
+    return re.search(r", tick ([a-z ]+)$", line.rstrip("\n")).group(1)
+
+
+def before_tick(rev):
+    """rev's image predates the tick in the 'cpu account' line: its tree
+    says whether the port had tickless idle yet."""
+    has = subprocess.run(["git", "-C", ROOT, "cat-file", "-e", f"{rev}:ports/cortex_m4/src/tickless_idle.c"],
+                         capture_output=True).returncode == 0
+    return "its port's default tick" if has else "periodic tick: its port had no tickless idle"
 
 
 def timed(sim, name, controller, qemu):
@@ -146,7 +166,8 @@ def section(args, rows, account, loads):
         "switches per exchange; 'same' says the world's record is byte for byte the host build's.\n",
         "| controller | wall s | wall ms per exchange | simulator CPU s (with the host build's controllers) | QEMU CPU s | QEMU switches per exchange | same |",
         "|---|---|---|---|---|---|---|", *rows, "",
-        "What the robot's CPU does, from the image's `cpu account` line (robot 0; TIM2 counts QEMU's virtual "
+        f"What the robot's CPU does, from this tree's image's `cpu account` line (robot 0; it ran with "
+        f"{tick_of('now')}, the port's default; TIM2 counts QEMU's virtual "
         "time, 8 ns an instruction with `-icount shift=3`; the world link's own work is left out). The controller "
         "is `tests/world/epuck_link_app.c`: the case study's camera handler and a thread blinking the LEDs. "
         "The share is of a 168 MHz STM32F407 at one instruction a cycle (a real one needs more cycles: flash "
@@ -170,15 +191,16 @@ def main():
     before_image = build_before(args.before)
     loads = [os.getloadavg()[0]]
     variants = (("host build (PORT epuck_world)", "host", host_app, False),
-                (f"QEMU image, link on USART2 ({args.before})", "before", qemu_script("before", before_image, True), True),
-                ("QEMU image, link through semihosting (this tree)", "now", qemu_script("now", image, False), True))
+                (f"QEMU image, link on USART2 ({args.before}, {before_tick(args.before)})", "before",
+                 qemu_script("before", before_image, True), True),
+                ("QEMU image, link through semihosting (this tree, {tick})", "now", qemu_script("now", image, False), True))
     runs = {name: [] for _, name, _, _ in variants}
     for _ in range(args.runs):  # interleaved: the machine's load falls on every variant alike
         for _, name, controller, qemu in variants:
             runs[name].append(timed(sim, name, controller, qemu))
     loads.append(os.getloadavg()[0])
     host_out = runs["host"][0]["out"]
-    rows = [median_row(label, runs[name], host_out) for label, name, _, _ in variants]
+    rows = [median_row(label.format(tick=tick_of("now")), runs[name], host_out) for label, name, _, _ in variants]
     text = section(args, rows, cpu_account("now"), loads)
     print(text)
     benchmarks_page.write_section(BEGIN, END, text)

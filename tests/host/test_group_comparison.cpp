@@ -3,11 +3,14 @@
 // worked out by hand, p against Student's t tables.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "../../cli/src/sweep/group_comparison.hpp"
 
 namespace {
 
 using openswarm::compare_groups;
+using openswarm::student_quantile;
 using openswarm::student_two_sided_p;
 
 TEST(GroupComparison, PValuesMatchStudentsTables) {
@@ -30,6 +33,29 @@ TEST(GroupComparison, WelchsTestByHand) {
     EXPECT_NEAR(c.d, -1.2, 1e-12);
     EXPECT_GT(c.p, 0.10);
     EXPECT_LT(c.p, 0.115) << "between df 5's 0.115 and df 6's 0.105 at this t";
+}
+
+TEST(GroupComparison, QuantilesMatchStudentsTables) {
+    EXPECT_NEAR(student_quantile(0.025, 10), 2.228, 1e-3);
+    EXPECT_NEAR(student_quantile(0.2, 10), 0.879, 1e-3);
+    EXPECT_NEAR(student_quantile(0.025, 1), 12.706, 1e-3);
+    EXPECT_NEAR(student_quantile(0.025, 1e6), 1.960, 1e-3);
+    EXPECT_NEAR(student_quantile(0.2, 1e6), 0.842, 1e-3);
+}
+
+TEST(GroupComparison, DetectableDifferenceByHand) {
+    // 0..10 and 3..13: variances 11 each, so standard error sqrt(11/11 +
+    // 11/11) = 1.4142 and df = 20 exactly; t(0.975) = 2.086 and t(0.8) =
+    // 0.860 at 20 (the tables): 2.946 x 1.4142 = 4.166.
+    std::vector<double> a, b;
+    for (int k = 0; k <= 10; k++) {
+        a.push_back(k);
+        b.push_back(k + 3);
+    }
+    auto c = compare_groups(a, b);
+    ASSERT_TRUE(c.valid);
+    EXPECT_NEAR(c.degrees, 20, 1e-9);
+    EXPECT_NEAR(c.detectable, 4.166, 2e-3);
 }
 
 TEST(GroupComparison, TooFewOrNoSpreadIsNotATest) {

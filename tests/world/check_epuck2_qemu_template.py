@@ -6,7 +6,8 @@ build` generates from its openswarm.json), built by the tool for the host
 the fidelity check's world (two e-pucks among three objects for 10 s): the
 world's records must be the same byte for byte and show the robots turning
 and pushing. Each image's CPU account must show the kernel's robot: asleep
-most of the time, awake for the camera's frames and the rest.
+most of the time, awake for the camera's frames and the rest, with the
+port's default tick (tickless idle).
 
 check_epuck2_qemu_template.py SIM HOST_APP QEMU_ELF QEMU_SYSTEM_ARM WORKDIR
 """

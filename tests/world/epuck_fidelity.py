@@ -91,11 +91,18 @@ def report(failures, success):
     return 1 if failures else 0
 
 
+def account_tick(console):
+    """The tick the account line says the robot ran with (tickless idle,
+    periodic, none), None if it says none."""
+    tick = re.search(r"^cpu account: .*, tick ([a-z ]+)$", console, re.M)
+    return tick.group(1) if tick else None
+
+
 def kernel_account(work, robot, failures):
     """Robot's CPU account must be a kernel's robot's: at least the run's
     10 s of virtual time, asleep for most of it, awake for some (the
-    sensors' deliveries and the rest). Its console, None if it printed no
-    account."""
+    sensors' deliveries and the rest), with the port's default tick
+    (tickless idle). Its console, None if it printed no account."""
     found = cpu_account(work, robot, failures)
     if found is None:
         return None
@@ -103,6 +110,9 @@ def kernel_account(work, robot, failures):
     if robot_us < 10_000_000 or not 0.9 * robot_us < asleep < robot_us or sensors == 0 or other == 0:
         failures.append(f"qemu: robot {robot}'s CPU account does not add up: {robot_us} us robot time, "
                         f"{asleep} asleep, {sensors} on the sensors, {other} else awake")
+    if account_tick(console) != "tickless idle":
+        failures.append(f"qemu: robot {robot} says it ran with tick {account_tick(console)}, not the Cortex-M4 "
+                        "port's default, tickless idle")
     return console
 
 

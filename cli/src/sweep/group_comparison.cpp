@@ -56,6 +56,18 @@ double student_two_sided_p(double t, double degrees) {
     return incomplete_beta(degrees / 2, 0.5, degrees / (degrees + t * t));
 }
 
+double student_quantile(double upper_tail, double degrees) {
+    // p falls as t grows: halve [0, high] around the t whose two tails
+    // hold twice upper_tail, after doubling high until it is past it.
+    double low = 0, high = 1;
+    while (student_two_sided_p(high, degrees) > 2 * upper_tail && high < 1e9) high *= 2;
+    for (int step = 0; step < 100; step++) {
+        double middle = (low + high) / 2;
+        (student_two_sided_p(middle, degrees) > 2 * upper_tail ? low : high) = middle;
+    }
+    return (low + high) / 2;
+}
+
 Comparison compare_groups(const std::vector<double> &a, const std::vector<double> &b) {
     Comparison c;
     if (a.size() < 2 || b.size() < 2) return c;
@@ -66,6 +78,7 @@ Comparison compare_groups(const std::vector<double> &a, const std::vector<double
     c.degrees = (va + vb) * (va + vb) / (va * va / (x.n - 1) + vb * vb / (y.n - 1));
     c.p = student_two_sided_p(c.t, c.degrees);
     c.d = (x.mean - y.mean) / std::sqrt((x.variance + y.variance) / 2);
+    c.detectable = (student_quantile(0.025, c.degrees) + student_quantile(0.2, c.degrees)) * std::sqrt(va + vb);
     c.valid = true;
     return c;
 }

@@ -53,7 +53,7 @@ static void take_inputs(void) {
     world_link_read_input(&in, frame);
     uint32_t pixels = (uint32_t)in.frame_width * in.frame_height;
     if (in.flags & EPUCK_LINK_STOP) {
-        cpu_account_report();
+        cpu_account_report(true);
         answer();
         epuck_world_losses losses;
         world_outputs_losses(&losses);

@@ -2,6 +2,7 @@
 
 #include <stdbool.h>
 
+#include "openswarm/config.h"
 #include "openswarm/cortex_m4.h"
 
 #define TIM2_CR1 (*(volatile uint32_t *)0x40000000u)
@@ -45,7 +46,7 @@ static void print_us(const char *label, uint64_t ns) {
 }
 
 /* Microseconds fit 32 bits for runs under 71 minutes of virtual time. */
-void cpu_account_report(void) {
+void cpu_account_report(bool kernel_ran) {
     cpu_account_now();
     uint64_t robot = total_ns - spent_ns[CPU_LINK];
     uint64_t busy = robot - spent_ns[CPU_ASLEEP];
@@ -54,5 +55,7 @@ void cpu_account_report(void) {
     print_us(", sensors ", spent_ns[CPU_SENSORS]);
     print_us(", other busy ", busy - spent_ns[CPU_SENSORS]);
     print_us(", link (not the robot's) ", spent_ns[CPU_LINK]);
+    cortex_m4_print(", tick ");
+    cortex_m4_print(!kernel_ran ? "none" : OS_CFG_TICKLESS ? "tickless idle" : "periodic");
     cortex_m4_print("\n");
 }

@@ -6,6 +6,7 @@
 #ifndef EPUCK2_QEMU_WORLD_CPU_ACCOUNT_H
 #define EPUCK2_QEMU_WORLD_CPU_ACCOUNT_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 typedef enum cpu_account_kind {
@@ -23,7 +24,10 @@ uint32_t cpu_account_now(void);
 void cpu_account_add(cpu_account_kind kind, uint32_t since);
 /* One console line: the virtual time run, and how much of the robot's was
  * spent asleep, on the sensors' deliveries and on everything else (the
- * kernel's ticks, scheduling, event dispatch, the handlers, the threads). */
-void cpu_account_report(void);
+ * kernel's ticks, scheduling, event dispatch, the handlers, the threads);
+ * then the tick the robot ran with: none if kernel_ran is false (an image
+ * that never starts its kernel, as the plain loop's), else the kernel's
+ * build setting (tickless idle or periodic), for the benches to say. */
+void cpu_account_report(bool kernel_ran);
 
 #endif

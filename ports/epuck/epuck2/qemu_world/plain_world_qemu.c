@@ -42,7 +42,7 @@ const epuck_camera_frame *epuck_plain_wait_frame(void) {
         owed = true;
         if (in.flags & EPUCK_LINK_STOP) {
             cpu_account_add(CPU_LINK, link_since);
-            cpu_account_report();
+            cpu_account_report(false);
             answer();
             semihosting_exit(0);
         }
