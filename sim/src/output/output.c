@@ -161,6 +161,11 @@ double output_next_frame_s(void)
     return out.open && out.options.video ? video_clock_next_s(&out.clock) : INFINITY;
 }
 
+double output_frame_after_s(double t)
+{
+    return out.open && out.options.video ? video_clock_after_s(&out.clock, t) : INFINITY;
+}
+
 int output_frame_add(const output_sample *s)
 {
     if (!out.open || !out.options.video)

@@ -75,6 +75,9 @@ int output_sample_add(const output_sample *s);
  * output_frame_add at that time or the first step after it, apart from
  * the samples; -1 on a write error (reported). */
 double output_next_frame_s(void);
+/* When it will want the world next once handed the world at t: for a
+ * caller that notes what a frame shows before it hands it over. */
+double output_frame_after_s(double t);
 int output_frame_add(const output_sample *s);
 /* Write what is written at the end (final.png, viewer.html), finish the
  * video, close the files; -1 if any of it failed (reported). Each file is

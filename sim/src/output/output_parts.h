@@ -155,6 +155,8 @@ typedef struct video_clock {
 
 void video_clock_init(video_clock *c, const world_spec *w, double fps, double speed);
 double video_clock_next_s(const video_clock *c);
+/* When it wants the world next once it has the world at t. */
+double video_clock_after_s(const video_clock *c, double t);
 /* The world at s->time_s for every point due by then; how many of those
  * are frames (each to be drawn from the newest point), -1 out of memory. */
 int video_clock_add(video_clock *c, const output_sample *s);

@@ -28,6 +28,14 @@ double video_clock_next_s(const video_clock *c)
     return (double)c->next * c->point_s;
 }
 
+double video_clock_after_s(const video_clock *c, double t)
+{
+    long next = c->next;
+    while ((double)next * c->point_s <= t + 1e-9)
+        next++;
+    return (double)next * c->point_s;
+}
+
 /* Several points may be due at once when they are closer than the
  * simulator's steps: one world stands for them all. */
 int video_clock_add(video_clock *c, const output_sample *s)

@@ -53,8 +53,8 @@ struct Robot {
     int16_t wheel_steps[2]{}; /* an e-puck's: steps/s, left and right */
     uint64_t rng = 0;
     /* What its legs walk it at in a step, drawn by world_step_prepare:
-     * one for the step the bodies take now, one for the next (world.h). */
-    kilobot_twist twist[2]{};
+     * one for each step under way and one for the next (world.h). */
+    kilobot_twist twist[WORLD_TWIST_SLOTS]{};
 };
 
 /* What a body is, in its user data: walls and obstacles carry 0. */

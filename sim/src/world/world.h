@@ -33,11 +33,15 @@ void world_epuck_wheels(world *w, int i, int16_t left, int16_t right);
 /* Advance the physics by one WORLD_STEP_S, ending at time t: the two
  * halves below, one after the other. */
 void world_step(world *w, double t);
+/* Each robot's twist slots: the steps under way beside the robots and the
+ * one being prepared (world_stepper.h). */
+#define WORLD_TWIST_SLOTS 3
 /* The step's first half, for robots share, share + shares, ...: each
  * one's motors advanced to t and what its legs (or wheels) will walk it
- * at, its noise drawn, kept in its twist slot (0 or 1). It touches no
- * Box2D body, so it may run while the step before, prepared in the other
- * slot, is still taking its bodies (world_stepper.c). */
+ * at, its noise drawn, kept in its twist slot (below WORLD_TWIST_SLOTS).
+ * It touches no Box2D body, so it may run while the steps before,
+ * prepared in the other slots, are still taking their bodies
+ * (world_stepper.c). */
 void world_step_prepare(world *w, double t, unsigned slot, int share, int shares);
 /* The second half: the bodies walked as prepared in slot, and Box2D's step. */
 void world_step_bodies(world *w, unsigned slot);

@@ -2,10 +2,10 @@
 /* A run in a world (world_run.h). The physics steps every WORLD_STEP_S of
  * simulated time, begun when the robots' lockstep windows reach it; the
  * firmware's motor changes reach it at their exact time, so a 15 ms
- * spin-up pulse counts as 15 ms. The step runs while the robots go on to
- * the next step's time (world_stepper.h); then the IR channel learns the
- * distances and the light sensors the light it left: what the robots
- * sense is one step (10 ms, 0.1 mm of a Kilobot's walk) older than their
+ * spin-up pulse counts as 15 ms. The step runs while the robots go on
+ * (world_stepper.h); WORLD_STEPS_AHEAD steps later the IR channel learns
+ * the distances and the light sensors the light it left: what the robots
+ * sense is two steps (20 ms, 0.2 mm of a Kilobot's walk) older than their
  * clock, and a sample shows the world as it was at its own time. */
 #include "world/world_run.h"
 
@@ -31,19 +31,26 @@ static world *physics;
 static const world_robots *robots; /* how to reach them */
 static int n_robots;
 static avr_cycle_count_t step_cycles, next_step;
-static int step_begun;   /* a step is begun that the robots do not see yet */
-static double step_t;    /* its time */
-static int sample_due;   /* at its time: the LEDs are noted, the rest follows it */
-static int frame_due;    /* the video's too, at its own times (output_next_frame_s) */
+/* What a step's sample shows besides the poses, noted as the step begins
+ * (at its time) and taken with its poses WORLD_STEPS_AHEAD steps later:
+ * step k's in notes[k % WORLD_STEPS_AHEAD]. */
+typedef struct step_notes {
+    double t;
+    int sample_due;     /* a sample at t: the LEDs and IR counts noted */
+    int frame_due;      /* the video's, at its own times: the LEDs noted */
+    uint8_t *leds;      /* 3 a robot: red, green, blue */
+    output_ir *ir;      /* each robot's counts at t */
+} step_notes;
+static step_notes notes[WORLD_STEPS_AHEAD];
+static unsigned steps_noted, steps_seen;
 static double end_s;     /* the run's end: the video's frames come before it */
-static double next_sample_s;
+static double next_sample_s, next_frame_s;
 static int recording;
 static int sample_failed; /* a sample could not be written (reported) */
 static output_robot *poses;
 static world_point *object_centres;
 static output_link *links;
 static int links_room;
-static output_ir *ir_counts; /* each robot's at the sample */
 static int *light_mv; /* last applied to each robot's ADC7, -1 none */
 static double ir_range_mm;
 
@@ -176,14 +183,19 @@ static void sense_light(int i) {
     robots->light(i, mv);
 }
 
-/* Where everything is now, for the channel, the sensors and the outputs. */
-static void observe(void) {
-    for (int i = 0; i < n_robots; i++) {
-        output_robot *p = &poses[i];
-        world_robot_pose(physics, i, &p->x_mm, &p->y_mm, &p->heading_deg);
-        if (spec.n_lights > 0 || spec.ambient_light_mv > 0) sense_light(i);
-    }
+/* Where the robots are seen now (poses), for the channel and the sensors. */
+static void sense(void) {
+    if (spec.n_lights > 0 || spec.ambient_light_mv > 0)
+        for (int i = 0; i < n_robots; i++) sense_light(i);
     robots->place(distance_between, NULL);
+}
+
+/* Where everything is before the first step. */
+static void observe_start(void) {
+    for (int i = 0; i < n_robots; i++) world_robot_pose(physics, i, &poses[i].x_mm, &poses[i].y_mm, &poses[i].heading_deg);
+    for (int k = 0; k < spec.n_objects; k++)
+        world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
+    sense();
 }
 
 static int *reached_by; /* scratch: the receivers one sender reaches */
@@ -204,30 +216,27 @@ static int collect_links(void) {
 }
 
 /* The LEDs as they show now, for the sample of now. */
-static void note_leds(void) {
+static void note_leds(uint8_t *leds) {
+    for (int i = 0; i < n_robots; i++) robots->led(i, &leds[3 * i]);
+}
+
+static void show_leds(const uint8_t *leds) {
     for (int i = 0; i < n_robots; i++) {
-        uint8_t rgb[3];
-        robots->led(i, rgb);
-        poses[i].led_r = rgb[0];
-        poses[i].led_g = rgb[1];
-        poses[i].led_b = rgb[2];
+        poses[i].led_r = leds[3 * i];
+        poses[i].led_g = leds[3 * i + 1];
+        poses[i].led_b = leds[3 * i + 2];
     }
 }
 
-/* Where everything was at t (the LEDs noted then). */
-static int sample(double t) {
-    for (int k = 0; k < spec.n_objects; k++)
-        world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
+/* Where everything was at t (poses, objects and LEDs as they were then). */
+static int sample(double t, const output_ir *ir) {
     int n_links = collect_links();
-    for (int i = 0; i < n_robots; i++) robots->ir(i, &ir_counts[i]);
-    output_sample s = {t, poses, object_centres, links, n_links, ir_counts};
+    output_sample s = {t, poses, object_centres, links, n_links, ir};
     return output_sample_add(&s);
 }
 
 /* The same for the video, at its own times (it draws no links). */
 static int frame(double t) {
-    for (int k = 0; k < spec.n_objects; k++)
-        world_object_position(physics, k, &object_centres[k].x, &object_centres[k].y);
     output_sample s = {t, poses, object_centres, NULL, 0, NULL};
     return output_frame_add(&s);
 }
@@ -241,15 +250,18 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
     object_centres = allocate((size_t)spec.n_objects, sizeof *object_centres);
     light_mv = allocate((size_t)n, sizeof *light_mv);
     reached_by = allocate((size_t)n, sizeof *reached_by);
-    ir_counts = allocate((size_t)n, sizeof *ir_counts);
     for (int i = 0; i < n; i++) light_mv[i] = -1;
+    for (int k = 0; k < WORLD_STEPS_AHEAD; k++) {
+        notes[k].leds = allocate((size_t)n, 3);
+        notes[k].ir = allocate((size_t)n, sizeof *notes[k].ir);
+    }
     /* Of the nominal clock, as world_run_after_window counts (robot 0's own
      * may run fast or slow). */
     step_cycles = (avr_cycle_count_t)llround(WORLD_STEP_S * nominal_hz);
     next_step = step_cycles;
-    step_begun = sample_due = frame_due = 0;
-    world_stepper_start(physics, n, physics_thread);
-    observe();
+    steps_noted = steps_seen = 0;
+    world_stepper_start(physics, n, spec.n_objects, physics_thread);
+    observe_start();
     if (o->out_dir == NULL) return 0;
     output_options out = {.dir = o->out_dir, .video = o->video, .quiet = o->quiet,
                           .ids = o->ids, .video_fps = o->video_fps, .video_speed = o->video_speed};
@@ -257,36 +269,52 @@ int world_run_start(int n, const options *o, const world_robots *all, uint32_t n
     recording = 1;
     next_sample_s = spec.sample_period_s;
     end_s = o->seconds;
-    note_leds();
-    return sample(0.0) != 0 || (o->video && frame(0.0) != 0) ? -1 : 0;
+    note_leds(notes[0].leds);
+    show_leds(notes[0].leds);
+    for (int i = 0; i < n_robots; i++) robots->ir(i, &notes[0].ir[i]);
+    if (sample(0.0, notes[0].ir) != 0 || (o->video && frame(0.0) != 0)) return -1;
+    next_frame_s = output_next_frame_s();
+    return 0;
 }
 
-/* The step begun is over: the robots sense where it left them, and its
- * sample is taken. */
-static void step_over(void) {
-    world_stepper_wait();
-    if (!step_begun) return;
-    step_begun = 0;
-    observe();
-    if (sample_due && sample(step_t) != 0) sample_failed = 1;
-    if (frame_due && frame(step_t) != 0) sample_failed = 1;
-    sample_due = frame_due = 0;
+/* The oldest step under way is over: the robots sense where it left
+ * them, and its sample is taken. */
+static void see_step(void) {
+    const world_poses *seen = world_stepper_take();
+    const step_notes *noted = &notes[steps_seen++ % WORLD_STEPS_AHEAD];
+    for (int i = 0; i < n_robots; i++) {
+        poses[i].x_mm = seen->robots[i].x_mm;
+        poses[i].y_mm = seen->robots[i].y_mm;
+        poses[i].heading_deg = seen->robots[i].heading_deg;
+    }
+    sense();
+    if (!noted->sample_due && !noted->frame_due) return;
+    for (int k = 0; k < spec.n_objects; k++) object_centres[k] = seen->objects[k];
+    show_leds(noted->leds);
+    if (noted->sample_due && sample(noted->t, noted->ir) != 0) sample_failed = 1;
+    if (noted->frame_due && frame(noted->t) != 0) sample_failed = 1;
+}
+
+/* What the step ending at t will be sampled with, noted at t. */
+static void note_step(double t) {
+    step_notes *n = &notes[steps_noted++ % WORLD_STEPS_AHEAD];
+    n->t = t;
+    n->sample_due = recording && t + 1e-9 >= next_sample_s;
+    if (n->sample_due) next_sample_s += spec.sample_period_s;
+    n->frame_due = recording && t + 1e-9 >= next_frame_s && t < end_s - 1e-9;
+    if (n->frame_due) next_frame_s = output_frame_after_s(t);
+    if (n->sample_due || n->frame_due) note_leds(n->leds);
+    if (n->sample_due)
+        for (int i = 0; i < n_robots; i++) robots->ir(i, &n->ir[i]);
 }
 
 void world_run_after_window(avr_cycle_count_t end, uint32_t nominal_hz) {
     while (end >= next_step) {
         double t = (double)next_step / nominal_hz;
-        world_stepper_prepare(t); /* while the step before may still run */
-        step_over();
-        if (recording && t + 1e-9 >= next_sample_s) {
-            sample_due = 1;
-            next_sample_s += spec.sample_period_s;
-        }
-        frame_due = recording && t + 1e-9 >= output_next_frame_s() && t < end_s - 1e-9;
-        if (sample_due || frame_due) note_leds();
+        world_stepper_prepare(t); /* while the steps before may still run */
+        if (world_stepper_pending() == WORLD_STEPS_AHEAD) see_step();
+        note_step(t);
         world_stepper_begin();
-        step_begun = 1;
-        step_t = t;
         next_step += step_cycles;
     }
 }
@@ -346,7 +374,7 @@ int world_run_epucks(const options *o) {
 }
 
 int world_run_finish(void) {
-    step_over();
+    while (world_stepper_pending() > 0) see_step();
     world_stepper_stop();
     if (interrupt_caught()) output_quieten(); /* interrupt_finish names the files */
     int status = recording ? output_close() : 0;
