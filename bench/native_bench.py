@@ -127,8 +127,10 @@ def mean_sd(v):
 
 def section(speed, outputs, cross, seeds, command):
     load = os.getloadavg()[0]
+    shared = ("a quiet machine" if load < 2 else
+              "other work shared it: figures from a quiet machine are higher")
     lines = [BEGIN, "## Native mode", "", f"`{command}` on this 2-core machine, load average {load:.1f} at "
-             "the end (other builds shared it: figures from a quiet machine are higher). Peak memory per "
+             f"the end ({shared}). Peak memory per "
              "robot is the process's peak over the robots: the simulator's own 15 MB included.", "",
              "### Speed: the disperse template, packed, in a world with physics", "",
              "| robots | simulated | threads | real-time factor | robot-seconds per second | peak memory per robot |",
