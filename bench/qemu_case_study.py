@@ -16,7 +16,10 @@ Each seed's results are kept in build-bench/qemu-world/case-study-<duration>s.js
 as it ends, with the tick each image says it ran with: run again (with as
 many or more --trials) and the seeds done are not run again, so the trials
 can run in pieces; the page refuses seeds whose images' ticks differ.
-Delete the file to start over.
+Each seed also keeps the commit its world's sources were last changed in
+(sim/, ports/, kernel/, the template): a run that would add seeds to a
+record made from other sources stops and says so, since the same seeds
+then give other trials. Delete the file to start over.
 
     python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 600] [--jobs 1]
 """
@@ -95,6 +98,22 @@ def largest_cluster(openswarm, out, world_file, duration):
     return float(at_end[0]["value"])
 
 
+# What decides a trial: the world, the ports, the kernel and the template.
+WORLD_SOURCES = ("sim", "ports", "kernel", "templates/object-clustering")
+
+
+def world_sources():
+    """The last commit that changed WORLD_SOURCES (with "+changes" if the
+    tree holds uncommitted ones there), or "unknown" outside a git tree."""
+    def git(*args):
+        return subprocess.run(["git", "-C", ROOT, *args], text=True, capture_output=True)
+    last = git("log", "-1", "--format=%h", "--", *WORLD_SOURCES)
+    if last.returncode != 0 or not last.stdout.strip():
+        return "unknown"
+    dirty = git("status", "--porcelain", "--untracked-files=no", "--", *WORLD_SOURCES).stdout.strip()
+    return last.stdout.strip() + ("+changes" if dirty else "")
+
+
 def seed_runs(sim, openswarm, controllers, seed, duration):
     """Both arms of one seed, each as its host build and its QEMU image."""
     runs = {}
@@ -111,6 +130,7 @@ def seed_runs(sim, openswarm, controllers, seed, duration):
         print(f"seed {seed} {label}: {run}", file=sys.stderr, flush=True)
         runs[label] = run
     runs["load"] = os.getloadavg()[0]  # at the seed's end: the machine the walls were measured on
+    runs["sources"] = world_sources()
     return runs
 
 
@@ -193,6 +213,13 @@ def run_seeds(args, record, sim, controllers):
         record.keep(seed, seed_runs(sim, openswarm, controllers, seed, args.duration))
 
     to_run = [seed for seed in range(1, args.trials + 1) if seed not in record.done]
+    here = world_sources()
+    kept = sorted({runs.get("sources", "not recorded") for runs in record.done.values()} - {here})
+    if to_run and kept:
+        raise SystemExit(f"{record.path}: its {len(record.done)} seeds ran with the world's sources at "
+                         f"{', '.join(kept)}, this tree's are at {here} ({', '.join(WORLD_SOURCES)}): new seeds "
+                         "would be trials of another world. Delete the file to run every seed afresh, or give "
+                         f"--trials {len(record.done)} to write the page from the seeds kept")
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         list(pool.map(one, to_run))  # re-raises a trial's failure
 
