@@ -19,9 +19,10 @@ can run in pieces; the page refuses seeds whose images' ticks differ.
 Each seed also keeps the commit its world's sources were last changed in
 (sim/, ports/, kernel/, the template): a run that would add seeds to a
 record made from other sources stops and says so, since the same seeds
-then give other trials. Delete the file to start over.
+then give other trials (--same-world: checked that they do not). Delete
+the file to start over.
 
-    python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 600] [--jobs 1]
+    python3 bench/qemu_case_study.py [--build build] [--trials 3] [--duration 600] [--jobs 1] [--same-world]
 """
 import argparse
 import concurrent.futures
@@ -215,11 +216,12 @@ def run_seeds(args, record, sim, controllers):
     to_run = [seed for seed in range(1, args.trials + 1) if seed not in record.done]
     here = world_sources()
     kept = sorted({runs.get("sources", "not recorded") for runs in record.done.values()} - {here})
-    if to_run and kept:
+    if to_run and kept and not args.same_world:
         raise SystemExit(f"{record.path}: its {len(record.done)} seeds ran with the world's sources at "
                          f"{', '.join(kept)}, this tree's are at {here} ({', '.join(WORLD_SOURCES)}): new seeds "
-                         "would be trials of another world. Delete the file to run every seed afresh, or give "
-                         f"--trials {len(record.done)} to write the page from the seeds kept")
+                         "would be trials of another world. Delete the file to run every seed afresh, give "
+                         f"--trials {len(record.done)} to write the page from the seeds kept, or --same-world "
+                         "if you have checked that the change leaves these trials as they were")
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         list(pool.map(one, to_run))  # re-raises a trial's failure
 
@@ -258,6 +260,8 @@ def main():
     parser.add_argument("--trials", type=int, default=3)
     parser.add_argument("--duration", type=int, default=600)
     parser.add_argument("--jobs", type=int, default=1, help="seeds run side by side (their wall times then share the CPU)")
+    parser.add_argument("--same-world", action="store_true",
+                        help="add seeds to a record made from other sources (checked to leave the trials as they were)")
     args = parser.parse_args()
     os.makedirs(qwb.WORK, exist_ok=True)
     sim, controllers = qwb.build(args.build)
