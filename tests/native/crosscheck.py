@@ -108,8 +108,13 @@ def run(sim, firmware, world, seed, out, seconds):
         json.dump(spec, f)
     extra = ["--time", str(seconds)] if seconds else []
     console = ["--console-csv", os.path.join(out, "console.csv")]
-    done = subprocess.run([sim, "--world", path, "--out", out, "-q", "--threads", "1", *console, *extra, firmware],
-                          capture_output=True, text=True, timeout=600)
+    limit = float(os.environ.get("OPENSWARM_CROSSCHECK_TIMEOUT_S", "3600"))
+    try:
+        done = subprocess.run([sim, "--world", path, "--out", out, "-q", "--threads", "1", *console, *extra, firmware],
+                              capture_output=True, text=True, timeout=limit)
+    except subprocess.TimeoutExpired:
+        sys.exit(f"openswarm-sim ran past {limit:g} s on seed {seed} ({path}): a loaded machine can take that "
+                 "long; OPENSWARM_CROSSCHECK_TIMEOUT_S=SECONDS gives it longer")
     if done.returncode != 0:
         sys.exit(f"openswarm-sim failed ({done.returncode}) on seed {seed}:\n{done.stderr}")
     return paths(out)
