@@ -28,12 +28,18 @@ double video_clock_next_s(const video_clock *c)
     return (double)c->next * c->point_s;
 }
 
-double video_clock_after_s(const video_clock *c, double t)
+/* The first point not due by t (a world at t stands for every point due). */
+static long first_point_after(const video_clock *c, double t)
 {
     long next = c->next;
     while ((double)next * c->point_s <= t + 1e-9)
         next++;
-    return (double)next * c->point_s;
+    return next;
+}
+
+double video_clock_after_s(const video_clock *c, double t)
+{
+    return (double)first_point_after(c, t) * c->point_s;
 }
 
 /* Several points may be due at once when they are closer than the
@@ -44,11 +50,9 @@ int video_clock_add(video_clock *c, const output_sample *s)
     output_sample point = *s;
     point.links = NULL; /* a frame draws no IR links */
     point.n_links = 0;
-    while (video_clock_next_s(c) <= s->time_s + 1e-9) {
+    for (long due = first_point_after(c, s->time_s); c->next < due; c->next++)
         if (c->next % c->points_per_frame == 0)
             frames++;
-        c->next++;
-    }
     if (history_add(&c->points, &point))
         return -1;
     history_forget_before(&c->points, s->time_s - VIDEO_TRAIL_S - c->point_s);
